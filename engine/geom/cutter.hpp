@@ -1,0 +1,33 @@
+// Cutting blocks: the arrangement of base polygons and cut segments, with exact predicates.
+//
+// Each base polygon is cut by every segment that crosses it. Faces inside the polygon become
+// blocks. Pieces of cuts that end inside a block without splitting it are dropped and counted
+// (UDEC's rule). Features smaller than the tolerance (a cut passing within `tolerance` of a
+// vertex, a nearly parallel cut forming a sliver) are resolved by bending the cut through the
+// vertex, so no block has an edge or a thickness below the tolerance and none has zero area.
+#pragma once
+
+#include <vector>
+
+#include "geom/block_set.hpp"
+#include "geom/polygon.hpp"
+
+namespace edem {
+
+struct CutSegment {
+  Vec2 a, b;           // end points [m]
+  EdgeOrigin origin;   // what it is
+  int clip = -1;       // keep only the part inside clip_polygons[clip] (-1: no clipping)
+};
+
+struct CutInput {
+  std::vector<Polygon> bases;          // block{} inputs, validated, non-overlapping
+  std::vector<CutSegment> cuts;        // joints, cracks, region outlines
+  std::vector<Polygon> clip_polygons;  // for CutSegment::clip
+  std::vector<Polygon> regions;        // named regions, for Block::regions membership
+  double tolerance = 0.0;              // absolute [m]
+};
+
+BlockSet cut_blocks(const CutInput& input);
+
+}  // namespace edem

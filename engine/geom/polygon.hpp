@@ -1,0 +1,39 @@
+// Simple polygons in double precision: area, centroid, containment, validation.
+//
+// A Polygon is an open list of vertices (the last joins the first). Validation uses
+// exact predicates, so a polygon that is accepted is truly simple.
+#pragma once
+
+#include <string_view>
+#include <vector>
+
+#include "core/vec2.hpp"
+
+namespace edem {
+
+using Polygon = std::vector<Vec2>;
+
+// Positive when counter-clockwise [m^2].
+double signed_area(const Polygon& polygon);
+Vec2 centroid(const Polygon& polygon);
+
+// Point strictly inside (not on the boundary), tested exactly.
+bool contains(const Polygon& polygon, Vec2 point);
+
+// Distance from a point to the polygon: 0 inside or on it, else to the nearest edge [m].
+double distance(const Polygon& polygon, Vec2 point);
+
+struct Box {
+  double x0, x1, y0, y1;  // [m]
+  double diagonal() const;
+};
+Box bounding_box(const Polygon& polygon);
+
+// Throws edem::Error naming `what` when the polygon has fewer than three vertices, a
+// non-finite coordinate, repeated consecutive vertices, zero area or crossing edges.
+void validate_polygon(const Polygon& polygon, std::string_view what);
+
+// The same polygon, counter-clockwise.
+Polygon counter_clockwise(Polygon polygon);
+
+}  // namespace edem

@@ -1,0 +1,74 @@
+// Definitions of geometry inputs, as the command language fills them (units in comments).
+//
+// Each XxxDef is plain data with defaults; the interpreter validates ranges and types
+// against its schema, the Model validates what needs the model (names, geometry).
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "geom/polygon.hpp"
+
+namespace edem {
+
+// A region given by name (a region{} cut earlier) or by a polygon.
+struct RegionRef {
+  std::string name;  // non-empty: a named region
+  Polygon polygon;   // used when name is empty
+  bool empty() const { return name.empty() && polygon.empty(); }
+};
+
+struct ModelDef {
+  std::string title;
+  double tolerance = 1e-9;  // geometric tolerance, relative to the model's extent [-]
+};
+
+struct BlockDef {
+  Polygon polygon;  // [m]
+};
+
+struct JointSetDef {
+  double angle = 0.0;                 // counter-clockwise from +x [deg]
+  std::vector<double> spacing{1.0};   // normal distance between traces, used in turn [m]
+  Vec2 origin;                        // a point on one joint [m]
+  double trace = std::numeric_limits<double>::infinity();  // trace length [m]
+  double gap = 0.0;                   // gap between traces along a joint [m]
+  double angle_dev = 0.0;             // uniform random deviation of each trace's angle [deg]
+  double spacing_dev = 0.0;           // uniform random deviation of each spacing [m]
+  double trace_dev = 0.0;             // uniform random deviation of each trace length [m]
+  double gap_dev = 0.0;               // uniform random deviation of each gap [m]
+  std::uint64_t seed = 1;             // random stream of the deviations
+  RegionRef region;                   // only inside this region (empty: everywhere)
+};
+
+struct CrackDef {
+  Vec2 from, to;  // [m]
+};
+
+struct RegionDef {
+  std::string name;
+  Polygon polygon;    // [m]
+  bool glued = true;  // outline cuts never fail or slide
+};
+
+struct ZoneDef {
+  double edge = 1.0;               // edge length near `near` [m]
+  double far = 0.0;                // edge length far away; 0: same as edge [m]
+  double growth = 0.2;             // size increase per metre of distance [-]
+  std::vector<RegionRef> near;     // where zones are finest
+  RegionRef region;                // zone only the blocks in this region (empty: all)
+};
+
+struct ModelInfo {
+  int blocks = 0;
+  int zones = 0;
+  int gridpoints = 0;
+  int joint_edges = 0;      // block edges made by joints, each counted once per side
+  int dropped_cuts = 0;
+  int regions = 0;
+  int joint_sets = 0;
+};
+
+}  // namespace edem
