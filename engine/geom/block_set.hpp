@@ -45,6 +45,7 @@ struct Block {
 struct BlockSet {
   std::vector<Block> blocks;
   int dropped_cuts = 0;      // cut pieces that crossed no block and were dropped (as UDEC does)
+  int joint_edges = 0;       // arrangement edges made by joints between two blocks
   int snapped_vertices = 0;  // cut vertices moved by at most the tolerance to avoid slivers
 };
 

@@ -22,9 +22,10 @@ struct CutSegment {
 
 struct CutInput {
   std::vector<Polygon> bases;          // block{} inputs, validated, non-overlapping
-  std::vector<CutSegment> cuts;        // joints, cracks, region outlines
+  std::vector<CutSegment> cuts;        // joints, cracks
   std::vector<Polygon> clip_polygons;  // for CutSegment::clip
-  std::vector<Polygon> regions;        // named regions, for Block::regions membership
+  std::vector<Polygon> regions;        // named regions: their outlines are cuts too
+  std::vector<bool> region_glued;      // per region: outline edges never fail or slide
   double tolerance = 0.0;              // absolute [m]
 };
 

@@ -33,6 +33,9 @@ Box bounding_box(const Polygon& polygon);
 // non-finite coordinate, repeated consecutive vertices, zero area or crossing edges.
 void validate_polygon(const Polygon& polygon, std::string_view what);
 
+// True when the interiors of two valid polygons share area (touching edges is fine). Exact.
+bool interiors_overlap(const Polygon& a, const Polygon& b);
+
 // The same polygon, counter-clockwise.
 Polygon counter_clockwise(Polygon polygon);
 

@@ -1,0 +1,526 @@
+// Block cutting with CGAL's exact arrangement (see cutter.hpp for the contract).
+//
+// Per base polygon: pieces (base edges and cut polylines) go into an Arrangement_2 over an
+// exact kernel; each edge carries the set of pieces it came from. Faces inside the base are
+// blocks; edges with the same face on both sides are dangling cut pieces, dropped and counted.
+// Before extracting blocks, features below the tolerance are removed by bending cut pieces
+// through nearby vertices (never moving the base), rebuilding until none is left.
+#include "geom/cutter.hpp"
+
+#include <CGAL/Arr_consolidated_curve_data_traits_2.h>
+#include <CGAL/Arr_segment_traits_2.h>
+#include <CGAL/Arrangement_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Polygon_2_algorithms.h>
+#include <CGAL/intersections.h>
+
+#include <algorithm>
+#include <limits>
+#include <numeric>
+#include <queue>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "core/error.hpp"
+
+namespace edem {
+
+std::string_view to_string(EdgeKind kind) {
+  switch (kind) {
+    case EdgeKind::boundary: return "boundary";
+    case EdgeKind::joint: return "joint";
+    case EdgeKind::crack: return "crack";
+    case EdgeKind::region: return "region";
+    case EdgeKind::potential: return "potential";
+  }
+  return "?";
+}
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_exact_constructions_kernel;
+using Point = Kernel::Point_2;
+using Segment = Kernel::Segment_2;
+using SegmentTraits = CGAL::Arr_segment_traits_2<Kernel>;
+using Traits = CGAL::Arr_consolidated_curve_data_traits_2<SegmentTraits, int>;
+using Arrangement = CGAL::Arrangement_2<Traits>;
+using Face = Arrangement::Face_const_handle;
+using Halfedge = Arrangement::Halfedge_const_handle;
+using Vertex = Arrangement::Vertex_const_handle;
+
+constexpr int kMaxSnapRounds = 12;
+
+// A polyline that goes into the arrangement: a base outline, a region outline (both
+// closed) or one (clipped) cut.
+struct Piece {
+  std::vector<Point> points;
+  EdgeOrigin origin;
+  bool closed = false;  // the last point joins the first
+  bool base = false;    // base outlines never move
+  size_t segment_count() const { return closed ? points.size() : points.size() - 1; }
+  Segment segment(size_t i) const { return Segment(points[i], points[(i + 1) % points.size()]); }
+};
+
+Point to_point(Vec2 p) { return Point(p.x, p.y); }
+Vec2 to_vec(const Point& p) { return {CGAL::to_double(p.x()), CGAL::to_double(p.y())}; }
+
+// Parts of segment ab strictly inside the polygon, computed exactly.
+std::vector<std::pair<Point, Point>> clip_segment(const Point& a, const Point& b,
+                                                   const std::vector<Point>& polygon) {
+  std::vector<Point> cuts{a, b};
+  const size_t n = polygon.size();
+  const Segment s(a, b);
+  for (size_t i = 0; i < n; ++i) {
+    const Segment edge(polygon[i], polygon[(i + 1) % n]);
+    const auto hit = CGAL::intersection(s, edge);
+    if (!hit) continue;
+    if (const Point* p = boost::get<Point>(&*hit)) {
+      cuts.push_back(*p);
+    } else if (const Segment* overlap = boost::get<Segment>(&*hit)) {
+      cuts.push_back(overlap->source());
+      cuts.push_back(overlap->target());
+    }
+  }
+  // Sort along ab (exactly, by squared distance from a) and keep inside pieces.
+  std::sort(cuts.begin(), cuts.end(), [&](const Point& p, const Point& q) {
+    return CGAL::compare_distance_to_point(a, p, q) == CGAL::SMALLER;
+  });
+  cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
+  std::vector<std::pair<Point, Point>> inside;
+  for (size_t i = 0; i + 1 < cuts.size(); ++i) {
+    const Point mid = CGAL::midpoint(cuts[i], cuts[i + 1]);
+    if (CGAL::bounded_side_2(polygon.begin(), polygon.end(), mid, Kernel()) ==
+        CGAL::ON_BOUNDED_SIDE) {
+      if (!inside.empty() && inside.back().second == cuts[i])
+        inside.back().second = cuts[i + 1];
+      else
+        inside.emplace_back(cuts[i], cuts[i + 1]);
+    }
+  }
+  return inside;
+}
+
+// Lower kinds take precedence; a joint along a glued outline is a joint.
+EdgeOrigin edge_origin(const Halfedge& h, const std::vector<Piece>& pieces) {
+  EdgeOrigin best;
+  bool first = true;
+  for (int id : h->curve().data()) {
+    const EdgeOrigin& o = pieces[id].origin;
+    if (first || o.kind < best.kind || (o.kind == best.kind && o.source < best.source)) best = o;
+    first = false;
+  }
+  return best;
+}
+
+bool has_base_piece(const Halfedge& h, const std::vector<Piece>& pieces) {
+  for (int id : h->curve().data())
+    if (pieces[id].base) return true;
+  return false;
+}
+
+template <typename Circulator>
+std::vector<Halfedge> ccb_halfedges(Circulator start) {
+  std::vector<Halfedge> ring;
+  Circulator c = start;
+  do ring.push_back(c);
+  while (++c != start);
+  return ring;
+}
+
+struct FaceRings {
+  Face face;
+  std::vector<Halfedge> outer;
+  std::vector<std::vector<Halfedge>> holes;
+};
+
+class BaseCutter {
+ public:
+  BaseCutter(const Polygon& base, int base_index, std::vector<Piece> cut_pieces,
+             const std::vector<Polygon>& regions, double tolerance)
+      : base_index_(base_index), regions_(regions), tolerance2_(tolerance * tolerance),
+        tolerance_(tolerance) {
+    Piece outline;
+    for (Vec2 p : base) outline.points.push_back(to_point(p));
+    outline.origin = {EdgeKind::boundary, -1, base_index, false};
+    outline.closed = true;
+    outline.base = true;
+    base_vertices_ = outline.points;
+    pieces_.push_back(std::move(outline));
+    for (auto& piece : cut_pieces) pieces_.push_back(std::move(piece));
+  }
+
+  void run(BlockSet& out) {
+    for (int round = 0;; ++round) {
+      build();
+      inside_faces_ = find_inside_faces();
+      dropped_ = count_dangling_pieces();
+      remove_dangling_edges();
+      collect_rings();
+      const int fixes = snap_small_features();
+      if (fixes == 0) break;
+      out.snapped_vertices += fixes;
+      if (round + 1 == kMaxSnapRounds)
+        fail("cannot resolve geometry features smaller than the tolerance ({:.3g} m) in block {}; "
+             "move the cuts apart or change model{{tolerance=}}",
+             tolerance_, base_index_ + 1);
+    }
+    out.dropped_cuts += dropped_;
+    extract(out);
+  }
+
+ private:
+  void build() {
+    arrangement_.clear();
+    std::vector<Traits::Curve_2> curves;
+    for (size_t id = 0; id < pieces_.size(); ++id) {
+      const Piece& piece = pieces_[id];
+      for (size_t i = 0; i < piece.segment_count(); ++i) {
+        const Segment s = piece.segment(i);
+        if (!s.is_degenerate()) curves.emplace_back(s, static_cast<int>(id));
+      }
+    }
+    CGAL::insert(arrangement_, curves.begin(), curves.end());
+  }
+
+  // Faces reachable from the unbounded face without crossing a base edge are outside.
+  std::unordered_set<const void*> find_inside_faces() const {
+    std::unordered_set<const void*> reached;
+    std::queue<Face> queue;
+    queue.push(arrangement_.unbounded_face());
+    reached.insert(&*arrangement_.unbounded_face());
+    auto visit_ccb = [&](auto start) {
+      auto c = start;
+      do {
+        Halfedge h = c;
+        Face other = h->twin()->face();
+        if (!has_base_piece(h, pieces_) && reached.insert(&*other).second) queue.push(other);
+      } while (++c != start);
+    };
+    while (!queue.empty()) {
+      Face f = queue.front();
+      queue.pop();
+      if (!f->is_unbounded()) visit_ccb(f->outer_ccb());
+      for (auto ic = f->inner_ccbs_begin(); ic != f->inner_ccbs_end(); ++ic) visit_ccb(*ic);
+    }
+    std::unordered_set<const void*> inside;
+    for (auto f = arrangement_.faces_begin(); f != arrangement_.faces_end(); ++f)
+      if (!reached.count(&*f)) inside.insert(&*f);
+    return inside;
+  }
+
+  bool is_dangling(const Halfedge& h) const {
+    return h->face() == h->twin()->face() && inside_faces_.count(&*h->face());
+  }
+
+  // Connected groups of dangling edges inside the base: the cut pieces UDEC would drop.
+  int count_dangling_pieces() const {
+    std::unordered_map<const void*, int> index;  // vertex -> union-find slot
+    std::vector<int> parent;
+    auto find = [&](int x) {
+      while (parent[x] != x) x = parent[x] = parent[parent[x]];
+      return x;
+    };
+    auto slot = [&](Vertex v) {
+      auto [it, added] = index.try_emplace(&*v, static_cast<int>(parent.size()));
+      if (added) parent.push_back(it->second);
+      return it->second;
+    };
+    for (auto e = arrangement_.edges_begin(); e != arrangement_.edges_end(); ++e) {
+      Halfedge h = e;
+      if (is_dangling(h)) parent[find(slot(h->source()))] = find(slot(h->target()));
+    }
+    int groups = 0;
+    for (size_t i = 0; i < parent.size(); ++i)
+      if (find(static_cast<int>(i)) == static_cast<int>(i)) ++groups;
+    return groups;
+  }
+
+  // Removing a dangling edge merges no faces; a piece that bridged an outer boundary to a
+  // hole goes, and the hole becomes a boundary component of its own.
+  void remove_dangling_edges() {
+    std::vector<Arrangement::Halfedge_handle> dangling;
+    for (auto e = arrangement_.edges_begin(); e != arrangement_.edges_end(); ++e)
+      if (is_dangling(e)) dangling.push_back(e);
+    for (auto h : dangling) arrangement_.remove_edge(h);
+  }
+
+  void collect_rings() {
+    inside_.clear();
+    for (auto f = arrangement_.faces_begin(); f != arrangement_.faces_end(); ++f) {
+      if (!inside_faces_.count(&*f)) continue;
+      Face face = f;
+      FaceRings rings{face, ccb_halfedges(face->outer_ccb()), {}};
+      for (auto ic = face->inner_ccbs_begin(); ic != face->inner_ccbs_end(); ++ic)
+        rings.holes.push_back(ccb_halfedges(*ic));
+      inside_.push_back(std::move(rings));
+    }
+  }
+
+  bool is_base_vertex(const Point& p) const {
+    return std::find(base_vertices_.begin(), base_vertices_.end(), p) != base_vertices_.end();
+  }
+
+  // Cut pieces that pass through vertex v.
+  std::vector<int> cut_pieces_at(Vertex v) const {
+    std::vector<int> ids;
+    auto c = v->incident_halfedges();
+    const auto start = c;
+    do {
+      for (int id : c->curve().data())
+        if (!pieces_[id].base && std::find(ids.begin(), ids.end(), id) == ids.end())
+          ids.push_back(id);
+    } while (++c != start);
+    return ids;
+  }
+
+  // Make piece `id` pass through q: move its nearest vertex there if that one is within
+  // the tolerance, else insert q into the nearest segment.
+  bool bend(int id, const Point& q) {
+    Piece& piece = pieces_[id];
+    auto& pts = piece.points;
+    size_t nearest_vertex = 0;
+    for (size_t i = 1; i < pts.size(); ++i)
+      if (CGAL::compare_distance_to_point(q, pts[i], pts[nearest_vertex]) == CGAL::SMALLER)
+        nearest_vertex = i;
+    if (pts[nearest_vertex] == q) return false;
+    if (CGAL::compare(CGAL::squared_distance(q, pts[nearest_vertex]), Kernel::FT(tolerance2_)) ==
+        CGAL::SMALLER) {
+      pts[nearest_vertex] = q;
+    } else {
+      size_t nearest_segment = 0;
+      Kernel::FT best = CGAL::squared_distance(q, piece.segment(0));
+      for (size_t i = 1; i < piece.segment_count(); ++i) {
+        const Kernel::FT d = CGAL::squared_distance(q, piece.segment(i));
+        if (d < best) {
+          best = d;
+          nearest_segment = i;
+        }
+      }
+      pts.insert(pts.begin() + static_cast<long>(nearest_segment) + 1, q);
+    }
+    pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+    if (piece.closed && pts.size() > 1 && pts.front() == pts.back()) pts.pop_back();
+    return true;
+  }
+
+  // Resolve a vertex v closer than the tolerance to an edge e it is not on.
+  bool fix(Vertex v, Halfedge e) {
+    const Point& p = v->point();
+    const bool v_fixed = is_base_vertex(p);
+    const bool e_base = has_base_piece(e, pieces_);
+    // A nearby end of e: bring v's cuts to it (the two vertices become one).
+    for (Vertex w : {e->source(), e->target()}) {
+      if (!v_fixed && CGAL::compare(CGAL::squared_distance(p, w->point()),
+                                    Kernel::FT(tolerance2_)) == CGAL::SMALLER) {
+        bool changed = false;
+        for (int id : cut_pieces_at(v)) changed |= bend(id, w->point());
+        return changed;
+      }
+    }
+    if (!e_base) {
+      // Bend e's cuts through v.
+      bool changed = false;
+      for (int id : e->curve().data()) changed |= bend(id, p);
+      return changed;
+    }
+    if (v_fixed) return false;  // the base's own features are the user's geometry
+    // v (a cut vertex) near a base edge: move it onto the edge.
+    const Segment s(e->source()->point(), e->target()->point());
+    const Point q = s.supporting_line().projection(p);
+    bool changed = false;
+    for (int id : cut_pieces_at(v)) changed |= bend(id, q);
+    return changed;
+  }
+
+  int snap_small_features() {
+    const double slack = 4.0 * tolerance_;
+    int fixes = 0;
+    for (const FaceRings& face : inside_) {
+      std::vector<Halfedge> edges = face.outer;
+      for (const auto& hole : face.holes) edges.insert(edges.end(), hole.begin(), hole.end());
+      for (const Halfedge& hv : edges) {
+        const Vertex v = hv->source();
+        const Vec2 pv = to_vec(v->point());
+        for (const Halfedge& he : edges) {
+          if (he->source() == v || he->target() == v) continue;
+          // Cheap double-precision filter first.
+          const Vec2 a = to_vec(he->source()->point()), b = to_vec(he->target()->point());
+          if (pv.x < std::min(a.x, b.x) - slack || pv.x > std::max(a.x, b.x) + slack ||
+              pv.y < std::min(a.y, b.y) - slack || pv.y > std::max(a.y, b.y) + slack)
+            continue;
+          const Segment s(he->source()->point(), he->target()->point());
+          if (CGAL::compare(CGAL::squared_distance(v->point(), s), Kernel::FT(tolerance2_)) !=
+              CGAL::SMALLER)
+            continue;
+          if (fix(v, he)) {
+            ++fixes;
+            // Later checks in this face use stale geometry; rebuild first.
+            return fixes;
+          }
+        }
+      }
+    }
+    return fixes;
+  }
+
+  Ring make_ring(const std::vector<Halfedge>& halfedges) const {
+    Ring ring;
+    for (const Halfedge& h : halfedges) {
+      ring.points.push_back(to_vec(h->source()->point()));
+      ring.edges.push_back(edge_origin(h, pieces_));
+    }
+    return ring;
+  }
+
+  // Faces reached from the unbounded face without crossing the outline of region r.
+  std::vector<bool> faces_inside_region(int r) const {
+    std::unordered_map<const void*, bool> reached;
+    std::queue<Face> queue;
+    queue.push(arrangement_.unbounded_face());
+    reached[&*arrangement_.unbounded_face()] = true;
+    auto on_outline = [&](const Halfedge& h) {
+      for (int id : h->curve().data()) {
+        const EdgeOrigin& o = pieces_[id].origin;
+        if (o.kind == EdgeKind::region && o.source == r && !pieces_[id].base) return true;
+      }
+      return false;
+    };
+    auto visit_ccb = [&](auto start) {
+      auto c = start;
+      do {
+        Halfedge h = c;
+        Face other = h->twin()->face();
+        if (!on_outline(h) && !reached.count(&*other)) {
+          reached[&*other] = true;
+          queue.push(other);
+        }
+      } while (++c != start);
+    };
+    while (!queue.empty()) {
+      Face f = queue.front();
+      queue.pop();
+      if (!f->is_unbounded()) visit_ccb(f->outer_ccb());
+      for (auto ic = f->inner_ccbs_begin(); ic != f->inner_ccbs_end(); ++ic) visit_ccb(*ic);
+    }
+    std::vector<bool> inside(inside_.size());
+    for (size_t i = 0; i < inside_.size(); ++i) inside[i] = !reached.count(&*inside_[i].face);
+    return inside;
+  }
+
+  // A region's outline could also coincide with a base edge, where a base piece carries
+  // the edge; then the region outline piece shares it and on_outline still sees it.
+  void extract(BlockSet& out) {
+    std::vector<std::vector<bool>> in_region;
+    for (size_t r = 0; r < regions_.size(); ++r)
+      in_region.push_back(faces_inside_region(static_cast<int>(r)));
+
+    for (size_t i = 0; i < inside_.size(); ++i) {
+      const FaceRings& face = inside_[i];
+      Block block;
+      block.outer = make_ring(face.outer);
+      for (const auto& hole : face.holes) block.holes.push_back(make_ring(hole));
+      block.area = signed_area(block.outer.points);
+      for (const Ring& hole : block.holes) block.area += signed_area(hole.points);
+      block.centroid = block_centroid(block);
+      block.base = base_index_;
+      for (size_t r = 0; r < regions_.size(); ++r)
+        if (in_region[r][i]) block.regions.push_back(static_cast<int>(r));
+      out.blocks.push_back(std::move(block));
+    }
+    count_edges(out);
+  }
+
+  static Vec2 block_centroid(const Block& block) {
+    // Area-weighted centroids of the outer ring and the (negative-area) holes.
+    double area = signed_area(block.outer.points);
+    Vec2 c = area * centroid(block.outer.points);
+    for (const Ring& hole : block.holes) {
+      const double a = signed_area(hole.points);
+      c = c + a * centroid(hole.points);
+      area += a;
+    }
+    return area != 0.0 ? (1.0 / area) * c : block.outer.points.front();
+  }
+
+  // Joint edges between two blocks.
+  void count_edges(BlockSet& out) const {
+    for (auto e = arrangement_.edges_begin(); e != arrangement_.edges_end(); ++e) {
+      Halfedge h = e;
+      if (inside_faces_.count(&*h->face()) && inside_faces_.count(&*h->twin()->face()) &&
+          edge_origin(h, pieces_).kind == EdgeKind::joint)
+        ++out.joint_edges;
+    }
+  }
+
+  int base_index_;
+  const std::vector<Polygon>& regions_;
+  double tolerance2_;
+  double tolerance_;
+  std::vector<Piece> pieces_;
+  std::vector<Point> base_vertices_;
+  Arrangement arrangement_;
+  std::unordered_set<const void*> inside_faces_;
+  std::vector<FaceRings> inside_;
+  int dropped_ = 0;
+};
+
+bool boxes_overlap(const Box& a, const Box& b) {
+  return a.x0 <= b.x1 && b.x0 <= a.x1 && a.y0 <= b.y1 && b.y0 <= a.y1;
+}
+
+}  // namespace
+
+BlockSet cut_blocks(const CutInput& input) {
+  // Clip once, exactly; pieces are then shared by every base they may cross.
+  std::vector<std::vector<Point>> clip_polygons;
+  for (const Polygon& polygon : input.clip_polygons) {
+    std::vector<Point> points;
+    for (Vec2 p : counter_clockwise(polygon)) points.push_back(to_point(p));
+    clip_polygons.push_back(std::move(points));
+  }
+  std::vector<Piece> pieces;
+  std::vector<Box> piece_boxes;
+  for (const CutSegment& cut : input.cuts) {
+    const Point a = to_point(cut.a), b = to_point(cut.b);
+    if (a == b) continue;
+    std::vector<std::pair<Point, Point>> parts;
+    if (cut.clip >= 0)
+      parts = clip_segment(a, b, clip_polygons.at(static_cast<size_t>(cut.clip)));
+    else
+      parts.emplace_back(a, b);
+    for (auto& [p, q] : parts) {
+      Piece piece;
+      piece.points = {p, q};
+      piece.origin = cut.origin;
+      const Vec2 pv = to_vec(p), qv = to_vec(q);
+      piece_boxes.push_back(bounding_box({pv, qv}));
+      pieces.push_back(std::move(piece));
+    }
+  }
+
+  // Region outlines stay closed polylines, so that bending keeps them closed.
+  for (size_t r = 0; r < input.regions.size(); ++r) {
+    Piece outline;
+    for (Vec2 p : input.regions[r]) outline.points.push_back(to_point(p));
+    outline.origin = {EdgeKind::region, -1, static_cast<int>(r), input.region_glued.at(r)};
+    outline.closed = true;
+    piece_boxes.push_back(bounding_box(input.regions[r]));
+    pieces.push_back(std::move(outline));
+  }
+
+  BlockSet out;
+  for (size_t i = 0; i < input.bases.size(); ++i) {
+    const Polygon base = counter_clockwise(input.bases[i]);
+    Box box = bounding_box(base);
+    const double margin = 2.0 * input.tolerance;
+    box = {box.x0 - margin, box.x1 + margin, box.y0 - margin, box.y1 + margin};
+    std::vector<Piece> near;
+    for (size_t k = 0; k < pieces.size(); ++k)
+      if (boxes_overlap(box, piece_boxes[k])) near.push_back(pieces[k]);
+    BaseCutter cutter(base, static_cast<int>(i), std::move(near), input.regions, input.tolerance);
+    cutter.run(out);
+  }
+  return out;
+}
+
+}  // namespace edem

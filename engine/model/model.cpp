@@ -1,0 +1,203 @@
+#include "model/model.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "core/names.hpp"
+#include "geom/cutter.hpp"
+#include "geom/joint_set.hpp"
+
+namespace edem {
+namespace {
+
+void check_finite(double value, std::string_view what) {
+  if (!std::isfinite(value)) fail("{} must be a finite number, got {}", what, value);
+}
+
+Box extent_of(const std::vector<BlockDef>& bases) {
+  Polygon all;
+  for (const auto& base : bases) all.insert(all.end(), base.polygon.begin(), base.polygon.end());
+  return bounding_box(all);
+}
+
+}  // namespace
+
+Model::Model(ModelDef def) : def_(std::move(def)) {
+  if (!(def_.tolerance > 0.0 && def_.tolerance <= 1e-3))
+    fail("tolerance must be in (0, 1e-3], got {}", def_.tolerance);
+}
+
+double Model::tolerance_of(const Inputs& inputs) const {
+  const double size = inputs.bases.empty() ? 1.0 : extent_of(inputs.bases).diagonal();
+  return def_.tolerance * size;
+}
+
+double Model::tolerance() const { return tolerance_of(inputs_); }
+
+int Model::region_index(std::string_view name) const {
+  std::vector<std::string> names;
+  for (size_t i = 0; i < inputs_.regions.size(); ++i) {
+    if (inputs_.regions[i].name == name) return static_cast<int>(i);
+    names.push_back(inputs_.regions[i].name);
+  }
+  if (names.empty()) fail("unknown region '{}': no region{{}} has been defined", name);
+  fail("unknown region '{}'{}", name, did_you_mean(name, names));
+}
+
+Polygon Model::resolve_in(const Inputs& inputs, const RegionRef& ref) const {
+  if (ref.name.empty()) {
+    validate_polygon(ref.polygon, "region polygon");
+    return ref.polygon;
+  }
+  for (const auto& region : inputs.regions)
+    if (region.name == ref.name) return region.polygon;
+  return inputs.regions.at(static_cast<size_t>(region_index(ref.name))).polygon;  // throws
+}
+
+Polygon Model::resolve(const RegionRef& ref) const { return resolve_in(inputs_, ref); }
+
+void Model::add_block(const BlockDef& def) {
+  validate_polygon(def.polygon, "block");
+  for (size_t i = 0; i < inputs_.bases.size(); ++i)
+    if (interiors_overlap(def.polygon, inputs_.bases[i].polygon))
+      fail("block overlaps block {} given earlier; blocks must not overlap", i + 1);
+  Inputs next = inputs_;
+  next.bases.push_back({counter_clockwise(def.polygon)});
+  commit(std::move(next));
+}
+
+int Model::add_joint_set(const JointSetDef& def) {
+  check_finite(def.angle, "angle");
+  if (def.spacing.empty()) fail("spacing needs at least one value");
+  double min_spacing = INFINITY;
+  for (double s : def.spacing) {
+    if (!(s > 0.0) || !std::isfinite(s)) fail("spacing must be > 0, got {}", s);
+    min_spacing = std::min(min_spacing, s);
+  }
+  if (!(def.spacing_dev >= 0.0 && def.spacing_dev < min_spacing))
+    fail("spacing_dev must be >= 0 and below the smallest spacing ({}), got {}", min_spacing,
+         def.spacing_dev);
+  if (!(def.trace > 0.0)) fail("trace must be > 0, got {}", def.trace);
+  if (!(def.trace_dev >= 0.0 && (def.trace_dev < def.trace)))
+    fail("trace_dev must be >= 0 and below trace ({}), got {}", def.trace, def.trace_dev);
+  if (!(def.gap >= 0.0) || !std::isfinite(def.gap)) fail("gap must be >= 0, got {}", def.gap);
+  if (!(def.gap_dev >= 0.0 && def.gap_dev <= def.gap))
+    fail("gap_dev must be >= 0 and at most gap ({}), got {}", def.gap, def.gap_dev);
+  if (!(def.angle_dev >= 0.0 && def.angle_dev < 90.0))
+    fail("angle_dev must be in [0, 90), got {}", def.angle_dev);
+  check_finite(def.origin.x, "origin x");
+  check_finite(def.origin.y, "origin y");
+  if (inputs_.bases.empty()) fail("no blocks to cut: define blocks with block{{...}} first");
+  if (!def.region.empty()) resolve(def.region);  // throws for an unknown name or bad polygon
+  Inputs next = inputs_;
+  next.joint_sets.push_back(def);
+  commit(std::move(next));
+  return static_cast<int>(inputs_.joint_sets.size()) - 1;
+}
+
+void Model::add_crack(const CrackDef& def) {
+  for (double v : {def.from.x, def.from.y, def.to.x, def.to.y}) check_finite(v, "crack end");
+  if (norm(def.to - def.from) <= tolerance())
+    fail("crack from ({}, {}) to ({}, {}) has zero length", def.from.x, def.from.y, def.to.x,
+         def.to.y);
+  if (inputs_.bases.empty()) fail("no blocks to cut: define blocks with block{{...}} first");
+  Inputs next = inputs_;
+  next.cracks.push_back(def);
+  commit(std::move(next));
+}
+
+void Model::add_region(const RegionDef& def) {
+  if (def.name.empty()) fail("a region needs a name");
+  for (const auto& region : inputs_.regions)
+    if (region.name == def.name) fail("region '{}' is already defined", def.name);
+  validate_polygon(def.polygon, "region polygon");
+  Inputs next = inputs_;
+  next.regions.push_back({def.name, counter_clockwise(def.polygon), def.glued});
+  commit(std::move(next));
+}
+
+void Model::zone(const ZoneDef& def) {
+  if (inputs_.bases.empty()) fail("no blocks to zone: define blocks with block{{...}} first");
+  if (!(def.edge > 0.0) || !std::isfinite(def.edge)) fail("edge must be > 0, got {}", def.edge);
+  const double far = def.far == 0.0 ? def.edge : def.far;
+  if (!(far >= def.edge) || !std::isfinite(far))
+    fail("far must be >= edge ({}), got {}", def.edge, far);
+  if (!(def.growth > 0.0) || !std::isfinite(def.growth))
+    fail("growth must be > 0, got {}", def.growth);
+  ZoneRequest request;
+  request.size.edge = def.edge;
+  request.size.far = far;
+  request.size.growth = def.growth;
+  for (const RegionRef& ref : def.near) request.size.near.push_back(resolve(ref));
+  if (!def.region.name.empty())
+    request.region = region_index(def.region.name);
+  else if (!def.region.polygon.empty())
+    request.polygon = resolve(def.region);
+  Inputs next = inputs_;
+  next.zone_requests.push_back(std::move(request));
+  commit(std::move(next));
+}
+
+BlockSet Model::cut(const Inputs& inputs) const {
+  CutInput input;
+  input.tolerance = tolerance_of(inputs);
+  for (const auto& base : inputs.bases) input.bases.push_back(base.polygon);
+  for (const auto& region : inputs.regions) {
+    input.regions.push_back(region.polygon);
+    input.region_glued.push_back(region.glued);
+  }
+  const Box extent = extent_of(inputs.bases);
+  for (size_t set = 0; set < inputs.joint_sets.size(); ++set) {
+    const JointSetDef& def = inputs.joint_sets[set];
+    int clip = -1;
+    if (!def.region.empty()) {
+      clip = static_cast<int>(input.clip_polygons.size());
+      input.clip_polygons.push_back(resolve_in(inputs, def.region));
+    }
+    const auto traces = joint_set_traces(def, extent, static_cast<int>(set), clip);
+    input.cuts.insert(input.cuts.end(), traces.begin(), traces.end());
+  }
+  for (size_t i = 0; i < inputs.cracks.size(); ++i)
+    input.cuts.push_back({inputs.cracks[i].from, inputs.cracks[i].to,
+                          {EdgeKind::crack, -1, static_cast<int>(i), false}, -1});
+  return cut_blocks(input);
+}
+
+Mesh Model::zone_all(const Inputs& inputs, const BlockSet& blocks) const {
+  // Each block takes the last zoning request that covers it.
+  std::vector<const SizeField*> size_of_block(blocks.blocks.size(), nullptr);
+  for (size_t b = 0; b < blocks.blocks.size(); ++b) {
+    const Block& block = blocks.blocks[b];
+    for (const ZoneRequest& request : inputs.zone_requests) {
+      const bool covers =
+          request.region >= 0
+              ? std::count(block.regions.begin(), block.regions.end(), request.region) > 0
+              : !request.polygon || contains(*request.polygon, block.centroid);
+      if (covers) size_of_block[b] = &request.size;
+    }
+  }
+  return zone_blocks(blocks, size_of_block);
+}
+
+void Model::commit(Inputs next) {
+  BlockSet blocks = cut(next);
+  Mesh mesh = zone_all(next, blocks);
+  inputs_ = std::move(next);
+  blocks_ = std::move(blocks);
+  mesh_ = std::move(mesh);
+}
+
+ModelInfo Model::info() const {
+  ModelInfo info;
+  info.blocks = static_cast<int>(blocks_.blocks.size());
+  info.zones = mesh_.zone_count();
+  info.gridpoints = mesh_.gp_count();
+  info.joint_edges = blocks_.joint_edges;
+  info.dropped_cuts = blocks_.dropped_cuts;
+  info.regions = static_cast<int>(inputs_.regions.size());
+  info.joint_sets = static_cast<int>(inputs_.joint_sets.size());
+  return info;
+}
+
+}  // namespace edem

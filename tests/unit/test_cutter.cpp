@@ -1,0 +1,345 @@
+// Block cutting: counts, areas, edge origins and the degenerate cases exact predicates exist
+// for (a cut through a vertex, along an edge, nearly parallel to another).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+
+#include "core/error.hpp"
+#include "geom/cutter.hpp"
+#include "model/model.hpp"
+
+namespace edem {
+namespace {
+
+Polygon box(double x0, double x1, double y0, double y1) {
+  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
+
+double total_area(const BlockSet& set) {
+  double sum = 0.0;
+  for (const Block& b : set.blocks) sum += b.area;
+  return sum;
+}
+
+double ring_min_edge(const Ring& ring) {
+  double shortest = INFINITY;
+  for (size_t i = 0; i < ring.points.size(); ++i)
+    shortest = std::min(shortest, norm(ring.points[(i + 1) % ring.points.size()] - ring.points[i]));
+  return shortest;
+}
+
+// Every block: positive area, consistent rings, no edge shorter than the tolerance.
+void expect_valid_blocks(const BlockSet& set, double tolerance) {
+  for (size_t i = 0; i < set.blocks.size(); ++i) {
+    const Block& b = set.blocks[i];
+    EXPECT_GT(b.area, 0.0) << "block " << i;
+    EXPECT_GT(signed_area(b.outer.points), 0.0) << "outer ring of block " << i << " not ccw";
+    EXPECT_EQ(b.outer.points.size(), b.outer.edges.size());
+    EXPECT_GE(b.outer.points.size(), 3u);
+    EXPECT_GE(ring_min_edge(b.outer), tolerance) << "block " << i;
+    for (const Ring& hole : b.holes) {
+      EXPECT_LT(signed_area(hole.points), 0.0) << "hole of block " << i << " not cw";
+      EXPECT_GE(ring_min_edge(hole), tolerance);
+    }
+  }
+}
+
+Model jointed_box(double size) {
+  Model model;
+  model.add_block({box(0, size, 0, size)});
+  return model;
+}
+
+// The joint-set origin lies on a joint (UDEC's convention). Joints through y = 0, 10, ..., 100
+// and x = 0, ..., 100 cut a 100 x 100 box into 100 blocks; those at 0 and 100 lie along the
+// boundary (a degenerate case) and add nothing.
+TEST(Cutter, TwoOrthogonalSetsMakeAHundredBlocks) {
+  Model model = jointed_box(100);
+  JointSetDef horizontal;
+  horizontal.angle = 0;
+  horizontal.spacing = {10};
+  horizontal.origin = {0, 0};
+  model.add_joint_set(horizontal);
+  JointSetDef vertical;
+  vertical.angle = 90;
+  vertical.spacing = {10};
+  vertical.origin = {0, 0};
+  model.add_joint_set(vertical);
+  const BlockSet& set = model.blocks();
+  ASSERT_EQ(set.blocks.size(), 100u);
+  for (const Block& b : set.blocks) EXPECT_NEAR(b.area, 100.0, 1e-9);
+  EXPECT_NEAR(total_area(set), 10000.0, 1e-9 * 10000.0);
+  EXPECT_EQ(set.dropped_cuts, 0);
+  EXPECT_EQ(set.joint_edges, 2 * 9 * 10);  // 9 interior lines per set, 10 edges each
+  expect_valid_blocks(set, model.tolerance());
+}
+
+// With the origins at {0, 5} and {5, 0} the ten joints of each set lie at 5, 15, ..., 95:
+// eleven rows and columns, half-width ones along the boundary.
+TEST(Cutter, OffsetOriginsMakeHalfBlocksAlongTheBoundary) {
+  Model model = jointed_box(100);
+  JointSetDef horizontal;
+  horizontal.angle = 0;
+  horizontal.spacing = {10};
+  horizontal.origin = {0, 5};
+  model.add_joint_set(horizontal);
+  JointSetDef vertical;
+  vertical.angle = 90;
+  vertical.spacing = {10};
+  vertical.origin = {5, 0};
+  model.add_joint_set(vertical);
+  const BlockSet& set = model.blocks();
+  ASSERT_EQ(set.blocks.size(), 121u);
+  int full = 0;
+  for (const Block& b : set.blocks) full += std::abs(b.area - 100.0) < 1e-9 ? 1 : 0;
+  EXPECT_EQ(full, 81);
+  EXPECT_NEAR(total_area(set), 10000.0, 1e-9 * 10000.0);
+}
+
+TEST(Cutter, JointThroughACornerSplitsIntoTwoTriangles) {
+  Model model = jointed_box(10);
+  JointSetDef diagonal;
+  diagonal.angle = 45;
+  diagonal.spacing = {100};  // one trace only
+  diagonal.origin = {0, 0};
+  model.add_joint_set(diagonal);
+  const BlockSet& set = model.blocks();
+  ASSERT_EQ(set.blocks.size(), 2u);
+  for (const Block& b : set.blocks) {
+    EXPECT_EQ(b.outer.points.size(), 3u);
+    EXPECT_DOUBLE_EQ(b.area, 50.0);
+  }
+  EXPECT_EQ(set.dropped_cuts, 0);
+}
+
+TEST(Cutter, JointAlongTheBoundaryIsBoundary) {
+  Model model = jointed_box(10);
+  JointSetDef along;
+  along.angle = 0;
+  along.spacing = {10};
+  along.origin = {0, 0};  // lines y = 0 and y = 10 lie on the boundary
+  model.add_joint_set(along);
+  const BlockSet& set = model.blocks();
+  ASSERT_EQ(set.blocks.size(), 1u);
+  EXPECT_DOUBLE_EQ(set.blocks[0].area, 100.0);
+  for (const EdgeOrigin& e : set.blocks[0].outer.edges) EXPECT_EQ(e.kind, EdgeKind::boundary);
+}
+
+TEST(Cutter, ThreeJointsThroughOnePoint) {
+  Model model = jointed_box(10);
+  for (double angle : {0.0, 60.0, 120.0}) {
+    JointSetDef set;
+    set.angle = angle;
+    set.spacing = {100};
+    set.origin = {5, 5};
+    model.add_joint_set(set);
+  }
+  const BlockSet& set = model.blocks();
+  EXPECT_EQ(set.blocks.size(), 6u);
+  EXPECT_NEAR(total_area(set), 100.0, 1e-12);
+  expect_valid_blocks(set, model.tolerance());
+}
+
+TEST(Cutter, CrackAlongAnotherCrackMergesIntoOneEdge) {
+  Model model = jointed_box(10);
+  model.add_crack({{0, 5}, {10, 5}});
+  model.add_crack({{2, 5}, {7, 5}});  // overlaps the first
+  const BlockSet& set = model.blocks();
+  ASSERT_EQ(set.blocks.size(), 2u);
+  EXPECT_NEAR(total_area(set), 100.0, 1e-12);
+}
+
+TEST(Cutter, DanglingCutsAreDroppedAndCounted) {
+  Model model = jointed_box(10);
+  model.add_crack({{2, 2}, {4, 4}});  // entirely inside: splits nothing
+  model.add_crack({{0, 5}, {4, 5}});  // from the boundary into the block, ends inside
+  model.add_crack({{5, 0}, {5, 10}}); // splits the box
+  const BlockSet& set = model.blocks();
+  EXPECT_EQ(set.blocks.size(), 2u);
+  EXPECT_EQ(set.dropped_cuts, 2);
+  for (const Block& b : set.blocks) EXPECT_DOUBLE_EQ(b.area, 50.0);
+}
+
+TEST(Cutter, NearlyParallelCracksGiveValidBlocks) {
+  // Two cracks crossing at angles from 1e-3 down to 1e-12 radians: thin wedges where they
+  // are resolvable, merged into one edge where they are within the tolerance.
+  for (double angle : {1e-3, 1e-6, 1e-9, 1e-12}) {
+    Model model = jointed_box(10);
+    model.add_crack({{0, 5}, {10, 5}});
+    model.add_crack({{0, 5 - 5 * std::tan(angle)}, {10, 5 + 5 * std::tan(angle)}});
+    const BlockSet& set = model.blocks();
+    EXPECT_GE(set.blocks.size(), 2u) << angle;
+    EXPECT_NEAR(total_area(set), 100.0, 1e-9 * 100.0) << angle;
+    expect_valid_blocks(set, model.tolerance());
+  }
+}
+
+TEST(Cutter, CutPassingNearACornerIsSnappedToIt) {
+  for (double miss : {1e-8, 1e-12, 0.0, -1e-12, -1e-8}) {
+    Model model = jointed_box(10);
+    // A diagonal that misses the corner (10, 10) by `miss`.
+    model.add_crack({{0, miss}, {10, 10 + miss}});
+    const BlockSet& set = model.blocks();
+    ASSERT_EQ(set.blocks.size(), 2u) << miss;
+    EXPECT_NEAR(total_area(set), 100.0, 1e-12) << miss;
+    expect_valid_blocks(set, model.tolerance());
+  }
+}
+
+TEST(Cutter, CutPassingNearAJointCrossingIsSnapped) {
+  Model model = jointed_box(10);
+  model.add_crack({{0, 5}, {10, 5}});
+  model.add_crack({{5, 0}, {5, 10}});
+  model.add_crack({{0, 1e-11}, {10, 10 + 1e-11}});  // misses (5, 5) by ~7e-12
+  const BlockSet& set = model.blocks();
+  EXPECT_EQ(set.blocks.size(), 6u);
+  EXPECT_GT(set.snapped_vertices, 0);
+  EXPECT_NEAR(total_area(set), 100.0, 1e-12);
+  expect_valid_blocks(set, model.tolerance());
+}
+
+TEST(Cutter, EdgesKnowWhatMadeThem) {
+  Model model = jointed_box(20);
+  JointSetDef set;
+  set.angle = 90;
+  set.spacing = {7};
+  set.origin = {3, 0};
+  model.add_joint_set(set);
+  model.add_crack({{0, 3}, {20, 3}});
+  model.add_region({"hole", box(8, 12, 8, 12), true});
+  bool seen[5] = {};
+  bool glued_region = false;
+  for (const Block& b : model.blocks().blocks)
+    for (const EdgeOrigin& e : b.outer.edges) {
+      seen[static_cast<int>(e.kind)] = true;
+      if (e.kind == EdgeKind::joint) {
+        EXPECT_EQ(e.set, 0);
+      }
+      if (e.kind == EdgeKind::region) glued_region |= e.glued;
+    }
+  EXPECT_TRUE(seen[static_cast<int>(EdgeKind::boundary)]);
+  EXPECT_TRUE(seen[static_cast<int>(EdgeKind::joint)]);
+  EXPECT_TRUE(seen[static_cast<int>(EdgeKind::crack)]);
+  EXPECT_TRUE(seen[static_cast<int>(EdgeKind::region)]);
+  EXPECT_TRUE(glued_region);
+}
+
+TEST(Cutter, RegionInsideABlockMakesAHole) {
+  Model model = jointed_box(10);
+  model.add_region({"inner", box(4, 6, 4, 6), true});
+  const BlockSet& set = model.blocks();
+  ASSERT_EQ(set.blocks.size(), 2u);
+  int with_hole = 0, in_region = 0;
+  for (const Block& b : set.blocks) {
+    with_hole += b.holes.empty() ? 0 : 1;
+    if (!b.regions.empty()) {
+      ++in_region;
+      EXPECT_DOUBLE_EQ(b.area, 4.0);
+    }
+  }
+  EXPECT_EQ(with_hole, 1);
+  EXPECT_EQ(in_region, 1);
+  EXPECT_DOUBLE_EQ(total_area(set), 100.0);
+}
+
+TEST(Cutter, RegionMembershipWhenTheRegionLeavesTheBlock) {
+  Model model = jointed_box(10);
+  model.add_region({"right", box(5, 50, -20, 30), false});
+  const BlockSet& set = model.blocks();
+  ASSERT_EQ(set.blocks.size(), 2u);
+  for (const Block& b : set.blocks)
+    EXPECT_EQ(b.regions.empty(), b.centroid.x < 5) << b.centroid.x;
+}
+
+TEST(Cutter, JointSetRestrictedToARegionStopsAtItsOutline) {
+  Model model = jointed_box(10);
+  model.add_region({"left", box(0, 5, 0, 10), true});
+  JointSetDef set;
+  set.angle = 0;
+  set.spacing = {2};
+  set.origin = {0, 1};
+  set.region = {"left", {}};
+  model.add_joint_set(set);
+  const BlockSet& blocks = model.blocks();
+  EXPECT_EQ(blocks.blocks.size(), 7u);  // 5 traces: 6 strips on the left, one block on the right
+  EXPECT_EQ(blocks.dropped_cuts, 0);
+  EXPECT_DOUBLE_EQ(total_area(blocks), 100.0);
+}
+
+TEST(Cutter, TwoTouchingBasesAreCutSeparately) {
+  Model model;
+  model.add_block({box(0, 10, 0, 10)});
+  model.add_block({box(10, 20, 0, 10)});
+  model.add_crack({{0, 5}, {20, 5}});
+  EXPECT_EQ(model.blocks().blocks.size(), 4u);
+  EXPECT_THROW(model.add_block({box(5, 15, 5, 15)}), Error);
+  EXPECT_EQ(model.blocks().blocks.size(), 4u);
+}
+
+TEST(Cutter, FailedCommandChangesNothing) {
+  Model model = jointed_box(10);
+  JointSetDef set;
+  set.region = {"nowhere", {}};
+  EXPECT_THROW(model.add_joint_set(set), Error);
+  EXPECT_EQ(model.joint_set_count(), 0);
+  EXPECT_EQ(model.blocks().blocks.size(), 1u);
+}
+
+TEST(Cutter, FiniteTracesAndGaps) {
+  Model model = jointed_box(100);
+  JointSetDef set;
+  set.angle = 30;
+  set.spacing = {5};
+  set.trace = 20;
+  set.gap = 5;
+  model.add_joint_set(set);
+  const BlockSet& blocks = model.blocks();
+  EXPECT_GT(blocks.dropped_cuts, 0);  // isolated traces split nothing
+  EXPECT_NEAR(total_area(blocks), 10000.0, 1e-9 * 10000.0);
+}
+
+// Property test: random polygons cut by random joint sets, cracks and regions keep their
+// area to 1e-9 and give only valid blocks.
+TEST(Cutter, AreaIsConservedForRandomConfigurations) {
+  for (std::uint64_t seed = 1; seed <= 120; ++seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    // A random star-shaped polygon around the origin.
+    const int corners = 3 + static_cast<int>(u(rng) * 8);
+    Polygon base;
+    for (int k = 0; k < corners; ++k) {
+      const double a = 2 * std::numbers::pi * (k + 0.3 * u(rng)) / corners;
+      const double r = 30 + 70 * u(rng);
+      base.push_back({r * std::cos(a), r * std::sin(a)});
+    }
+    Model model;
+    model.add_block({base});
+    const int sets = 1 + static_cast<int>(u(rng) * 3);
+    for (int s = 0; s < sets; ++s) {
+      JointSetDef def;
+      def.angle = 180 * u(rng) - 90;
+      def.spacing = {4 + 20 * u(rng), 4 + 20 * u(rng)};
+      def.origin = {20 * u(rng) - 10, 20 * u(rng) - 10};
+      if (u(rng) < 0.4) {
+        def.trace = 10 + 60 * u(rng);
+        def.gap = 10 * u(rng);
+      }
+      if (u(rng) < 0.3) def.angle_dev = 10 * u(rng);
+      def.seed = seed * 7 + s;
+      model.add_joint_set(def);
+    }
+    if (u(rng) < 0.5) model.add_region({"r", box(-20, 10 * u(rng), -15, 20 * u(rng)), true});
+    if (u(rng) < 0.5) {
+      model.add_crack({{100 * u(rng) - 50, 100 * u(rng) - 50}, {100 * u(rng) - 50, 100 * u(rng) - 50}});
+    }
+    const BlockSet& set = model.blocks();
+    const double area = std::abs(signed_area(base));
+    EXPECT_NEAR(total_area(set), area, 1e-9 * area) << "seed " << seed;
+    expect_valid_blocks(set, model.tolerance());
+  }
+}
+
+}  // namespace
+}  // namespace edem
