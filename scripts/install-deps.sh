@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Installs what EDEM needs to build and test, from Debian's packages only; skips what is
+# already installed. Run as root (or with sudo available).
+set -euo pipefail
+
+packages=(
+  build-essential cmake ninja-build pkg-config
+  libeigen3-dev liblua5.4-dev libhdf5-dev libsundials-dev libsuitesparse-dev
+  libcgal-dev libgmp-dev libmpfr-dev libboost-dev
+  libgtest-dev libbenchmark-dev libcairo2-dev libcli11-dev libfmt-dev
+)
+
+missing=()
+for package in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$package")
+  fi
+done
+
+if ((${#missing[@]} == 0)); then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+echo "install-deps: installing ${missing[*]}"
+$sudo apt-get update
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y --no-install-recommends "${missing[@]}"
