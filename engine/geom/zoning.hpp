@@ -24,9 +24,15 @@ struct SizeField {
 // Minimum zone angle the mesher guarantees away from sharp block corners [deg].
 inline constexpr double kMinZoneAngle = 20.0;
 
+// Most zones one block may get; beyond it zoning stops with an error instead of running out
+// of memory or time.
+inline constexpr int kMaxZonesPerBlock = 5'000'000;
+
 // Mesh the given blocks (indices into `blocks`), each with its own size field, into one
 // Mesh whose block numbering follows `blocks`. Blocks with no size field (nullptr) get no
 // zones.
 Mesh zone_blocks(const BlockSet& blocks, const std::vector<const SizeField*>& size_of_block);
+Mesh zone_blocks(const BlockSet& blocks, const std::vector<const SizeField*>& size_of_block,
+                 int max_zones_per_block);
 
 }  // namespace edem

@@ -1,4 +1,8 @@
 // Pictures of a model with cairo: PNG, SVG or PDF chosen by the file's extension.
+//
+// The model's extent is fitted to the canvas with square metres kept square, y up, a title,
+// a legend of the edge styles drawn and a scale bar. The file is written to FILE.tmp and
+// renamed, so a failed plot never leaves a half-written picture behind.
 #pragma once
 
 #include <string>
@@ -9,16 +13,27 @@ namespace edem {
 class Model;
 
 struct PlotDef {
-  std::string file;                                // .png, .svg or .pdf
+  std::string file;                                   // .png, .svg or .pdf (any case)
   std::vector<std::string> show{"blocks", "joints"};  // any of plot_layers()
-  int width = 1200;                                // [px] (points for SVG/PDF)
-  int height = 900;                                // [px]
+  int width = 1200;                                   // [px] (points for SVG/PDF)
+  int height = 900;                                   // [px]
 };
 
-// The layer names `show` accepts, in drawing order.
+// The layer names `show` accepts, in drawing order:
+//   regions  light fill and name of each named region
+//   zones    triangle edges
+//   blocks   block outlines, one neutral style
+//   joints   block edges by origin: joints coloured by set, cracks red, region outlines
+//            (dashed when glued), potential cracks dotted, the boundary thick
+//   cracks   only the crack edges, red
 const std::vector<std::string>& plot_layers();
 
-// Draws the model; throws edem::Error for an unknown layer, extension or unwritable file.
+// Smallest and largest accepted width or height [px].
+inline constexpr int kPlotMinSize = 64;
+inline constexpr int kPlotMaxSize = 16384;
+
+// Draws the model. Throws edem::Error, leaving no file, for an unknown layer or extension,
+// a size out of range, a model without blocks, or a file that cannot be written.
 void plot(Model& model, const PlotDef& def);
 
 }  // namespace edem

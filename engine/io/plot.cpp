@@ -1,0 +1,701 @@
+#include "io/plot.hpp"
+
+#include <cairo-pdf.h>
+#include <cairo-svg.h>
+#include <cairo.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string_view>
+#include <unordered_set>
+
+#include "core/error.hpp"
+#include "core/names.hpp"
+#include "model/model.hpp"
+
+namespace edem {
+
+const std::vector<std::string>& plot_layers() {
+  static const std::vector<std::string> layers{"regions", "zones", "blocks", "joints",
+                                               "cracks"};
+  return layers;
+}
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// ---------------------------------------------------------------------------------------
+// What to draw, checked before anything is computed or written.
+
+enum class Format { png, svg, pdf };
+
+struct Layers {
+  bool regions = false, zones = false, blocks = false, joints = false, cracks = false;
+};
+
+std::string lower(std::string text) {
+  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return text;
+}
+
+std::string join(const std::vector<std::string>& items) {
+  std::string out;
+  for (const auto& item : items) out += (out.empty() ? "" : ", ") + item;
+  return out;
+}
+
+Format format_of(const std::string& file) {
+  const std::string ext = lower(fs::path(file).extension().string());
+  if (ext == ".png") return Format::png;
+  if (ext == ".svg") return Format::svg;
+  if (ext == ".pdf") return Format::pdf;
+  if (ext.empty()) fail("file '{}' has no extension: use .png, .svg or .pdf", file);
+  fail("unsupported file type '{}': use .png, .svg or .pdf", fs::path(file).extension().string());
+}
+
+Layers layers_of(const std::vector<std::string>& show) {
+  const auto& valid = plot_layers();
+  if (show.empty()) fail("show lists no layers: use any of {}", join(valid));
+  Layers layers;
+  for (const auto& name : show) {
+    if (name == "regions") layers.regions = true;
+    else if (name == "zones") layers.zones = true;
+    else if (name == "blocks") layers.blocks = true;
+    else if (name == "joints") layers.joints = true;
+    else if (name == "cracks") layers.cracks = true;
+    else fail("unknown layer '{}'{}: layers are {}", name, did_you_mean(name, valid), join(valid));
+  }
+  return layers;
+}
+
+void check_size(int width, int height) {
+  for (const int size : {width, height})
+    if (size < kPlotMinSize || size > kPlotMaxSize)
+      fail("size {{{}, {}}} is out of range: width and height must be {} to {}", width, height,
+           kPlotMinSize, kPlotMaxSize);
+}
+
+// ---------------------------------------------------------------------------------------
+// Geometry gathered from the model, in metres.
+
+// Polylines stroked together: one cairo path per style, never one stroke per segment.
+struct Polylines {
+  std::vector<Vec2> points;
+  std::vector<std::size_t> starts;  // index in `points` where each polyline begins
+  void begin(Vec2 p) {
+    starts.push_back(points.size());
+    points.push_back(p);
+  }
+  void add(Vec2 p) { points.push_back(p); }
+  bool empty() const { return starts.empty(); }
+};
+
+// The drawing class of a block edge; ordered so that later classes are drawn on top.
+struct EdgeClass {
+  int rank = 0;  // potential, region, joint, crack, boundary
+  int set = -1;  // joint set, else -1
+  bool glued = false;
+  auto operator<=>(const EdgeClass&) const = default;
+};
+
+EdgeClass class_of(const EdgeOrigin& origin) {
+  switch (origin.kind) {
+    case EdgeKind::potential: return {0, -1, false};
+    case EdgeKind::region: return {1, -1, origin.glued};
+    case EdgeKind::joint: return {2, origin.set, origin.glued};
+    case EdgeKind::crack: return {3, -1, origin.glued};
+    case EdgeKind::boundary: break;
+  }
+  return {4, -1, false};
+}
+
+// An undirected edge, identical for both blocks that share it (vertices are shared exactly).
+struct EdgeKey {
+  Vec2 a, b;
+  bool operator==(const EdgeKey& o) const { return a == o.a && b == o.b; }
+};
+
+EdgeKey key_of(Vec2 p, Vec2 q) {
+  const bool ordered = p.x < q.x || (p.x == q.x && p.y <= q.y);
+  return ordered ? EdgeKey{p, q} : EdgeKey{q, p};
+}
+
+struct EdgeKeyHash {
+  std::size_t operator()(const EdgeKey& k) const {
+    std::size_t h = 0;
+    for (const double v : {k.a.x, k.a.y, k.b.x, k.b.y})
+      h = (h ^ std::hash<double>{}(v)) * 1099511628211ull;
+    return h;
+  }
+};
+
+using Classify = std::function<std::optional<EdgeClass>(const EdgeOrigin&)>;
+
+// Every block edge once, sorted into classes; consecutive edges of one class along a ring are
+// chained so that dash patterns run on across vertices.
+std::map<EdgeClass, Polylines> collect_edges(const BlockSet& set, const Classify& classify) {
+  std::map<EdgeClass, Polylines> out;
+  std::unordered_set<EdgeKey, EdgeKeyHash> seen;
+  auto walk = [&](const Ring& ring) {
+    const std::size_t n = ring.points.size();
+    if (n < 2 || ring.edges.size() != n) return;
+    Polylines* chain = nullptr;  // the class whose last polyline ends at the current vertex
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec2 a = ring.points[i], b = ring.points[(i + 1) % n];
+      const auto cls = classify(ring.edges[i]);
+      if (!cls || !seen.insert(key_of(a, b)).second) {
+        chain = nullptr;
+        continue;
+      }
+      Polylines& lines = out[*cls];
+      if (chain != &lines) lines.begin(a);
+      lines.add(b);
+      chain = &lines;
+    }
+  };
+  for (const Block& block : set.blocks) {
+    walk(block.outer);
+    for (const Ring& hole : block.holes) walk(hole);
+  }
+  return out;
+}
+
+// Each zone edge once (interior edges are shared by two zones).
+Polylines zone_edges(const Mesh& mesh) {
+  std::vector<std::uint64_t> keys;
+  keys.reserve(mesh.zone_gp.size() * 3);
+  const auto gp_count = static_cast<std::uint64_t>(mesh.gp_position.size());
+  for (const auto& zone : mesh.zone_gp) {
+    for (int i = 0; i < 3; ++i) {
+      const auto a = static_cast<std::uint64_t>(zone[i]);
+      const auto b = static_cast<std::uint64_t>(zone[(i + 1) % 3]);
+      if (a >= gp_count || b >= gp_count) continue;
+      keys.push_back(std::min(a, b) << 32 | std::max(a, b));
+    }
+  }
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  Polylines lines;
+  lines.points.reserve(keys.size() * 2);
+  lines.starts.reserve(keys.size());
+  for (const std::uint64_t key : keys) {
+    lines.begin(mesh.gp_position[key >> 32]);
+    lines.add(mesh.gp_position[key & 0xffffffffu]);
+  }
+  return lines;
+}
+
+// Bounding box of every block's outer ring [m]; nullopt when there are no blocks.
+std::optional<Box> extent_of(const BlockSet& set) {
+  std::optional<Box> box;
+  for (const Block& block : set.blocks) {
+    for (const Vec2 p : block.outer.points) {
+      if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
+      if (!box) box = Box{p.x, p.x, p.y, p.y};
+      box->x0 = std::min(box->x0, p.x);
+      box->x1 = std::max(box->x1, p.x);
+      box->y0 = std::min(box->y0, p.y);
+      box->y1 = std::max(box->y1, p.y);
+    }
+  }
+  return box;
+}
+
+// ---------------------------------------------------------------------------------------
+// Styles. Widths and dashes are in units of the canvas scale (about a pixel at 800 px).
+
+struct Rgb {
+  double r, g, b;
+};
+
+constexpr Rgb rgb(unsigned hex) {
+  return {((hex >> 16) & 0xff) / 255.0, ((hex >> 8) & 0xff) / 255.0, (hex & 0xff) / 255.0};
+}
+
+struct Pen {
+  Rgb colour;
+  double width;
+  std::vector<double> dash;  // on, off, ...; empty: solid
+  bool round = true;         // round caps and joins; butt is much faster for many segments
+};
+
+// Qualitative colours for joint sets (no red: red means crack).
+constexpr std::array kSetColours{rgb(0x1f77b4), rgb(0xff7f0e), rgb(0x2ca02c), rgb(0x9467bd),
+                                 rgb(0x8c564b), rgb(0xe377c2), rgb(0xbcbd22), rgb(0x17becf)};
+// Light fills for regions, neighbours told apart.
+constexpr std::array kRegionColours{rgb(0xb3cde3), rgb(0xfbb4ae), rgb(0xccebc5), rgb(0xdecbe4),
+                                    rgb(0xfed9a6), rgb(0xffffcc), rgb(0xe5d8bd), rgb(0xfddaec)};
+constexpr Rgb kInk = rgb(0x202020);
+constexpr Rgb kCrack = rgb(0xd62728);
+
+Pen pen_of(const EdgeClass& cls) {
+  Pen pen;
+  switch (cls.rank) {
+    case 0: pen = {rgb(0x8c8c8c), 0.7, {1.5, 2.0}}; break;
+    case 1: pen = {rgb(0x303030), 1.2, {}}; break;
+    case 2: pen = {kSetColours[static_cast<std::size_t>(std::max(cls.set, 0)) % kSetColours.size()],
+                   1.3, {}}; break;
+    case 3: pen = {kCrack, 1.8, {}}; break;
+    default: return {rgb(0x000000), 2.4, {}};
+  }
+  if (cls.glued) pen.dash = {6.0, 3.5};
+  return pen;
+}
+
+std::string label_of(const EdgeClass& cls) {
+  const std::string glued = cls.glued ? ", glued" : "";
+  switch (cls.rank) {
+    case 0: return "potential crack";
+    case 1: return cls.glued ? "region outline, glued" : "region outline";
+    case 2: return fmt::format("joint set {}{}", cls.set + 1, glued);
+    case 3: return "crack" + glued;
+    default: return "boundary";
+  }
+}
+
+const Pen kBlockPen{rgb(0x404040), 0.8, {}, false};
+const Pen kZonePen{rgb(0xc4c4c4), 0.45, {}, false};
+
+// ---------------------------------------------------------------------------------------
+// Canvas: the cairo surface, the layout of its parts and the model-to-device mapping.
+
+struct SurfaceDeleter {
+  void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
+};
+struct ContextDeleter {
+  void operator()(cairo_t* c) const { cairo_destroy(c); }
+};
+using SurfacePtr = std::unique_ptr<cairo_surface_t, SurfaceDeleter>;
+using ContextPtr = std::unique_ptr<cairo_t, ContextDeleter>;
+
+struct Rect {
+  double x, y, w, h;  // device units, y down
+};
+
+// Model metres to device units: uniform scale, y up, centred in the plot area.
+struct View {
+  Box box;
+  double k = 1.0;  // device units per metre
+  double ox = 0.0, oy = 0.0;
+  Vec2 operator()(Vec2 p) const { return {ox + k * (p.x - box.x0), oy + k * (box.y1 - p.y)}; }
+};
+
+View fit(const Box& box, const Rect& area) {
+  const double ew = std::max(box.x1 - box.x0, 1e-300), eh = std::max(box.y1 - box.y0, 1e-300);
+  View view{box};
+  view.k = std::min(area.w / ew, area.h / eh);
+  view.ox = area.x + 0.5 * (area.w - view.k * ew);
+  view.oy = area.y + 0.5 * (area.h - view.k * eh);
+  return view;
+}
+
+class Painter {
+ public:
+  Painter(cairo_t* cr, double scale) : cr_(cr), s_(scale) {
+    cairo_select_font_face(cr_, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  }
+  double s() const { return s_; }
+  cairo_t* cr() const { return cr_; }
+
+  void set_pen(const Pen& pen) {
+    cairo_set_source_rgb(cr_, pen.colour.r, pen.colour.g, pen.colour.b);
+    cairo_set_line_width(cr_, pen.width * s_);
+    std::vector<double> dash = pen.dash;
+    for (double& d : dash) d *= s_;
+    cairo_set_dash(cr_, dash.data(), static_cast<int>(dash.size()), 0.0);
+    const bool round = pen.round && dash.empty();
+    cairo_set_line_cap(cr_, round ? CAIRO_LINE_CAP_ROUND : CAIRO_LINE_CAP_BUTT);
+    cairo_set_line_join(cr_, round ? CAIRO_LINE_JOIN_ROUND : CAIRO_LINE_JOIN_BEVEL);
+  }
+
+  // One path, one stroke for the whole batch.
+  void stroke(const Polylines& lines, const View& view, const Pen& pen) {
+    if (lines.empty()) return;
+    cairo_new_path(cr_);
+    for (std::size_t i = 0; i < lines.starts.size(); ++i) {
+      const std::size_t end = i + 1 < lines.starts.size() ? lines.starts[i + 1] : lines.points.size();
+      const Vec2 a = view(lines.points[lines.starts[i]]);
+      cairo_move_to(cr_, a.x, a.y);
+      for (std::size_t j = lines.starts[i] + 1; j < end; ++j) {
+        const Vec2 b = view(lines.points[j]);
+        cairo_line_to(cr_, b.x, b.y);
+      }
+    }
+    set_pen(pen);
+    cairo_stroke(cr_);
+  }
+
+  void polygon_path(const Polygon& polygon, const View& view) {
+    cairo_new_path(cr_);
+    for (const Vec2 p : polygon) {
+      const Vec2 d = view(p);
+      cairo_line_to(cr_, d.x, d.y);
+    }
+    cairo_close_path(cr_);
+  }
+
+  enum class Align { left, centre, right };
+
+  double text_width(std::string_view text, double size, bool bold = false) {
+    font(size, bold);
+    cairo_text_extents_t ext;
+    cairo_text_extents(cr_, std::string(text).c_str(), &ext);
+    return ext.x_advance;
+  }
+
+  // Text whose vertical centre is at y; a white halo keeps it legible over lines.
+  void text(std::string_view text, double x, double y, double size, Align align, Rgb colour,
+            bool bold = false, bool halo = false) {
+    const std::string str(text);
+    font(size, bold);
+    cairo_text_extents_t ext;
+    cairo_text_extents(cr_, str.c_str(), &ext);
+    cairo_font_extents_t fe;
+    cairo_font_extents(cr_, &fe);
+    double left = x;
+    if (align == Align::centre) left -= 0.5 * ext.x_advance;
+    if (align == Align::right) left -= ext.x_advance;
+    const double baseline = y + 0.5 * (fe.ascent - fe.descent);
+    cairo_new_path(cr_);
+    cairo_move_to(cr_, left, baseline);
+    cairo_text_path(cr_, str.c_str());
+    if (halo) {
+      cairo_set_source_rgba(cr_, 1, 1, 1, 0.85);
+      cairo_set_line_width(cr_, 0.25 * size);
+      cairo_set_dash(cr_, nullptr, 0, 0.0);
+      cairo_set_line_join(cr_, CAIRO_LINE_JOIN_ROUND);
+      cairo_stroke_preserve(cr_);
+    }
+    cairo_set_source_rgb(cr_, colour.r, colour.g, colour.b);
+    cairo_fill(cr_);
+  }
+
+ private:
+  void font(double size, bool bold) {
+    cairo_select_font_face(cr_, "sans-serif", CAIRO_FONT_SLANT_NORMAL,
+                           bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr_, size);
+  }
+
+  cairo_t* cr_;
+  double s_;
+};
+
+// ---------------------------------------------------------------------------------------
+// The picture's parts.
+
+struct LegendEntry {
+  std::string label;
+  Pen pen;
+};
+
+struct Layout {
+  double s = 1.0;  // scale of lines and text
+  Rect title{}, plot{}, legend{}, footer{};
+  bool has_legend = false;
+};
+
+constexpr double kLegendFont = 11.0, kLegendRow = 18.0, kLegendSwatch = 26.0, kLegendPad = 8.0;
+
+double legend_width(Painter& p, const std::vector<LegendEntry>& entries) {
+  double text = 0.0;
+  for (const auto& e : entries) text = std::max(text, p.text_width(e.label, kLegendFont * p.s()));
+  return (2 * kLegendPad + kLegendSwatch + 6.0) * p.s() + text;
+}
+
+Layout layout(Painter& p, double width, double height, bool has_title,
+              const std::vector<LegendEntry>& legend) {
+  Layout out;
+  const double s = p.s(), margin = 14.0 * s;
+  const double title_h = has_title ? 30.0 * s : 0.0, footer_h = 30.0 * s;
+  out.s = s;
+  out.title = {margin, margin * 0.5, width - 2 * margin, title_h};
+  const double top = margin + title_h, bottom = height - margin - footer_h;
+  double right = width - margin;
+  const double lw = legend_width(p, legend);
+  // The legend gets a column on the right unless it would crowd the model out.
+  if (!legend.empty() && lw < 0.35 * width) {
+    out.has_legend = true;
+    const double lh = (2 * kLegendPad + kLegendRow * static_cast<double>(legend.size())) * s;
+    out.legend = {width - margin - lw, top, lw, lh};
+    right -= lw + margin;
+  }
+  out.plot = {margin, top, std::max(right - margin, 1.0), std::max(bottom - top, 1.0)};
+  out.footer = {margin, bottom, width - 2 * margin, footer_h};
+  return out;
+}
+
+// A model narrower than its area moves right up to the legend, and the two are centred.
+void centre_with_legend(Layout& lay, View& view) {
+  if (!lay.has_legend) return;
+  const double model_w = view.k * (view.box.x1 - view.box.x0);
+  const double gap = lay.legend.x - (lay.plot.x + lay.plot.w);
+  const double slack = lay.plot.w - model_w;
+  if (slack <= 0) return;
+  view.ox = lay.plot.x + 0.5 * slack;
+  lay.legend.x = view.ox + model_w + gap;
+}
+
+void draw_legend(Painter& p, const Rect& r, const std::vector<LegendEntry>& entries) {
+  cairo_t* cr = p.cr();
+  const double s = p.s();
+  cairo_new_path(cr);
+  cairo_rectangle(cr, r.x, r.y, r.w, r.h);
+  cairo_set_source_rgb(cr, 1, 1, 1);
+  cairo_fill_preserve(cr);
+  p.set_pen({rgb(0xb0b0b0), 0.8, {}});
+  cairo_stroke(cr);
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    const double y = r.y + (kLegendPad + kLegendRow * (static_cast<double>(i) + 0.5)) * s;
+    const double x = r.x + kLegendPad * s;
+    cairo_new_path(cr);
+    cairo_move_to(cr, x, y);
+    cairo_line_to(cr, x + kLegendSwatch * s, y);
+    p.set_pen(entries[i].pen);
+    cairo_stroke(cr);
+    p.text(entries[i].label, x + (kLegendSwatch + 6.0) * s, y, kLegendFont * s,
+           Painter::Align::left, kInk);
+  }
+}
+
+// The largest 1, 2 or 5 x 10^k not above `target` [m].
+double round_length(double target) {
+  const double decade = std::pow(10.0, std::floor(std::log10(target)));
+  for (const double m : {5.0, 2.0, 1.0})
+    if (m * decade <= target * (1 + 1e-9)) return m * decade;
+  return decade;
+}
+
+std::string length_label(double metres) {
+  if (metres >= 1000.0) return fmt::format("{:g} km", metres / 1000.0);
+  if (metres < 0.01) return fmt::format("{:g} mm", metres * 1000.0);
+  return fmt::format("{:g} m", metres);
+}
+
+void draw_scale_bar(Painter& p, const Rect& footer, const View& view, double plot_width) {
+  const double s = p.s();
+  const double length = round_length(0.2 * plot_width / view.k);
+  if (!std::isfinite(length) || length <= 0) return;
+  const double w = length * view.k, h = 5.0 * s;
+  const double x = std::max(footer.x, view.ox), y = footer.y + 0.5 * footer.h - 0.5 * h;
+  cairo_t* cr = p.cr();
+  cairo_set_dash(cr, nullptr, 0, 0.0);
+  for (int half = 0; half < 2; ++half) {
+    cairo_new_path(cr);
+    cairo_rectangle(cr, x + 0.5 * w * half, y, 0.5 * w, h);
+    const double shade = half == 0 ? 0.12 : 1.0;
+    cairo_set_source_rgb(cr, shade, shade, shade);
+    cairo_fill(cr);
+  }
+  cairo_new_path(cr);
+  cairo_rectangle(cr, x, y, w, h);
+  p.set_pen({kInk, 0.8, {}});
+  cairo_stroke(cr);
+  p.text(length_label(length), x + w + 6.0 * s, y + 0.5 * h, 11.0 * s, Painter::Align::left, kInk);
+}
+
+// ---------------------------------------------------------------------------------------
+// Writing: FILE.tmp, renamed over FILE only once complete.
+
+class TempFile {
+ public:
+  explicit TempFile(fs::path path) : path_(std::move(path)) {}
+  TempFile(const TempFile&) = delete;
+  TempFile& operator=(const TempFile&) = delete;
+  ~TempFile() {
+    std::error_code ec;
+    if (!kept_) fs::remove(path_, ec);
+  }
+  const fs::path& path() const { return path_; }
+  void keep() { kept_ = true; }
+
+ private:
+  fs::path path_;
+  bool kept_ = false;
+};
+
+void check_writable(const std::string& file) {
+  const fs::path parent = fs::path(file).parent_path();
+  std::error_code ec;
+  if (!parent.empty() && !fs::is_directory(parent, ec))
+    fail("cannot write '{}': directory '{}' does not exist", file, parent.string());
+  if (fs::is_directory(file, ec)) fail("cannot write '{}': it is a directory", file);
+}
+
+void check_cairo(cairo_status_t status, const std::string& file) {
+  if (status != CAIRO_STATUS_SUCCESS)
+    fail("cannot write '{}': {}", file, cairo_status_to_string(status));
+}
+
+SurfacePtr make_surface(Format format, const fs::path& tmp, int width, int height) {
+  const double w = width, h = height;
+  switch (format) {
+    case Format::svg: return SurfacePtr(cairo_svg_surface_create(tmp.c_str(), w, h));
+    case Format::pdf: return SurfacePtr(cairo_pdf_surface_create(tmp.c_str(), w, h));
+    case Format::png: break;
+  }
+  return SurfacePtr(cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height));
+}
+
+// Everything the picture needs from the model, gathered before any file is opened.
+struct Scene {
+  std::string title;
+  Box box{};
+  std::size_t blocks = 0;
+  std::optional<std::size_t> zones;  // when the zones layer is shown
+  std::vector<RegionDef> regions;
+  Polylines zone_lines;
+  Polylines block_lines;
+  std::map<EdgeClass, Polylines> edges;  // joints and cracks layers
+};
+
+Scene gather(Model& model, const Layers& layers) {
+  Scene scene;
+  scene.title = model.title();
+  const BlockSet& set = model.blocks();
+  const auto box = extent_of(set);
+  if (!box) fail("nothing to plot: the model has no blocks (add a block{{}} first)");
+  scene.box = *box;
+  scene.blocks = set.blocks.size();
+  if (layers.regions) scene.regions = model.regions();
+  if (layers.zones) {
+    const Mesh& mesh = model.mesh();
+    scene.zones = mesh.zone_gp.size();
+    scene.zone_lines = zone_edges(mesh);
+  }
+  // Edges the joints or cracks layer restyles are left out of the neutral block outlines,
+  // so that dashes are not filled in underneath.
+  const bool joints = layers.joints, cracks = layers.cracks;
+  if (layers.blocks) {
+    scene.block_lines = std::move(collect_edges(set, [&](const EdgeOrigin& o) -> std::optional<EdgeClass> {
+      if (joints || (cracks && o.kind == EdgeKind::crack)) return std::nullopt;
+      return EdgeClass{};
+    })[EdgeClass{}]);
+  }
+  if (joints || cracks) {
+    scene.edges = collect_edges(set, [&](const EdgeOrigin& o) -> std::optional<EdgeClass> {
+      if (!joints && o.kind != EdgeKind::crack) return std::nullopt;
+      return class_of(o);
+    });
+  }
+  return scene;
+}
+
+std::vector<LegendEntry> legend_of(const Scene& scene, const Layers& layers) {
+  // Boundary, joint sets in order, cracks, region outlines, potential cracks.
+  constexpr std::array kLegendRank{0, 1, 3, 2, 4};  // by EdgeClass::rank
+  std::vector<EdgeClass> classes;
+  for (const auto& [cls, lines] : scene.edges)
+    if (!lines.empty()) classes.push_back(cls);
+  std::stable_sort(classes.begin(), classes.end(), [&](const EdgeClass& a, const EdgeClass& b) {
+    return kLegendRank[static_cast<std::size_t>(a.rank)] > kLegendRank[static_cast<std::size_t>(b.rank)];
+  });
+  std::vector<LegendEntry> entries;
+  for (const EdgeClass& cls : classes) entries.push_back({label_of(cls), pen_of(cls)});
+  if (layers.blocks && !scene.block_lines.empty()) entries.push_back({"block outline", kBlockPen});
+  if (!scene.zone_lines.empty()) entries.push_back({"zone", kZonePen});
+  return entries;
+}
+
+void draw_regions(Painter& p, const Scene& scene, const View& view) {
+  cairo_t* cr = p.cr();
+  for (std::size_t i = 0; i < scene.regions.size(); ++i) {
+    const Polygon& polygon = scene.regions[i].polygon;
+    if (polygon.size() < 3) continue;
+    const Rgb fill = kRegionColours[i % kRegionColours.size()];
+    p.polygon_path(polygon, view);
+    cairo_set_source_rgba(cr, fill.r, fill.g, fill.b, 0.7);
+    cairo_fill_preserve(cr);
+    p.set_pen({{fill.r * 0.6, fill.g * 0.6, fill.b * 0.6}, 0.8, {}});
+    cairo_stroke(cr);
+  }
+}
+
+void draw_region_labels(Painter& p, const Scene& scene, const View& view) {
+  for (const RegionDef& region : scene.regions) {
+    if (region.polygon.size() < 3 || region.name.empty()) continue;
+    const Vec2 c = view(centroid(region.polygon));
+    p.text(region.name, c.x, c.y, 11.0 * p.s(), Painter::Align::centre, kInk, false, true);
+  }
+}
+
+void render(cairo_t* cr, const Scene& scene, const Layers& layers, double width, double height) {
+  const double s = std::clamp(std::min(width, height) / 800.0, 0.5, 4.0);
+  Painter p(cr, s);
+  const std::vector<LegendEntry> legend = legend_of(scene, layers);
+  Layout lay = layout(p, width, height, !scene.title.empty(), legend);
+  View view = fit(scene.box, lay.plot);
+  centre_with_legend(lay, view);
+
+  cairo_set_source_rgb(cr, 1, 1, 1);
+  cairo_paint(cr);
+
+  // The model, clipped to its area (regions may reach outside the blocks).
+  cairo_save(cr);
+  const double pad = 4.0 * s;
+  cairo_rectangle(cr, lay.plot.x - pad, lay.plot.y - pad, lay.plot.w + 2 * pad, lay.plot.h + 2 * pad);
+  cairo_clip(cr);
+  if (layers.regions) draw_regions(p, scene, view);
+  p.stroke(scene.zone_lines, view, kZonePen);
+  p.stroke(scene.block_lines, view, kBlockPen);
+  for (const auto& [cls, lines] : scene.edges) p.stroke(lines, view, pen_of(cls));
+  if (layers.regions) draw_region_labels(p, scene, view);
+  cairo_restore(cr);
+
+  if (!scene.title.empty())
+    p.text(scene.title, 0.5 * width, lay.title.y + 0.5 * lay.title.h, 16.0 * s,
+           Painter::Align::centre, kInk, true);
+  if (lay.has_legend) draw_legend(p, lay.legend, legend);
+  draw_scale_bar(p, lay.footer, view, lay.plot.w);
+  std::string counts = fmt::format("{} block{}", scene.blocks, scene.blocks == 1 ? "" : "s");
+  if (scene.zones) counts += fmt::format(", {} zone{}", *scene.zones, *scene.zones == 1 ? "" : "s");
+  const double right = lay.has_legend ? lay.legend.x + lay.legend.w : lay.footer.x + lay.footer.w;
+  p.text(counts, right, lay.footer.y + 0.5 * lay.footer.h, 10.0 * s,
+         Painter::Align::right, rgb(0x707070));
+}
+
+}  // namespace
+
+void plot(Model& model, const PlotDef& def) {
+  const Format format = format_of(def.file);
+  const Layers layers = layers_of(def.show);
+  check_size(def.width, def.height);
+  check_writable(def.file);
+  const Scene scene = gather(model, layers);
+
+  TempFile tmp(fs::path(def.file + ".tmp"));
+  SurfacePtr surface = make_surface(format, tmp.path(), def.width, def.height);
+  check_cairo(cairo_surface_status(surface.get()), def.file);
+  if (format == Format::pdf) {
+    cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_TITLE, scene.title.c_str());
+    cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATOR, "EDEM");
+  }
+  {
+    ContextPtr cr(cairo_create(surface.get()));
+    render(cr.get(), scene, layers, def.width, def.height);
+    check_cairo(cairo_status(cr.get()), def.file);
+  }
+  if (format == Format::png) {
+    check_cairo(cairo_surface_write_to_png(surface.get(), tmp.path().c_str()), def.file);
+  } else {
+    cairo_surface_finish(surface.get());
+    check_cairo(cairo_surface_status(surface.get()), def.file);
+  }
+  surface.reset();
+
+  std::error_code ec;
+  fs::rename(tmp.path(), def.file, ec);
+  if (ec) fail("cannot write '{}': {}", def.file, ec.message());
+  tmp.keep();
+}
+
+}  // namespace edem

@@ -1,0 +1,42 @@
+// plot{}: pictures of the model (PNG, SVG or PDF).
+#include <lua.hpp>
+
+#include "commands.hpp"
+#include "context.hpp"
+#include "io/plot.hpp"
+
+namespace edem {
+namespace {
+
+int run_plot(lua_State*, Context& context, const Args& args) {
+  PlotDef def;
+  def.file = args.string("file");
+  def.show = args.get<std::vector<std::string>>("show");
+  const auto size = args.get<std::array<std::int64_t, 2>>("size");
+  def.width = static_cast<int>(size[0]);
+  def.height = static_cast<int>(size[1]);
+  plot(context.model(), def);
+  return 0;
+}
+
+}  // namespace
+
+const Command& plot_command() {
+  static const Command command{
+      .name = "plot",
+      .help = "Draws the model to a picture; the file's extension (.png, .svg or .pdf) picks the "
+              "format.",
+      .keys =
+          {
+              {"file", Type::string, "", any_value, kRequired, "the picture to write"},
+              {"show", Type::strings, "", any_value, R"({"blocks", "joints"})",
+               "layers to draw, in any order", {}, plot_layers},
+              {"size", Type::int_pair, "px", between(kPlotMinSize, kPlotMaxSize),
+               "{1200, 900}", "width and height (points for SVG and PDF)"},
+          },
+      .run = run_plot,
+  };
+  return command;
+}
+
+}  // namespace edem

@@ -1,0 +1,38 @@
+// The index of the language: every command, in the order the reference lists them.
+//
+// Each command family (cmd_*.cpp) defines its Command specs; commands() lists them all in
+// one table, and register_commands() makes each a Lua global that reads its arguments
+// against the schema before running.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "schema.hpp"
+
+struct lua_State;
+
+namespace edem {
+
+// The specs, defined one per command in the cmd_*.cpp files.
+const Command& model_command();
+const Command& block_command();
+const Command& jset_command();
+const Command& crack_command();
+const Command& region_command();
+const Command& zone_command();
+const Command& info_command();
+const Command& blocks_command();
+const Command& zones_command();
+const Command& plot_command();
+
+// Every command of the language, in reference order.
+const std::vector<const Command*>& commands();
+
+// The command called `name`, or nullptr.
+const Command* find_command(std::string_view name);
+
+// Sets a global function for each command in `L` (defaults are evaluated once here).
+void register_commands(lua_State* L);
+
+}  // namespace edem

@@ -1,0 +1,54 @@
+// The Lua state that runs EDEM scripts: standard Lua plus the commands, the stdlib on
+// package.path, and errors reported as "FILE:LINE: word: message".
+//
+// The first line of every error names the script line and one lowercase word: the command
+// that failed (`jset: spacing must be > 0, got -2`), or `syntax`, `lua` (a Lua runtime
+// error), `error` (the script's own error() or assert()); an unknown global function becomes
+// `blok: unknown command (did you mean 'block'?)`. A short traceback follows when the error
+// happened inside a function.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "context.hpp"
+
+struct lua_State;
+
+namespace edem {
+
+struct InterpreterOptions {
+  bool quiet = false;                    // commands print no progress
+  std::vector<std::string> stdlib_dirs;  // searched first for require "edem.x"
+};
+
+class Interpreter {
+ public:
+  explicit Interpreter(InterpreterOptions options = {});
+  ~Interpreter();
+  Interpreter(const Interpreter&) = delete;
+  Interpreter& operator=(const Interpreter&) = delete;
+
+  // Runs a script file with `args` as arg[1], ... (and as `...`). Returns nothing on success,
+  // else the error message to print (without a final newline).
+  std::optional<std::string> run_file(const std::string& path,
+                                      const std::vector<std::string>& args = {});
+
+  // Runs Lua source as if it were the file `name` (for tests and embedding).
+  std::optional<std::string> run_string(std::string_view code, const std::string& name);
+
+  Context& context() { return context_; }
+  lua_State* state() { return state_.get(); }
+
+ private:
+  std::optional<std::string> run_loaded(int status, const std::string& path, int nargs);
+
+  Context context_;
+  std::unique_ptr<lua_State, void (*)(lua_State*)> state_;  // closed before context_ goes
+  lua_State* L_ = nullptr;                                  // state_.get()
+};
+
+}  // namespace edem

@@ -1,0 +1,3 @@
+-- line: 3
+-- expect: block: no outline: give corner points
+block{}

@@ -1,0 +1,3 @@
+-- line: 3
+-- expect: model: title must be a string, got 42
+model{ title = 42 }

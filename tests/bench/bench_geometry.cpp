@@ -1,0 +1,43 @@
+// Building and zoning the main example (scripts/examples/jointed_cavern.lua) through the
+// engine: Case 3 joints in the seed's 200 m x 180 m region around a glued warhead outline,
+// zoned to about 50k zones. Results go to tests/bench/RESULTS.md.
+#include <benchmark/benchmark.h>
+
+#include "scenes.hpp"
+
+namespace {
+
+using edem::scenes::jointed_cavern;
+
+// Zone sizes giving about 50k zones with the example's grading.
+constexpr double kEdge = 0.42;
+constexpr double kFar = 3.0;
+
+void BM_CutExample(benchmark::State& state) {
+  for (auto _ : state) {
+    edem::Model model = jointed_cavern();
+    benchmark::DoNotOptimize(model.blocks().blocks.size());
+  }
+}
+BENCHMARK(BM_CutExample)->Unit(benchmark::kMillisecond);
+
+void BM_CutAndZoneExample(benchmark::State& state) {
+  edem::ModelInfo info;
+  for (auto _ : state) {
+    edem::Model model = jointed_cavern();
+    edem::ZoneDef zone;
+    zone.edge = kEdge;
+    zone.far = kFar;
+    zone.near = {{"cavern", {}}};
+    model.zone(zone);
+    info = model.info();
+  }
+  state.counters["blocks"] = info.blocks;
+  state.counters["zones"] = info.zones;
+  state.counters["gridpoints"] = info.gridpoints;
+}
+BENCHMARK(BM_CutAndZoneExample)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

@@ -1,0 +1,277 @@
+// plot{}: a picture of each file type with the right header, and bad input rejected
+// without leaving a file behind.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "core/error.hpp"
+#include "io/plot.hpp"
+#include "model/model.hpp"
+
+namespace edem {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A 10 m box cut by two joint sets and a crack, with a glued square region, zoned.
+Model jointed_box(bool zoned = true) {
+  Model model(ModelDef{"Plot test: jointed box"});
+  model.add_block(BlockDef{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}});
+  JointSetDef main_set;
+  main_set.angle = 30;
+  main_set.spacing = {2.5};
+  model.add_joint_set(main_set);
+  JointSetDef cross;
+  cross.angle = -60;
+  cross.spacing = {3.0};
+  cross.origin = {0.3, 0.7};
+  model.add_joint_set(cross);
+  model.add_crack(CrackDef{{1.2, 8.1}, {6.3, 9.2}});
+  model.add_region(RegionDef{"opening", {{4, 4}, {6, 4}, {6, 6}, {4, 6}}, true});
+  if (zoned) {
+    ZoneDef zone;
+    zone.edge = 0.6;
+    model.zone(zone);
+  }
+  return model;
+}
+
+std::string read_all(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+std::string message_of(Model& model, const PlotDef& def) {
+  try {
+    plot(model, def);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+class PlotTest : public testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() /
+           (std::string("edem_plot_") + info->name() + "_" +
+            std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::error_code ec;
+    fs::remove_all(dir_, ec);
+  }
+  std::string file(const std::string& name) const { return (dir_ / name).string(); }
+  bool dir_is_empty() const { return fs::is_empty(dir_); }
+
+  fs::path dir_;
+};
+
+PlotDef all_layers(const std::string& file) {
+  PlotDef def;
+  def.file = file;
+  def.show = {"regions", "zones", "blocks", "joints"};
+  return def;
+}
+
+TEST_F(PlotTest, WritesPngOfTheRequestedSize) {
+  Model model = jointed_box();
+  PlotDef def = all_layers(file("box.png"));
+  def.width = 640;
+  def.height = 480;
+  plot(model, def);
+  const std::string data = read_all(def.file);
+  ASSERT_GT(data.size(), 24u);
+  EXPECT_EQ(data.substr(0, 8), std::string("\x89PNG\r\n\x1a\n", 8));
+  // IHDR: width and height, big-endian, at bytes 16 and 20.
+  auto be32 = [&](std::size_t at) {
+    unsigned v = 0;
+    for (std::size_t i = 0; i < 4; ++i) v = v << 8 | static_cast<unsigned char>(data[at + i]);
+    return v;
+  };
+  EXPECT_EQ(be32(16), 640u);
+  EXPECT_EQ(be32(20), 480u);
+  EXPECT_FALSE(fs::exists(def.file + ".tmp"));
+}
+
+TEST_F(PlotTest, WritesSvg) {
+  Model model = jointed_box();
+  const PlotDef def = all_layers(file("box.svg"));
+  plot(model, def);
+  const std::string data = read_all(def.file);
+  ASSERT_FALSE(data.empty());
+  EXPECT_TRUE(data.rfind("<?xml", 0) == 0 || data.rfind("<svg", 0) == 0) << data.substr(0, 40);
+  EXPECT_NE(data.find("</svg>"), std::string::npos);
+}
+
+TEST_F(PlotTest, WritesPdf) {
+  Model model = jointed_box();
+  const PlotDef def = all_layers(file("box.pdf"));
+  plot(model, def);
+  const std::string data = read_all(def.file);
+  ASSERT_FALSE(data.empty());
+  EXPECT_EQ(data.substr(0, 4), "%PDF");
+  EXPECT_NE(data.find("%%EOF"), std::string::npos);
+}
+
+TEST_F(PlotTest, ExtensionIsCaseInsensitive) {
+  Model model = jointed_box(false);
+  PlotDef def;
+  def.file = file("BOX.PNG");
+  plot(model, def);
+  EXPECT_EQ(read_all(def.file).substr(1, 3), "PNG");
+}
+
+TEST_F(PlotTest, EveryLayerAloneAndAllTogether) {
+  Model model = jointed_box();
+  for (const std::string& layer : plot_layers()) {
+    PlotDef def;
+    def.file = file(layer + ".png");
+    def.show = {layer};
+    EXPECT_NO_THROW(plot(model, def)) << layer;
+    EXPECT_TRUE(fs::exists(def.file)) << layer;
+  }
+  PlotDef def;
+  def.file = file("all.svg");
+  def.show = plot_layers();
+  EXPECT_NO_THROW(plot(model, def));
+}
+
+TEST_F(PlotTest, OverwritesAnExistingFile) {
+  Model model = jointed_box(false);
+  const std::string path = file("box.png");
+  std::ofstream(path) << "old";
+  PlotDef def;
+  def.file = path;
+  plot(model, def);
+  EXPECT_EQ(read_all(path).substr(1, 3), "PNG");
+}
+
+TEST_F(PlotTest, UnzonedModelPlotsWithZonesLayer) {
+  Model model = jointed_box(false);
+  const PlotDef def = all_layers(file("unzoned.png"));
+  EXPECT_NO_THROW(plot(model, def));
+  EXPECT_TRUE(fs::exists(def.file));
+}
+
+TEST_F(PlotTest, UnknownLayerThrowsWithHintAndLeavesNoFile) {
+  Model model = jointed_box(false);
+  PlotDef def;
+  def.file = file("box.png");
+  def.show = {"blocks", "jionts"};
+  const std::string message = message_of(model, def);
+  EXPECT_NE(message.find("unknown layer 'jionts'"), std::string::npos) << message;
+  EXPECT_NE(message.find("did you mean 'joints'"), std::string::npos) << message;
+  EXPECT_NE(message.find("regions, zones, blocks, joints"), std::string::npos) << message;
+  EXPECT_THROW(plot(model, def), Error);
+  EXPECT_TRUE(dir_is_empty());
+}
+
+TEST_F(PlotTest, EmptyLayerListThrows) {
+  Model model = jointed_box(false);
+  PlotDef def;
+  def.file = file("box.png");
+  def.show = {};
+  EXPECT_THROW(plot(model, def), Error);
+  EXPECT_TRUE(dir_is_empty());
+}
+
+TEST_F(PlotTest, BadExtensionThrowsAndLeavesNoFile) {
+  Model model = jointed_box(false);
+  PlotDef def;
+  def.file = file("box.xyz");
+  EXPECT_EQ(message_of(model, def), "unsupported file type '.xyz': use .png, .svg or .pdf");
+  def.file = file("box");
+  EXPECT_NE(message_of(model, def).find("no extension"), std::string::npos);
+  EXPECT_TRUE(dir_is_empty());
+}
+
+TEST_F(PlotTest, UnwritablePathThrowsNamingTheFile) {
+  Model model = jointed_box(false);
+  for (const char* ext : {".png", ".svg", ".pdf"}) {
+    PlotDef def;
+    def.file = file(std::string("missing/box") + ext);
+    const std::string message = message_of(model, def);
+    EXPECT_NE(message.find("cannot write '" + def.file + "'"), std::string::npos) << message;
+  }
+  PlotDef def;
+  def.file = file("adir.png");
+  fs::create_directory(def.file);
+  EXPECT_NE(message_of(model, def).find("cannot write"), std::string::npos);
+}
+
+TEST_F(PlotTest, FailedPlotKeepsThePreviousFile) {
+  Model model = jointed_box(false);
+  const std::string path = file("box.png");
+  std::ofstream(path) << "previous picture";
+  PlotDef def;
+  def.file = path;
+  def.show = {"blokcs"};
+  EXPECT_THROW(plot(model, def), Error);
+  EXPECT_EQ(read_all(path), "previous picture");
+  EXPECT_FALSE(fs::exists(path + ".tmp"));
+}
+
+TEST_F(PlotTest, SizeOutOfRangeThrows) {
+  Model model = jointed_box(false);
+  PlotDef def;
+  def.file = file("box.png");
+  def.width = 0;
+  EXPECT_THROW(plot(model, def), Error);
+  def.width = 800;
+  def.height = 1000000;
+  EXPECT_THROW(plot(model, def), Error);
+  EXPECT_TRUE(dir_is_empty());
+}
+
+TEST_F(PlotTest, SmallestAndOddSizesWork) {
+  Model model = jointed_box();
+  for (const auto& [w, h] : {std::pair{kPlotMinSize, kPlotMinSize}, std::pair{2000, 100},
+                             std::pair{100, 1500}}) {
+    PlotDef def = all_layers(file("small.png"));
+    def.width = w;
+    def.height = h;
+    EXPECT_NO_THROW(plot(model, def)) << w << "x" << h;
+  }
+}
+
+TEST_F(PlotTest, ModelWithoutBlocksThrows) {
+  Model model;
+  PlotDef def;
+  def.file = file("empty.png");
+  def.show = {"zones"};
+  const std::string message = message_of(model, def);
+  EXPECT_NE(message.find("no blocks"), std::string::npos) << message;
+  EXPECT_TRUE(dir_is_empty());
+}
+
+TEST_F(PlotTest, ManyZonesPlotQuickly) {
+  Model model(ModelDef{"many zones"});
+  model.add_block(BlockDef{{{0, 0}, {100, 0}, {100, 60}, {0, 60}}});
+  JointSetDef set;
+  set.angle = 60;
+  set.spacing = {8};
+  model.add_joint_set(set);
+  ZoneDef zone;
+  zone.edge = 1.0;
+  model.zone(zone);
+  const int zones = model.mesh().zone_count();
+  const PlotDef def = all_layers(file("many.png"));
+  const auto start = std::chrono::steady_clock::now();
+  plot(model, def);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  RecordProperty("zones", zones);
+  RecordProperty("plot_ms", static_cast<int>(seconds * 1000));
+  EXPECT_TRUE(fs::exists(def.file));
+  EXPECT_LT(seconds, 10.0) << zones << " zones";  // loose: sanitizer builds run this too
+}
+
+}  // namespace
+}  // namespace edem
