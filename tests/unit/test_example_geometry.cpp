@@ -1,0 +1,135 @@
+// The main example's geometry and zoning meet the issue's acceptance: block areas sum to the
+// region area, and every zone has positive area, meets the angle rule, respects the size
+// field, and the zones of a block sum to its area.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "scenes.hpp"
+
+namespace edem {
+namespace {
+
+double angle_deg(Vec2 at, Vec2 a, Vec2 b) {
+  const Vec2 u = a - at, v = b - at;
+  return std::atan2(std::abs(cross(u, v)), dot(u, v)) * 180.0 / std::numbers::pi;
+}
+
+// Interior angle of each ring corner, for the exemption "unless the block's own corner is
+// sharper".
+double sharpest_corner_at(const Block& block, Vec2 p) {
+  double sharpest = 180.0;
+  auto scan = [&](const Ring& ring) {
+    const size_t n = ring.points.size();
+    for (size_t i = 0; i < n; ++i) {
+      if (!(ring.points[i] == p)) continue;
+      const Vec2 prev = ring.points[(i + n - 1) % n], next = ring.points[(i + 1) % n];
+      double a = angle_deg(p, next, prev);
+      if (cross(next - p, prev - p) < 0) a = 360.0 - a;  // reflex corner (ccw ring)
+      sharpest = std::min(sharpest, a);
+    }
+  };
+  scan(block.outer);
+  for (const Ring& hole : block.holes) scan(hole);
+  return sharpest;
+}
+
+ZoneDef example_zoning() {
+  ZoneDef zone;
+  zone.edge = 1.0;
+  zone.far = 8.0;
+  zone.near = {{"cavern", {}}};
+  return zone;
+}
+
+TEST(ExampleGeometry, BlockAreasSumToTheRegion) {
+  Model model = scenes::jointed_cavern();
+  double sum = 0.0;
+  for (const Block& b : model.blocks().blocks) sum += b.area;
+  EXPECT_NEAR(sum, 200.0 * 180.0, 1e-9 * 200.0 * 180.0);
+  EXPECT_GT(model.blocks().blocks.size(), 200u);
+  EXPECT_EQ(model.blocks().dropped_cuts, 0);
+}
+
+TEST(ExampleGeometry, ZonesMeetTheQualityAndSizeRules) {
+  Model model = scenes::jointed_cavern();
+  const ZoneDef def = example_zoning();
+  model.zone(def);
+  const Mesh& mesh = model.mesh();
+  const BlockSet& blocks = model.blocks();
+  SizeField size;
+  size.edge = def.edge;
+  size.far = def.far;
+  size.growth = def.growth;
+  size.near = {model.resolve(def.near[0])};
+
+  ASSERT_GT(mesh.zone_count(), 5000);
+  for (size_t b = 0; b < blocks.blocks.size(); ++b) {
+    const Block& block = blocks.blocks[b];
+    double zone_area = 0.0;
+    for (int z = mesh.block_first_zone[b]; z < mesh.block_first_zone[b + 1]; ++z) {
+      const auto& g = mesh.zone_gp[z];
+      const Vec2 p0 = mesh.gp_position[g[0]], p1 = mesh.gp_position[g[1]],
+                 p2 = mesh.gp_position[g[2]];
+      const double area = mesh.zone_area(z);
+      ASSERT_GT(area, 0.0) << "zone " << z;
+      zone_area += area;
+      // Angle rule: >= 20 degrees unless a corner of the block at one of its vertices is
+      // sharper than 20 degrees.
+      const double smallest = std::min({angle_deg(p0, p1, p2), angle_deg(p1, p2, p0),
+                                        angle_deg(p2, p0, p1)});
+      if (smallest < kMinZoneAngle) {
+        const double corner = std::min({sharpest_corner_at(block, p0),
+                                        sharpest_corner_at(block, p1),
+                                        sharpest_corner_at(block, p2)});
+        EXPECT_LT(corner, kMinZoneAngle) << "zone " << z << " angle " << smallest;
+      }
+      // Size rule: no edge longer than the size field asks for at the zone's centroid.
+      const double longest = std::max({norm(p1 - p0), norm(p2 - p1), norm(p0 - p2)});
+      EXPECT_LE(longest, size.at(mesh.zone_centroid(z)) * (1 + 1e-9)) << "zone " << z;
+    }
+    EXPECT_NEAR(zone_area, block.area, 1e-9 * block.area) << "block " << b;
+  }
+}
+
+TEST(ExampleGeometry, GradedZonesAreFineNearTheCavernAndCoarseFarAway) {
+  Model model = scenes::jointed_cavern();
+  model.zone(example_zoning());
+  const Mesh& mesh = model.mesh();
+  double near_sum = 0, far_sum = 0;
+  int near_count = 0, far_count = 0;
+  for (int z = 0; z < mesh.zone_count(); ++z) {
+    const Vec2 c = mesh.zone_centroid(z);
+    const double h = std::sqrt(4.0 * mesh.zone_area(z) / std::sqrt(3.0));  // equilateral edge
+    if (std::abs(c.x) < 10 && std::abs(c.y) < 20) {
+      near_sum += h;
+      ++near_count;
+    } else if (std::abs(c.x) > 70 || std::abs(c.y) > 70) {
+      far_sum += h;
+      ++far_count;
+    }
+  }
+  ASSERT_GT(near_count, 0);
+  ASSERT_GT(far_count, 0);
+  EXPECT_GT(near_sum / near_count, 0.4);  // about edge = 1 m near the cavern
+  EXPECT_LT(near_sum / near_count, 1.0);
+  EXPECT_GT(far_sum / far_count, 3.0);    // several metres far away (far = 8 m)
+  EXPECT_LT(far_sum / far_count, 8.0);
+}
+
+TEST(ExampleGeometry, GeometryAfterZoningIsRezoned) {
+  Model model = scenes::jointed_cavern();
+  model.zone(example_zoning());
+  const int zones_before = model.mesh().zone_count();
+  model.add_crack({{-100, 0}, {100, 0}});
+  EXPECT_GT(model.blocks().blocks.size(), 236u);
+  EXPECT_GT(model.mesh().zone_count(), zones_before / 2);
+  double sum = 0;
+  for (int z = 0; z < model.mesh().zone_count(); ++z) sum += model.mesh().zone_area(z);
+  EXPECT_NEAR(sum, 36000.0, 1e-9 * 36000.0);
+}
+
+}  // namespace
+}  // namespace edem
