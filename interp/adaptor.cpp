@@ -2,6 +2,7 @@
 #include "adaptor.hpp"
 
 #include <lua.hpp>
+#include <stdexcept>
 
 #include "context.hpp"
 #include "lua_util.hpp"

@@ -27,8 +27,9 @@ int run_block(lua_State*, Context& context, const Args& args) {
   const bool box = args.has("x") || args.has("y");
   if (corners && box) fail("give corner points or x = {{x0, x1}}, y = {{y0, y1}}, not both");
   if (!corners && !box)
-    fail("no outline: give corner points, block{{ {{x, y}}, {{x, y}}, {{x, y}}, ... }}, or a "
-         "rectangle, block{{ x = {{x0, x1}}, y = {{y0, y1}} }}");
+    fail(
+        "no outline: give corner points, block{{ {{x, y}}, {{x, y}}, {{x, y}}, ... }}, or a "
+        "rectangle, block{{ x = {{x0, x1}}, y = {{y0, y1}} }}");
   BlockDef def;
   def.polygon = corners ? args.get<Polygon>("outline") : rectangle(args);
   context.model().add_block(def);
@@ -88,20 +89,23 @@ int run_zone(lua_State*, Context& context, const Args& args) {
 const Command& block_command() {
   static const Command command{
       .name = "block",
-      .help = "Adds a block of intact rock, given by its corners or as a rectangle. Blocks must "
-              "not overlap; joints, cracks and regions cut them.",
+      .help =
+          "Adds a block of intact rock, given by its corners or as a rectangle. Blocks must "
+          "not overlap; joints, cracks and regions cut them.",
       .positional =
           {
               {"outline", Type::polygon, "m", any_value, kOptional,
-               "the corners, in either direction", "use x and y", nullptr, true},
+               "the corners, in either direction", "or x and y", nullptr, true},
           },
       .keys =
           {
-              {"x", Type::pair, "m", any_value, kOptional, "x0 < x1: left and right sides"},
-              {"y", Type::pair, "m", any_value, kOptional, "y0 < y1: bottom and top sides"},
+              {"x", Type::pair, "m", any_value, kOptional, "x0 < x1: left and right sides",
+               "or corners"},
+              {"y", Type::pair, "m", any_value, kOptional, "y0 < y1: bottom and top sides",
+               "or corners"},
           },
       .run = run_block,
-      .usage = "block{ x = {-50, 50}, y = {-40, 40} } or block{ {0, 0}, {10, 0}, {5, 8} }",
+      .usage = "block{ x = {-100, 100}, y = {-90, 90} }\nblock{ {0, 0}, {10, 0}, {5, 8} }",
   };
   return command;
 }
@@ -109,8 +113,9 @@ const Command& block_command() {
 const Command& jset_command() {
   static const Command command{
       .name = "jset",
-      .help = "Cuts a set of parallel joints through the blocks (or only inside a region). "
-              "Returns the set's number, 1, 2, ...",
+      .help =
+          "Cuts a set of parallel joints through the blocks (or only inside a region). "
+          "Returns the set's number, 1, 2, ...",
       .keys =
           {
               {"angle", Type::number, "deg", between(-360, 360), kRequired,
@@ -118,8 +123,7 @@ const Command& jset_command() {
               {"spacing", Type::numbers, "m", gt(0), kRequired,
                "normal distance between traces; a list is used in turn"},
               {"origin", Type::point, "m", any_value, "{0, 0}", "a point on one trace"},
-              {"trace", Type::number, "m", gt(0), kOptional, "length of each trace",
-               "infinite"},
+              {"trace", Type::number, "m", gt(0), kOptional, "length of each trace", "infinite"},
               {"gap", Type::number, "m", ge(0), "0", "gap between traces along a joint"},
               {"angle_dev", Type::number, "deg", between(0, 90), "0",
                "random deviation of each trace's angle (uniform, +-)"},
@@ -135,6 +139,7 @@ const Command& jset_command() {
           },
       .run = run_jset,
       .returns = "the joint set's number",
+      .usage = "jset{ angle = 60, spacing = {16, 12, 8} }",
   };
   return command;
 }
@@ -142,14 +147,16 @@ const Command& jset_command() {
 const Command& crack_command() {
   static const Command command{
       .name = "crack",
-      .help = "Cuts one straight crack from a point to another; parts that split no block are "
-              "dropped.",
+      .help =
+          "Cuts one straight crack from a point to another; parts that split no block are "
+          "dropped.",
       .keys =
           {
               {"from", Type::point, "m", any_value, kRequired, "one end"},
               {"to", Type::point, "m", any_value, kRequired, "the other end"},
           },
       .run = run_crack,
+      .usage = "crack{ from = {0, 0}, to = {5, 3} }",
   };
   return command;
 }
@@ -157,16 +164,17 @@ const Command& crack_command() {
 const Command& region_command() {
   static const Command command{
       .name = "region",
-      .help = "Names a region and cuts its outline into the blocks (an excavation stage, a zone "
-              "of weak rock). Its name can then stand for its polygon.",
+      .help =
+          "Names a region and cuts its outline into the blocks (an excavation stage, a zone "
+          "of weak rock). Its name can then stand for its polygon.",
       .keys =
           {
               {"name", Type::string, "", any_value, kRequired, "a name not used by another region"},
               {"polygon", Type::polygon, "m", any_value, kRequired, "the outline"},
-              {"glued", Type::boolean, "", any_value, "true",
-               "outline edges never slide or open"},
+              {"glued", Type::boolean, "", any_value, "true", "outline edges never slide or open"},
           },
       .run = run_region,
+      .usage = R"(region{ name = "stage1", polygon = {{-6, 0}, {6, 0}, {6, 8}, {-6, 8}} })",
   };
   return command;
 }
@@ -174,8 +182,9 @@ const Command& region_command() {
 const Command& zone_command() {
   static const Command command{
       .name = "zone",
-      .help = "Meshes the blocks into triangular zones, finest near the given regions and "
-              "coarser with distance from them.",
+      .help =
+          "Meshes the blocks into triangular zones, finest near the given regions and "
+          "coarser with distance from them.",
       .keys =
           {
               {"edge", Type::number, "m", gt(0), "1", "zone edge length near `near`"},
@@ -189,6 +198,7 @@ const Command& zone_command() {
                "zone only the blocks in this region", "all blocks"},
           },
       .run = run_zone,
+      .usage = R"(zone{ edge = 1.5, far = 10, near = "stage1" })",
   };
   return command;
 }

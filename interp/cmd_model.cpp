@@ -22,8 +22,9 @@ int run_model(lua_State*, Context& context, const Args& args) {
 const Command& model_command() {
   static const Command command{
       .name = "model",
-      .help = "Starts a new, empty model and discards the current one. Commands used before any "
-              "model{} work on a default model.",
+      .help =
+          "Starts a new, empty model and discards the current one. Commands used before any "
+          "`model{}` work on a default model.",
       .keys =
           {
               {"title", Type::string, "", any_value, R"("")", "a title for pictures and output"},
@@ -31,6 +32,7 @@ const Command& model_command() {
                "geometric tolerance, relative to the size of the model"},
           },
       .run = run_model,
+      .usage = R"(model{ title = "Case 3, H = 158 m" })",
   };
   return command;
 }

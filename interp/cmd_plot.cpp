@@ -24,17 +24,25 @@ int run_plot(lua_State*, Context& context, const Args& args) {
 const Command& plot_command() {
   static const Command command{
       .name = "plot",
-      .help = "Draws the model to a picture; the file's extension (.png, .svg or .pdf) picks the "
-              "format.",
+      .help =
+          "Draws the model to a picture; the file's extension (.png, .svg or .pdf) picks the "
+          "format.",
       .keys =
           {
               {"file", Type::string, "", any_value, kRequired, "the picture to write"},
-              {"show", Type::strings, "", any_value, R"({"blocks", "joints"})",
-               "layers to draw, in any order", {}, plot_layers},
-              {"size", Type::int_pair, "px", between(kPlotMinSize, kPlotMaxSize),
-               "{1200, 900}", "width and height (points for SVG and PDF)"},
+              {"show",
+               Type::strings,
+               "",
+               any_value,
+               R"({"blocks", "joints"})",
+               "layers to draw, in any order",
+               {},
+               plot_layers},
+              {"size", Type::int_pair, "px", between(kPlotMinSize, kPlotMaxSize), "{1200, 900}",
+               "width and height (points for SVG and PDF)"},
           },
       .run = run_plot,
+      .usage = R"(plot{ file = "model.png", show = {"blocks", "joints"} })",
   };
   return command;
 }

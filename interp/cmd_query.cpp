@@ -164,8 +164,9 @@ const Command& info_command() {
       .help = "Counts of the current model.",
       .form = Form::call,
       .run = run_info,
-      .returns = "a table: blocks, zones, gridpoints, joint_edges, dropped_cuts, regions, "
-                 "joint_sets, title",
+      .returns =
+          "a table: blocks, zones, gridpoints, joint_edges, dropped_cuts, regions, "
+          "joint_sets, title",
       .usage = "print(info().blocks)",
   };
   return command;
@@ -177,10 +178,11 @@ const Command& blocks_command() {
       .help = "Iterates over the blocks.",
       .form = Form::call,
       .run = run_blocks,
-      .returns = "an iterator; each block is a table: id, area, centroid {x =, y =}, x, y, "
-                 "vertices (list of points), holes (list of point lists), base (its block{} "
-                 "number), zones (count), region (innermost region's name or nil), regions "
-                 "(names of all regions containing it)",
+      .returns =
+          "an iterator; each block is a table: id, area, centroid {x =, y =}, x, y, "
+          "vertices (list of points), holes (list of point lists), base (its block{} "
+          "number), zones (count), region (innermost region's name or nil), regions "
+          "(names of all regions containing it)",
       .usage = "for b in blocks() do print(b.id, b.area) end",
   };
   return command;
@@ -192,9 +194,10 @@ const Command& zones_command() {
       .help = "Iterates over the zones (triangles) of the zoned blocks.",
       .form = Form::call,
       .run = run_zones,
-      .returns = "an iterator; each zone is a table: id, area, centroid {x =, y =}, x, y, "
-                 "vertices (three points, counter-clockwise), gridpoints (their ids), block "
-                 "(its block's id), region (innermost region's name or nil)",
+      .returns =
+          "an iterator; each zone is a table: id, area, centroid {x =, y =}, x, y, "
+          "vertices (three points, counter-clockwise), gridpoints (their ids), block "
+          "(its block's id), region (innermost region's name or nil)",
       .usage = "for z in zones() do total = total + z.area end",
   };
   return command;

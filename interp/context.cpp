@@ -11,6 +11,8 @@ void attach(lua_State* L, Context& context) {
   *static_cast<Context**>(lua_getextraspace(L)) = &context;
 }
 
-Context& context_of(lua_State* L) { return **static_cast<Context**>(lua_getextraspace(L)); }
+Context& context_of(lua_State* L) {
+  return **static_cast<Context**>(lua_getextraspace(L));
+}
 
 }  // namespace edem

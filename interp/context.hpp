@@ -14,9 +14,9 @@ struct lua_State;
 namespace edem {
 
 struct Context {
-  std::unique_ptr<Model> current;   // null until the first command needs a model
-  bool quiet = false;               // --quiet: commands print no progress
-  std::string last_command_error;   // the last "FILE:LINE: command: message" raised
+  std::unique_ptr<Model> current;  // null until the first command needs a model
+  bool quiet = false;              // --quiet: commands print no progress
+  std::string last_command_error;  // the last "FILE:LINE: command: message" raised
 
   // The current model; a script that starts without model{} gets a default one.
   Model& model() {

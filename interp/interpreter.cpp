@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -104,10 +105,14 @@ std::string error_text(lua_State* L) {
 // The first line: "FILE:LINE: word: message".
 std::string headline(lua_State* L) {
   std::string message = error_text(L);
-  if (message == context_of(L).last_command_error) return message;
+  const std::string& command_error = context_of(L).last_command_error;
+  if (message == command_error) return message;
+  const auto located = split_position(message);
+  // coroutine.wrap re-raises with its own position in front: the command's error is inside.
+  if (located && located->text == command_error) return command_error;
   const bool own = raised_by_script(L);
   std::string location, text;
-  if (const auto located = split_position(message)) {
+  if (located) {
     location = full_source(L, located->source) + ":" + located->line;
     text = located->text;
   } else {
@@ -162,13 +167,23 @@ int message_handler(lua_State* L) {
   return 1;
 }
 
-void prepend_path(lua_State* L, const std::vector<std::string>& dirs) {
+// "dir/?.lua;dir/?/init.lua;" for each directory, in order.
+std::string search_path(const std::vector<std::string>& dirs) {
   std::string path;
   for (const auto& dir : dirs) path += fmt::format("{0}/?.lua;{0}/?/init.lua;", dir);
+  return path;
+}
+
+std::string package_path(lua_State* L) {
   lua_getglobal(L, "package");
   lua_getfield(L, -1, "path");
-  path += lua_tostring(L, -1);
-  lua_pop(L, 1);
+  std::string path = lua_tostring(L, -1);
+  lua_pop(L, 2);
+  return path;
+}
+
+void set_package_path(lua_State* L, const std::string& path) {
+  lua_getglobal(L, "package");
   lua_pushlstring(L, path.data(), path.size());
   lua_setfield(L, -2, "path");
   lua_pop(L, 1);
@@ -200,7 +215,9 @@ Interpreter::Interpreter(InterpreterOptions options)
   register_commands(L_);
   std::vector<std::string> dirs = options.stdlib_dirs;
   dirs.emplace_back(EDEM_STDLIB_DIR);
-  prepend_path(L_, dirs);
+  stdlib_path_ = search_path(dirs);
+  lua_path_ = package_path(L_);
+  set_package_path(L_, stdlib_path_ + lua_path_);
 }
 
 Interpreter::~Interpreter() = default;
@@ -208,7 +225,8 @@ Interpreter::~Interpreter() = default;
 std::optional<std::string> Interpreter::run_file(const std::string& path,
                                                  const std::vector<std::string>& args) {
   std::error_code ec;
-  if (fs::is_directory(path, ec)) return fmt::format("edem: '{}' is a directory, not a script", path);
+  if (fs::is_directory(path, ec))
+    return fmt::format("edem: '{}' is a directory, not a script", path);
   if (std::FILE* file = std::fopen(path.c_str(), "r"))
     std::fclose(file);
   else
@@ -216,11 +234,14 @@ std::optional<std::string> Interpreter::run_file(const std::string& path,
 
   // Modules next to the script come after the stdlib and before Lua's defaults.
   const fs::path dir = fs::path(path).parent_path();
-  prepend_path(L_, {dir.empty() ? std::string(".") : dir.string()});
+  const std::string script_path = search_path({dir.empty() ? std::string(".") : dir.string()});
+  set_package_path(L_, stdlib_path_ + script_path + lua_path_);
   lua_settop(L_, 0);
   lua_pushcfunction(L_, message_handler);
   const int status = luaL_loadfile(L_, path.c_str());
   if (status == LUA_OK) {
+    if (!lua_checkstack(L_, static_cast<int>(args.size()) + 2))
+      return fmt::format("edem: too many arguments for '{}'", path);
     lua_createtable(L_, static_cast<int>(args.size()), 1);  // arg, as the lua program sets it
     lua_pushstring(L_, path.c_str());
     lua_rawseti(L_, -2, 0);
@@ -242,10 +263,10 @@ std::optional<std::string> Interpreter::run_string(std::string_view code, const 
   return run_loaded(status, name, 0);
 }
 
-std::optional<std::string> Interpreter::run_loaded(int status, const std::string& path,
-                                                   int nargs) {
+std::optional<std::string> Interpreter::run_loaded(int status, const std::string& path, int nargs) {
   if (status != LUA_OK) {
-    std::string message = lua_tostring(L_, -1);
+    const char* text = lua_tostring(L_, -1);
+    std::string message = text != nullptr ? text : "(no message)";
     lua_settop(L_, 0);
     return load_error(status, path, message);
   }

@@ -46,6 +46,8 @@ class Interpreter {
  private:
   std::optional<std::string> run_loaded(int status, const std::string& path, int nargs);
 
+  std::string stdlib_path_;  // package.path entries of the stdlib, searched first
+  std::string lua_path_;     // Lua's own package.path, searched last
   Context context_;
   std::unique_ptr<lua_State, void (*)(lua_State*)> state_;  // closed before context_ goes
   lua_State* L_ = nullptr;                                  // state_.get()

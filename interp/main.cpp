@@ -6,9 +6,9 @@
 //
 // Exit status: 0 on success, 1 when the script stops on an error (the message on stderr),
 // 2 for a wrong command line.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>

@@ -52,9 +52,23 @@ std::string row(std::string_view what, const Key& key) {
                      allowed_of(key), default_of(key), key.help);
 }
 
+// "`call`" or "`one` or `other`": the command's example calls, one a line in its usage.
+std::string usages_of(const Command& command) {
+  if (command.usage.empty()) return fmt::format("`{}`", usage_of(command));
+  std::vector<std::string> calls;
+  std::string_view rest = command.usage;
+  while (true) {
+    const size_t end = rest.find('\n');
+    calls.push_back(fmt::format("`{}`", rest.substr(0, end)));
+    if (end == std::string_view::npos) break;
+    rest.remove_prefix(end + 1);
+  }
+  return fmt::format("{}", fmt::join(calls, " or "));
+}
+
 std::string section(const Command& command) {
-  std::string out = fmt::format("### `{}`\n\n{}\n\n`{}`\n", command.name, command.help,
-                                usage_of(command));
+  std::string out =
+      fmt::format("### `{}`\n\n{}\n\n{}\n", command.name, command.help, usages_of(command));
   if (!command.positional.empty() || !command.keys.empty()) {
     out += "\n| key | type | unit | allowed | default | meaning |\n|---|---|---|---|---|---|\n";
     const bool table = command.form == Form::table;
@@ -95,12 +109,12 @@ std::optional<std::string> reference_section(std::string_view document) {
 std::string with_reference(std::string_view document, std::string_view reference) {
   const std::string body = fmt::format("\n{}\n", reference);
   const size_t begin = document.find(kReferenceBegin);
-  const size_t end =
-      begin == std::string_view::npos ? begin : document.find(kReferenceEnd, begin);
+  const size_t end = begin == std::string_view::npos ? begin : document.find(kReferenceEnd, begin);
   if (begin == std::string_view::npos || end == std::string_view::npos) {
-    std::string out(document);
-    if (!out.empty() && !out.ends_with("\n")) out += "\n";
-    return fmt::format("{}\n{}{}{}\n", out, kReferenceBegin, body, kReferenceEnd);
+    std::string_view text = document;
+    while (text.ends_with('\n')) text.remove_suffix(1);  // one blank line before the section
+    return fmt::format("{}{}{}{}{}\n", text, text.empty() ? "" : "\n\n", kReferenceBegin, body,
+                       kReferenceEnd);
   }
   const size_t start = begin + kReferenceBegin.size();
   return fmt::format("{}{}{}", document.substr(0, start), body, document.substr(end));

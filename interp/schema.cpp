@@ -32,12 +32,18 @@ TypeText type_text(Type type) {
   switch (type) {
     case Type::number:
       return {"number", "a number", "`2.5`, `-1e6`; NaN and infinity are rejected"};
-    case Type::integer: return {"integer", "an integer", "`3`"};
-    case Type::string: return {"string", "a string", "`\"roof\"`"};
-    case Type::boolean: return {"boolean", "true or false", "`true` or `false`"};
-    case Type::point: return {"point", "a point {x, y}", "`{x, y}` or `{x = 1, y = 2}`"};
-    case Type::pair: return {"pair", "a pair of numbers {a, b}", "`{a, b}`"};
-    case Type::int_pair: return {"integer pair", "a pair of integers {a, b}", "`{800, 600}`"};
+    case Type::integer:
+      return {"integer", "an integer", "`3`"};
+    case Type::string:
+      return {"string", "a string", "`\"roof\"`"};
+    case Type::boolean:
+      return {"boolean", "true or false", "`true` or `false`"};
+    case Type::point:
+      return {"point", "a point {x, y}", "`{x, y}` or `{x = 1, y = 2}`"};
+    case Type::pair:
+      return {"pair", "a pair of numbers {a, b}", "`{a, b}`"};
+    case Type::int_pair:
+      return {"integer pair", "a pair of integers {a, b}", "`{800, 600}`"};
     case Type::numbers:
       return {"number or list", "a number or a list of numbers", "`4` or `{4, 2, 2}`"};
     case Type::polygon:
@@ -45,22 +51,28 @@ TypeText type_text(Type type) {
               "`{{x, y}, {x, y}, {x, y}, ...}`: three or more corners, no repeated corner, edges "
               "that do not cross"};
     case Type::region:
-      return {"region", "a region name or a polygon", "a region's name, `\"stage1\"`, or a polygon"};
+      return {"region", "a region name or a polygon",
+              "a region's name, `\"stage1\"`, or a polygon"};
     case Type::regions:
       return {"region or list", "a region (name or polygon) or a list of them",
               "a region, or a list of them: `{\"stage1\", \"stage2\"}`"};
     case Type::strings:
       return {"string or list", "a string or a list of strings",
               "`\"blocks\"` or `{\"blocks\", \"zones\"}`"};
-    case Type::function: return {"function", "a function", "`function(x) ... end`"};
+    case Type::function:
+      return {"function", "a function", "`function(x) ... end`"};
   }
   return {"?", "?", "?"};
 }
 
 }  // namespace
 
-std::string_view type_name(Type type) { return type_text(type).name; }
-std::string_view type_written(Type type) { return type_text(type).written; }
+std::string_view type_name(Type type) {
+  return type_text(type).name;
+}
+std::string_view type_written(Type type) {
+  return type_text(type).written;
+}
 
 std::string show_number(double value) {
   if (std::isnan(value)) return "nan";
@@ -74,7 +86,9 @@ bool Range::contains(double value) const {
   return above && below;
 }
 
-bool Range::unbounded() const { return std::isinf(lo) && std::isinf(hi); }
+bool Range::unbounded() const {
+  return std::isinf(lo) && std::isinf(hi);
+}
 
 std::string Range::text() const {
   if (unbounded()) return {};
@@ -139,8 +153,8 @@ int extra_entries(lua_State* L, int index) {
   int extra = 0;
   lua_pushnil(L);
   while (lua_next(L, index) != 0) {
-    const bool in_sequence = lua_isinteger(L, -2) && lua_tointeger(L, -2) >= 1 &&
-                             lua_tointeger(L, -2) <= length;
+    const bool in_sequence =
+        lua_isinteger(L, -2) && lua_tointeger(L, -2) >= 1 && lua_tointeger(L, -2) <= length;
     if (!in_sequence) ++extra;
     lua_pop(L, 1);
   }
@@ -155,7 +169,9 @@ int list_length(lua_State* L, int index, std::string_view path, Type type) {
   return static_cast<int>(lua_rawlen(L, index));
 }
 
-std::string item_path(std::string_view path, int i) { return fmt::format("{}[{}]", path, i); }
+std::string item_path(std::string_view path, int i) {
+  return fmt::format("{}[{}]", path, i);
+}
 
 // Reads t[i] of the table at `index` with `read`, keeping the stack balanced.
 template <typename Read>
@@ -214,8 +230,9 @@ Vec2 read_point(lua_State* L, int index, std::string_view path) {
 template <typename T, typename Read>
 std::array<T, 2> read_pair(lua_State* L, int index, std::string_view path, Type type, Read&& read) {
   const int length = list_length(L, index, path, type);
-  if (length != 2) fail("{} must be {}, got {} item{}", path, type_text(type).phrase, length,
-                        length == 1 ? "" : "s");
+  if (length != 2)
+    fail("{} must be {}, got {} item{}", path, type_text(type).phrase, length,
+         length == 1 ? "" : "s");
   return {read_item(L, index, 1, [&](int top) { return read(top, item_path(path, 1)); }),
           read_item(L, index, 2, [&](int top) { return read(top, item_path(path, 2)); })};
 }
@@ -268,7 +285,8 @@ bool is_one_polygon(lua_State* L, int index) {
   bool point = false;
   if (lua_istable(L, -1)) {
     lua_rawgeti(L, -1, 1);
-    lua_getfield(L, -2, "x");
+    lua_pushstring(L, "x");
+    lua_rawget(L, -3);
     point = lua_type(L, -2) == LUA_TNUMBER || lua_type(L, -1) == LUA_TNUMBER;
     lua_pop(L, 2);
   }
@@ -299,27 +317,35 @@ std::vector<std::string> read_strings(lua_State* L, int index, std::string_view 
 
 Value read_value(lua_State* L, int index, const Key& key, std::string_view path) {
   switch (key.type) {
-    case Type::number: return read_number(L, index, path, key.range);
-    case Type::integer: return read_integer(L, index, path, key.range);
-    case Type::string: return read_string(L, index, path, key.choices);
+    case Type::number:
+      return read_number(L, index, path, key.range);
+    case Type::integer:
+      return read_integer(L, index, path, key.range);
+    case Type::string:
+      return read_string(L, index, path, key.choices);
     case Type::boolean:
       if (!lua_isboolean(L, index)) wrong_type(L, index, path, key.type);
       return lua_toboolean(L, index) != 0;
-    case Type::point: return read_point(L, index, path);
+    case Type::point:
+      return read_point(L, index, path);
     case Type::pair:
       return read_pair<double>(L, index, path, key.type, [&](int top, const std::string& item) {
         return read_number(L, top, item, key.range);
       });
     case Type::int_pair:
-      return read_pair<std::int64_t>(L, index, path, key.type,
-                                     [&](int top, const std::string& item) {
-                                       return read_integer(L, top, item, key.range);
-                                     });
-    case Type::numbers: return read_numbers(L, index, path, key.range);
-    case Type::polygon: return read_polygon(L, index, path);
-    case Type::region: return read_region(L, index, path);
-    case Type::regions: return read_regions(L, index, path);
-    case Type::strings: return read_strings(L, index, path, key.choices);
+      return read_pair<std::int64_t>(
+          L, index, path, key.type,
+          [&](int top, const std::string& item) { return read_integer(L, top, item, key.range); });
+    case Type::numbers:
+      return read_numbers(L, index, path, key.range);
+    case Type::polygon:
+      return read_polygon(L, index, path);
+    case Type::region:
+      return read_region(L, index, path);
+    case Type::regions:
+      return read_regions(L, index, path);
+    case Type::strings:
+      return read_strings(L, index, path, key.choices);
     case Type::function:
       if (!lua_isfunction(L, index)) wrong_type(L, index, path, key.type);
       return FunctionArg{lua_absindex(L, index)};
@@ -453,14 +479,13 @@ void complete(lua_State* L, const Command& command, int defaults, Args& args) {
     fill(key, fmt::format("missing {} #{} ({}), like {}", table ? "item" : "argument", i + 1,
                           key.name, usage_of(command)));
   }
-  for (const Key& key : command.keys)
-    fill(key, fmt::format("missing required key '{}'", key.name));
+  for (const Key& key : command.keys) fill(key, fmt::format("missing required key '{}'", key.name));
 }
 
 }  // namespace
 
 std::string usage_of(const Command& command) {
-  if (!command.usage.empty()) return std::string(command.usage);
+  if (!command.usage.empty()) return std::string(command.usage.substr(0, command.usage.find('\n')));
   std::vector<std::string> parts;
   for (const Key& key : command.positional)
     parts.push_back(key.rest ? "{x, y}, {x, y}, ..." : std::string(key.name));
@@ -472,7 +497,8 @@ std::string usage_of(const Command& command) {
       optional = true;
   }
   if (optional) parts.push_back("...");
-  if (command.form == Form::call) return fmt::format("{}({})", command.name, fmt::join(parts, ", "));
+  if (command.form == Form::call)
+    return fmt::format("{}({})", command.name, fmt::join(parts, ", "));
   if (parts.empty()) return fmt::format("{}{{}}", command.name);
   return fmt::format("{}{{ {} }}", command.name, fmt::join(parts, ", "));
 }

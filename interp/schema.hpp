@@ -43,10 +43,10 @@ enum class Type {
   function,  // a Lua function
 };
 
-inline constexpr Type kAllTypes[] = {
-    Type::number,  Type::integer, Type::string,  Type::boolean, Type::point,
-    Type::pair,    Type::int_pair, Type::numbers, Type::polygon, Type::region,
-    Type::regions, Type::strings, Type::function};
+inline constexpr Type kAllTypes[] = {Type::number,  Type::integer, Type::string,   Type::boolean,
+                                     Type::point,   Type::pair,    Type::int_pair, Type::numbers,
+                                     Type::polygon, Type::region,  Type::regions,  Type::strings,
+                                     Type::function};
 
 // A type's name in the reference ("point"), and how a script writes it ("`{x, y}` or ...").
 std::string_view type_name(Type type);
@@ -65,10 +65,18 @@ struct Range {
 };
 
 inline constexpr Range any_value{};
-constexpr Range gt(double lo) { return {lo, std::numeric_limits<double>::infinity(), true}; }
-constexpr Range ge(double lo) { return {lo, std::numeric_limits<double>::infinity()}; }
-constexpr Range between(double lo, double hi) { return {lo, hi}; }
-constexpr Range above_upto(double lo, double hi) { return {lo, hi, true, false}; }
+constexpr Range gt(double lo) {
+  return {lo, std::numeric_limits<double>::infinity(), true};
+}
+constexpr Range ge(double lo) {
+  return {lo, std::numeric_limits<double>::infinity()};
+}
+constexpr Range between(double lo, double hi) {
+  return {lo, hi};
+}
+constexpr Range above_upto(double lo, double hi) {
+  return {lo, hi, true, false};
+}
 
 // A key's default, as a Lua literal ("0", "{0, 0}", "true"); or one of these markers.
 inline constexpr std::string_view kRequired = "!required";  // the key must be given
@@ -80,10 +88,10 @@ using Choices = const std::vector<std::string>& (*)();
 struct Key {
   std::string_view name;
   Type type;
-  std::string_view unit;  // SI unit ("m", "deg", "Pa"), "-" for ratios, "" for none
-  Range range;            // numbers only
-  std::string_view fallback;  // Lua literal, kRequired or kOptional
-  std::string_view help;      // one line
+  std::string_view unit;         // SI unit ("m", "deg", "Pa"), "-" for ratios, "" for none
+  Range range;                   // numbers only
+  std::string_view fallback;     // Lua literal, kRequired or kOptional
+  std::string_view help;         // one line
   std::string_view absent = {};  // for kOptional: what leaving it out means ("edge")
   Choices choices = nullptr;     // strings only
   bool rest = false;  // positional polygon that takes every array item: f{ {x,y}, {x,y}, ... }
@@ -104,9 +112,9 @@ struct Command {
   Form form = Form::table;
   std::vector<Key> positional = {};
   std::vector<Key> keys = {};
-  Runner run = nullptr;               // validates nothing: Args are already checked
-  std::string_view returns = {};      // what it returns, if anything
-  std::string_view usage = {};        // an example call; generated when empty
+  Runner run = nullptr;           // validates nothing: Args are already checked
+  std::string_view returns = {};  // what it returns, if anything
+  std::string_view usage = {};    // example calls, one a line; generated when empty
 };
 
 // A Lua function argument: its absolute stack index while the command runs.
@@ -153,7 +161,8 @@ Args read_args(lua_State* L, const Command& command, int defaults);
 // std::logic_error if one is not valid Lua or fails the key's own schema (a programming error).
 void push_defaults(lua_State* L, const Command& command);
 
-// An example call: the command's own usage, or one made from its required keys.
+// An example call for messages: the first line of the command's usage, or one made from its
+// required keys.
 std::string usage_of(const Command& command);
 
 // Formats a number as messages show it: shortest round-trip, "nan", "inf", "-inf".

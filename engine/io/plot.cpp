@@ -24,8 +24,7 @@
 namespace edem {
 
 const std::vector<std::string>& plot_layers() {
-  static const std::vector<std::string> layers{"regions", "zones", "blocks", "joints",
-                                               "cracks"};
+  static const std::vector<std::string> layers{"regions", "zones", "blocks", "joints", "cracks"};
   return layers;
 }
 
@@ -64,15 +63,16 @@ Format format_of(const std::string& file) {
 
 Layers layers_of(const std::vector<std::string>& show) {
   const auto& valid = plot_layers();
+  // The flag of each name in plot_layers(), in the same order.
+  constexpr std::array kFlags{&Layers::regions, &Layers::zones, &Layers::blocks, &Layers::joints,
+                              &Layers::cracks};
   if (show.empty()) fail("show lists no layers: use any of {}", join(valid));
   Layers layers;
   for (const auto& name : show) {
-    if (name == "regions") layers.regions = true;
-    else if (name == "zones") layers.zones = true;
-    else if (name == "blocks") layers.blocks = true;
-    else if (name == "joints") layers.joints = true;
-    else if (name == "cracks") layers.cracks = true;
-    else fail("unknown layer '{}'{}: layers are {}", name, did_you_mean(name, valid), join(valid));
+    const auto it = std::find(valid.begin(), valid.end(), name);
+    if (it == valid.end())
+      fail("unknown layer '{}'{}: layers are {}", name, did_you_mean(name, valid), join(valid));
+    layers.*kFlags[static_cast<std::size_t>(it - valid.begin())] = true;
   }
   return layers;
 }
@@ -99,9 +99,11 @@ struct Polylines {
   bool empty() const { return starts.empty(); }
 };
 
-// The drawing class of a block edge; ordered so that later classes are drawn on top.
+// How a block edge is drawn. Tiers are in drawing order: later ones lie on top.
+enum class Tier : std::uint8_t { potential, region, joint, crack, boundary };
+
 struct EdgeClass {
-  int rank = 0;  // potential, region, joint, crack, boundary
+  Tier tier = Tier::boundary;
   int set = -1;  // joint set, else -1
   bool glued = false;
   auto operator<=>(const EdgeClass&) const = default;
@@ -109,13 +111,18 @@ struct EdgeClass {
 
 EdgeClass class_of(const EdgeOrigin& origin) {
   switch (origin.kind) {
-    case EdgeKind::potential: return {0, -1, false};
-    case EdgeKind::region: return {1, -1, origin.glued};
-    case EdgeKind::joint: return {2, origin.set, origin.glued};
-    case EdgeKind::crack: return {3, -1, origin.glued};
-    case EdgeKind::boundary: break;
+    case EdgeKind::potential:
+      return {Tier::potential, -1, false};
+    case EdgeKind::region:
+      return {Tier::region, -1, origin.glued};
+    case EdgeKind::joint:
+      return {Tier::joint, origin.set, origin.glued};
+    case EdgeKind::crack:
+      return {Tier::crack, -1, origin.glued};
+    case EdgeKind::boundary:
+      break;
   }
-  return {4, -1, false};
+  return {Tier::boundary, -1, false};
 }
 
 // An undirected edge, identical for both blocks that share it (vertices are shared exactly).
@@ -237,29 +244,49 @@ constexpr std::array kRegionColours{rgb(0xb3cde3), rgb(0xfbb4ae), rgb(0xccebc5),
 constexpr Rgb kInk = rgb(0x202020);
 constexpr Rgb kCrack = rgb(0xd62728);
 
+Rgb set_colour(int set) {
+  return kSetColours[static_cast<std::size_t>(std::max(set, 0)) % kSetColours.size()];
+}
+
+// Joints coloured by set, cracks red, glued edges dashed, potential cracks dotted.
 Pen pen_of(const EdgeClass& cls) {
-  Pen pen;
-  switch (cls.rank) {
-    case 0: pen = {rgb(0x8c8c8c), 0.7, {1.5, 2.0}}; break;
-    case 1: pen = {rgb(0x303030), 1.2, {}}; break;
-    case 2: pen = {kSetColours[static_cast<std::size_t>(std::max(cls.set, 0)) % kSetColours.size()],
-                   1.3, {}}; break;
-    case 3: pen = {kCrack, 1.8, {}}; break;
-    default: return {rgb(0x000000), 2.4, {}};
+  Pen pen{rgb(0x000000), 2.4, {}};  // boundary
+  switch (cls.tier) {
+    case Tier::potential:
+      pen = {rgb(0x8c8c8c), 0.7, {1.5, 2.0}};
+      break;
+    case Tier::region:
+      pen = {rgb(0x303030), 1.2, {}};
+      break;
+    case Tier::joint:
+      pen = {set_colour(cls.set), 1.3, {}};
+      break;
+    case Tier::crack:
+      pen = {kCrack, 1.8, {}};
+      break;
+    case Tier::boundary:
+      return pen;
   }
   if (cls.glued) pen.dash = {6.0, 3.5};
   return pen;
 }
 
+// Joint sets are numbered from 1 in the order of the jset{} commands.
 std::string label_of(const EdgeClass& cls) {
   const std::string glued = cls.glued ? ", glued" : "";
-  switch (cls.rank) {
-    case 0: return "potential crack";
-    case 1: return cls.glued ? "region outline, glued" : "region outline";
-    case 2: return fmt::format("joint set {}{}", cls.set + 1, glued);
-    case 3: return "crack" + glued;
-    default: return "boundary";
+  switch (cls.tier) {
+    case Tier::potential:
+      return "potential crack";
+    case Tier::region:
+      return "region outline" + glued;
+    case Tier::joint:
+      return fmt::format("joint set {}{}", cls.set + 1, glued);
+    case Tier::crack:
+      return "crack" + glued;
+    case Tier::boundary:
+      break;
   }
+  return "boundary";
 }
 
 const Pen kBlockPen{rgb(0x404040), 0.8, {}, false};
@@ -281,28 +308,56 @@ struct Rect {
   double x, y, w, h;  // device units, y down
 };
 
-// Model metres to device units: uniform scale, y up, centred in the plot area.
+// Model metres to device units: uniform scale, y up.
 struct View {
-  Box box;
-  double k = 1.0;  // device units per metre
-  double ox = 0.0, oy = 0.0;
+  Box box{};
+  double k = 1.0;             // device units per metre
+  double ox = 0.0, oy = 0.0;  // device position of the box's top-left corner
   Vec2 operator()(Vec2 p) const { return {ox + k * (p.x - box.x0), oy + k * (box.y1 - p.y)}; }
 };
 
-View fit(const Box& box, const Rect& area) {
-  const double ew = std::max(box.x1 - box.x0, 1e-300), eh = std::max(box.y1 - box.y0, 1e-300);
-  View view{box};
-  view.k = std::min(area.w / ew, area.h / eh);
-  view.ox = area.x + 0.5 * (area.w - view.k * ew);
-  view.oy = area.y + 0.5 * (area.h - view.k * eh);
-  return view;
+// Length of the valid UTF-8 sequence at the start of `text` (no overlong forms, surrogates or
+// code points above U+10FFFF), or 0.
+std::size_t utf8_length(std::string_view text) {
+  const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
+  const unsigned c = byte(0);
+  const std::size_t n = c < 0x80                ? 1
+                        : c >= 0xc2 && c < 0xe0 ? 2
+                        : c >= 0xe0 && c < 0xf0 ? 3
+                        : c >= 0xf0 && c < 0xf5 ? 4
+                                                : 0;
+  if (n == 0 || n > text.size()) return 0;
+  unsigned code = n == 1 ? c : c & (0x7fu >> n);
+  for (std::size_t i = 1; i < n; ++i) {
+    if ((byte(i) & 0xc0) != 0x80) return 0;
+    code = code << 6 | (byte(i) & 0x3fu);
+  }
+  const bool overlong = (n == 3 && code < 0x800) || (n == 4 && code < 0x10000);
+  const bool invalid = (code >= 0xd800 && code < 0xe000) || code > 0x10ffff;
+  return overlong || invalid ? 0 : n;
+}
+
+// Text cairo accepts: invalid UTF-8 (names may be any bytes) becomes '?' and control
+// characters spaces; cairo would otherwise stop drawing altogether.
+std::string printable(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  while (!text.empty()) {
+    const std::size_t n = utf8_length(text);
+    if (n == 0)
+      out += '?';
+    else if (n == 1 && (static_cast<unsigned char>(text[0]) < 0x20 || text[0] == 0x7f))
+      out += ' ';
+    else
+      out.append(text.substr(0, n));
+    text.remove_prefix(std::max<std::size_t>(n, 1));
+  }
+  return out;
 }
 
 class Painter {
  public:
-  Painter(cairo_t* cr, double scale) : cr_(cr), s_(scale) {
-    cairo_select_font_face(cr_, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-  }
+  Painter(cairo_t* cr, double scale) : cr_(cr), s_(scale) {}
   double s() const { return s_; }
   cairo_t* cr() const { return cr_; }
 
@@ -322,7 +377,8 @@ class Painter {
     if (lines.empty()) return;
     cairo_new_path(cr_);
     for (std::size_t i = 0; i < lines.starts.size(); ++i) {
-      const std::size_t end = i + 1 < lines.starts.size() ? lines.starts[i + 1] : lines.points.size();
+      const std::size_t end =
+          i + 1 < lines.starts.size() ? lines.starts[i + 1] : lines.points.size();
       const Vec2 a = view(lines.points[lines.starts[i]]);
       cairo_move_to(cr_, a.x, a.y);
       for (std::size_t j = lines.starts[i] + 1; j < end; ++j) {
@@ -332,6 +388,40 @@ class Painter {
     }
     set_pen(pen);
     cairo_stroke(cr_);
+  }
+
+  // Many thin segments (zones): on a raster surface, filled as quads with coarser
+  // antialiasing, which rasterizes about twice as fast as a stroke and looks the same.
+  void hairlines(const Polylines& lines, const View& view, const Pen& pen) {
+    const bool raster = cairo_surface_get_type(cairo_get_target(cr_)) == CAIRO_SURFACE_TYPE_IMAGE;
+    if (!raster || !pen.dash.empty()) {
+      stroke(lines, view, pen);
+      return;
+    }
+    if (lines.empty()) return;
+    const double half = 0.5 * pen.width * s_;
+    cairo_new_path(cr_);
+    for (std::size_t i = 0; i < lines.starts.size(); ++i) {
+      const std::size_t end =
+          i + 1 < lines.starts.size() ? lines.starts[i + 1] : lines.points.size();
+      for (std::size_t j = lines.starts[i]; j + 1 < end; ++j) {
+        const Vec2 a = view(lines.points[j]), b = view(lines.points[j + 1]);
+        const double length = norm(b - a);
+        if (!(length > 0)) continue;
+        const Vec2 n{-(b.y - a.y) * half / length, (b.x - a.x) * half / length};
+        // Every quad turns the same way, so overlaps never cancel under the winding rule.
+        cairo_move_to(cr_, a.x + n.x, a.y + n.y);
+        cairo_line_to(cr_, b.x + n.x, b.y + n.y);
+        cairo_line_to(cr_, b.x - n.x, b.y - n.y);
+        cairo_line_to(cr_, a.x - n.x, a.y - n.y);
+        cairo_close_path(cr_);
+      }
+    }
+    cairo_set_source_rgb(cr_, pen.colour.r, pen.colour.g, pen.colour.b);
+    cairo_set_fill_rule(cr_, CAIRO_FILL_RULE_WINDING);
+    cairo_set_antialias(cr_, CAIRO_ANTIALIAS_FAST);
+    cairo_fill(cr_);
+    cairo_set_antialias(cr_, CAIRO_ANTIALIAS_DEFAULT);
   }
 
   void polygon_path(const Polygon& polygon, const View& view) {
@@ -348,14 +438,15 @@ class Painter {
   double text_width(std::string_view text, double size, bool bold = false) {
     font(size, bold);
     cairo_text_extents_t ext;
-    cairo_text_extents(cr_, std::string(text).c_str(), &ext);
+    cairo_text_extents(cr_, printable(text).c_str(), &ext);
     return ext.x_advance;
   }
 
-  // Text whose vertical centre is at y; a white halo keeps it legible over lines.
+  // Text whose vertical centre is at y; a white halo keeps it legible over lines. Without a
+  // halo it stays real text in SVG and PDF (selectable, searchable).
   void text(std::string_view text, double x, double y, double size, Align align, Rgb colour,
             bool bold = false, bool halo = false) {
-    const std::string str(text);
+    const std::string str = printable(text);
     font(size, bold);
     cairo_text_extents_t ext;
     cairo_text_extents(cr_, str.c_str(), &ext);
@@ -367,14 +458,18 @@ class Painter {
     const double baseline = y + 0.5 * (fe.ascent - fe.descent);
     cairo_new_path(cr_);
     cairo_move_to(cr_, left, baseline);
-    cairo_text_path(cr_, str.c_str());
-    if (halo) {
-      cairo_set_source_rgba(cr_, 1, 1, 1, 0.85);
-      cairo_set_line_width(cr_, 0.25 * size);
-      cairo_set_dash(cr_, nullptr, 0, 0.0);
-      cairo_set_line_join(cr_, CAIRO_LINE_JOIN_ROUND);
-      cairo_stroke_preserve(cr_);
+    if (!halo) {
+      cairo_set_source_rgb(cr_, colour.r, colour.g, colour.b);
+      cairo_show_text(cr_, str.c_str());
+      cairo_new_path(cr_);
+      return;
     }
+    cairo_text_path(cr_, str.c_str());
+    cairo_set_source_rgba(cr_, 1, 1, 1, 0.85);
+    cairo_set_line_width(cr_, 0.25 * size);
+    cairo_set_dash(cr_, nullptr, 0, 0.0);
+    cairo_set_line_join(cr_, CAIRO_LINE_JOIN_ROUND);
+    cairo_stroke_preserve(cr_);
     cairo_set_source_rgb(cr_, colour.r, colour.g, colour.b);
     cairo_fill(cr_);
   }
@@ -398,69 +493,112 @@ struct LegendEntry {
   Pen pen;
 };
 
-struct Layout {
-  double s = 1.0;  // scale of lines and text
-  Rect title{}, plot{}, legend{}, footer{};
-  bool has_legend = false;
-};
-
+constexpr double kMargin = 14.0, kTitleHeight = 30.0, kFooterHeight = 30.0;
 constexpr double kLegendFont = 11.0, kLegendRow = 18.0, kLegendSwatch = 26.0, kLegendPad = 8.0;
 
-double legend_width(Painter& p, const std::vector<LegendEntry>& entries) {
+// Where each part goes. Title, model, scale bar and legend form one block centred on the
+// canvas; the legend goes right of the model or below it, whichever leaves the model larger.
+struct Layout {
+  View view;
+  Rect model{};   // the model's extent on the canvas
+  Rect legend{};  // empty when there is no legend or no room for it
+  int legend_columns = 1;
+  double title_y = 0.0;   // centre line of the title
+  double footer_y = 0.0;  // centre line of the scale bar
+  double right = 0.0;     // right end of the block
+  bool has_legend() const { return legend.w > 0; }
+};
+
+double legend_column_width(Painter& p, const std::vector<LegendEntry>& entries) {
   double text = 0.0;
   for (const auto& e : entries) text = std::max(text, p.text_width(e.label, kLegendFont * p.s()));
   return (2 * kLegendPad + kLegendSwatch + 6.0) * p.s() + text;
 }
 
-Layout layout(Painter& p, double width, double height, bool has_title,
+enum class LegendPlace { none, right, below };
+
+struct LegendPlan {
+  LegendPlace place = LegendPlace::none;
+  double w = 0.0, h = 0.0;  // size of the legend box
+  int columns = 1;
+  double k = 0.0;  // the model's scale it leaves [device units per metre]
+};
+
+// Right of the model (one column) or below it (as many columns as fit), whichever leaves the
+// model larger; no legend when either would shrink the model to less than half.
+LegendPlan plan_legend(Painter& p, const std::vector<LegendEntry>& legend, double free_w,
+                       double free_h, double ew, double eh) {
+  auto scale = [&](double w, double h) { return w > 0 && h > 0 ? std::min(w / ew, h / eh) : 0.0; };
+  const double s = p.s(), margin = kMargin * s;
+  LegendPlan none{LegendPlace::none, 0.0, 0.0, 1, scale(free_w, free_h)};
+  const auto n = static_cast<int>(legend.size());
+  if (n == 0) return none;
+  const double col_w = legend_column_width(p, legend);
+  const auto height = [&](int rows) { return (2 * kLegendPad + kLegendRow * rows) * s; };
+  const int columns = std::clamp(static_cast<int>(free_w / col_w), 1, n);
+  const int rows = (n + columns - 1) / columns;
+  const LegendPlan right{LegendPlace::right, col_w, height(n), 1,
+                         height(n) <= free_h ? scale(free_w - col_w - margin, free_h) : 0.0};
+  const LegendPlan below{LegendPlace::below, col_w * columns, height(rows), columns,
+                         scale(free_w, free_h - height(rows) - 0.5 * margin)};
+  const LegendPlan& best = right.k >= below.k ? right : below;
+  return best.k >= 0.5 * none.k ? best : none;
+}
+
+Layout layout(Painter& p, const Box& box, double width, double height, bool has_title,
               const std::vector<LegendEntry>& legend) {
+  const double s = p.s(), margin = kMargin * s;
+  const double title_h = has_title ? kTitleHeight * s : 0.0, footer_h = kFooterHeight * s;
+  double ew = box.x1 - box.x0, eh = box.y1 - box.y0;
+  if (!(ew > 0)) ew = eh > 0 ? eh : 1.0;
+  if (!(eh > 0)) eh = ew;
+  const LegendPlan plan =
+      plan_legend(p, legend, width - 2 * margin, height - 2 * margin - title_h - footer_h, ew, eh);
+  const bool right = plan.place == LegendPlace::right, below = plan.place == LegendPlace::below;
+
+  // The block of title, model, scale bar and legend, centred on the canvas.
+  const double mw = plan.k * ew, mh = plan.k * eh;
+  const double block_w = right ? mw + margin + plan.w : std::max(mw, plan.w);
+  const double block_h = title_h + mh + footer_h + (below ? plan.h + 0.5 * margin : 0.0);
+  const double x0 = 0.5 * (width - block_w), y0 = 0.5 * (height - block_h);
+
   Layout out;
-  const double s = p.s(), margin = 14.0 * s;
-  const double title_h = has_title ? 30.0 * s : 0.0, footer_h = 30.0 * s;
-  out.s = s;
-  out.title = {margin, margin * 0.5, width - 2 * margin, title_h};
-  const double top = margin + title_h, bottom = height - margin - footer_h;
-  double right = width - margin;
-  const double lw = legend_width(p, legend);
-  // The legend gets a column on the right unless it would crowd the model out.
-  if (!legend.empty() && lw < 0.35 * width) {
-    out.has_legend = true;
-    const double lh = (2 * kLegendPad + kLegendRow * static_cast<double>(legend.size())) * s;
-    out.legend = {width - margin - lw, top, lw, lh};
-    right -= lw + margin;
-  }
-  out.plot = {margin, top, std::max(right - margin, 1.0), std::max(bottom - top, 1.0)};
-  out.footer = {margin, bottom, width - 2 * margin, footer_h};
+  out.model = {right ? x0 : x0 + 0.5 * (block_w - mw), y0 + title_h, mw, mh};
+  if (right) out.legend = {x0 + mw + margin, out.model.y, plan.w, plan.h};
+  if (below)
+    out.legend = {x0 + 0.5 * (block_w - plan.w), out.model.y + mh + footer_h, plan.w, plan.h};
+  out.legend_columns = plan.columns;
+  out.title_y = y0 + 0.5 * title_h;
+  out.footer_y = out.model.y + mh + 0.5 * footer_h;
+  out.right = right ? out.legend.x + out.legend.w : out.model.x + mw;
+  out.view = View{box, plan.k, out.model.x + 0.5 * (mw - plan.k * (box.x1 - box.x0)),
+                  out.model.y + 0.5 * (mh - plan.k * (box.y1 - box.y0))};
   return out;
 }
 
-// A model narrower than its area moves right up to the legend, and the two are centred.
-void centre_with_legend(Layout& lay, View& view) {
-  if (!lay.has_legend) return;
-  const double model_w = view.k * (view.box.x1 - view.box.x0);
-  const double gap = lay.legend.x - (lay.plot.x + lay.plot.w);
-  const double slack = lay.plot.w - model_w;
-  if (slack <= 0) return;
-  view.ox = lay.plot.x + 0.5 * slack;
-  lay.legend.x = view.ox + model_w + gap;
-}
-
-void draw_legend(Painter& p, const Rect& r, const std::vector<LegendEntry>& entries) {
+void draw_legend(Painter& p, const Layout& lay, const std::vector<LegendEntry>& entries) {
   cairo_t* cr = p.cr();
   const double s = p.s();
+  const Rect& r = lay.legend;
   cairo_new_path(cr);
   cairo_rectangle(cr, r.x, r.y, r.w, r.h);
   cairo_set_source_rgb(cr, 1, 1, 1);
   cairo_fill_preserve(cr);
   p.set_pen({rgb(0xb0b0b0), 0.8, {}});
   cairo_stroke(cr);
+  const std::size_t columns = static_cast<std::size_t>(lay.legend_columns);
+  const std::size_t rows = (entries.size() + columns - 1) / columns;
+  const double col_w = r.w / static_cast<double>(columns);
   for (std::size_t i = 0; i < entries.size(); ++i) {
-    const double y = r.y + (kLegendPad + kLegendRow * (static_cast<double>(i) + 0.5)) * s;
-    const double x = r.x + kLegendPad * s;
+    const double row = static_cast<double>(i % rows), col = static_cast<double>(i / rows);
+    const double y = r.y + (kLegendPad + kLegendRow * (row + 0.5)) * s;
+    const double x = r.x + col * col_w + kLegendPad * s;
     cairo_new_path(cr);
     cairo_move_to(cr, x, y);
     cairo_line_to(cr, x + kLegendSwatch * s, y);
-    p.set_pen(entries[i].pen);
+    Pen swatch = entries[i].pen;
+    swatch.width = std::max(swatch.width, 1.0);  // hairlines would vanish in the legend
+    p.set_pen(swatch);
     cairo_stroke(cr);
     p.text(entries[i].label, x + (kLegendSwatch + 6.0) * s, y, kLegendFont * s,
            Painter::Align::left, kInk);
@@ -481,14 +619,14 @@ std::string length_label(double metres) {
   return fmt::format("{:g} m", metres);
 }
 
-void draw_scale_bar(Painter& p, const Rect& footer, const View& view, double plot_width) {
+// A bar about a fifth of the model's width, of a round length; returns its right end.
+double draw_scale_bar(Painter& p, const Layout& lay) {
   const double s = p.s();
-  const double length = round_length(0.2 * plot_width / view.k);
-  if (!std::isfinite(length) || length <= 0) return;
-  const double w = length * view.k, h = 5.0 * s;
-  const double x = std::max(footer.x, view.ox), y = footer.y + 0.5 * footer.h - 0.5 * h;
+  const double length = round_length(0.2 * lay.model.w / lay.view.k);
+  if (!std::isfinite(length) || length <= 0) return lay.model.x;
+  const double w = length * lay.view.k, h = 5.0 * s;
+  const double x = lay.model.x, y = lay.footer_y - 0.5 * h;
   cairo_t* cr = p.cr();
-  cairo_set_dash(cr, nullptr, 0, 0.0);
   for (int half = 0; half < 2; ++half) {
     cairo_new_path(cr);
     cairo_rectangle(cr, x + 0.5 * w * half, y, 0.5 * w, h);
@@ -500,7 +638,10 @@ void draw_scale_bar(Painter& p, const Rect& footer, const View& view, double plo
   cairo_rectangle(cr, x, y, w, h);
   p.set_pen({kInk, 0.8, {}});
   cairo_stroke(cr);
-  p.text(length_label(length), x + w + 6.0 * s, y + 0.5 * h, 11.0 * s, Painter::Align::left, kInk);
+  const std::string label = length_label(length);
+  const double size = 11.0 * s, label_x = x + w + 6.0 * s;
+  p.text(label, label_x, lay.footer_y, size, Painter::Align::left, kInk);
+  return label_x + p.text_width(label, size);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -539,9 +680,12 @@ void check_cairo(cairo_status_t status, const std::string& file) {
 SurfacePtr make_surface(Format format, const fs::path& tmp, int width, int height) {
   const double w = width, h = height;
   switch (format) {
-    case Format::svg: return SurfacePtr(cairo_svg_surface_create(tmp.c_str(), w, h));
-    case Format::pdf: return SurfacePtr(cairo_pdf_surface_create(tmp.c_str(), w, h));
-    case Format::png: break;
+    case Format::svg:
+      return SurfacePtr(cairo_svg_surface_create(tmp.c_str(), w, h));
+    case Format::pdf:
+      return SurfacePtr(cairo_pdf_surface_create(tmp.c_str(), w, h));
+    case Format::png:
+      break;
   }
   return SurfacePtr(cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height));
 }
@@ -575,34 +719,34 @@ Scene gather(Model& model, const Layers& layers) {
   // Edges the joints or cracks layer restyles are left out of the neutral block outlines,
   // so that dashes are not filled in underneath.
   const bool joints = layers.joints, cracks = layers.cracks;
-  if (layers.blocks) {
-    scene.block_lines = std::move(collect_edges(set, [&](const EdgeOrigin& o) -> std::optional<EdgeClass> {
-      if (joints || (cracks && o.kind == EdgeKind::crack)) return std::nullopt;
-      return EdgeClass{};
-    })[EdgeClass{}]);
-  }
-  if (joints || cracks) {
-    scene.edges = collect_edges(set, [&](const EdgeOrigin& o) -> std::optional<EdgeClass> {
-      if (!joints && o.kind != EdgeKind::crack) return std::nullopt;
-      return class_of(o);
-    });
-  }
+  const Classify neutral = [&](const EdgeOrigin& o) -> std::optional<EdgeClass> {
+    if (joints || (cracks && o.kind == EdgeKind::crack)) return std::nullopt;
+    return EdgeClass{};
+  };
+  const Classify styled = [&](const EdgeOrigin& o) -> std::optional<EdgeClass> {
+    if (!joints && o.kind != EdgeKind::crack) return std::nullopt;
+    return class_of(o);
+  };
+  if (layers.blocks) scene.block_lines = std::move(collect_edges(set, neutral)[EdgeClass{}]);
+  if (joints || cracks) scene.edges = collect_edges(set, styled);
   return scene;
 }
 
-std::vector<LegendEntry> legend_of(const Scene& scene, const Layers& layers) {
+// The edge styles drawn (block outlines and zones explain themselves).
+std::vector<LegendEntry> legend_of(const Scene& scene) {
   // Boundary, joint sets in order, cracks, region outlines, potential cracks.
-  constexpr std::array kLegendRank{0, 1, 3, 2, 4};  // by EdgeClass::rank
+  auto order = [](Tier tier) {
+    constexpr std::array kOrder{4, 3, 1, 2, 0};  // position in the legend, by tier
+    return kOrder[static_cast<std::size_t>(tier)];
+  };
   std::vector<EdgeClass> classes;
   for (const auto& [cls, lines] : scene.edges)
     if (!lines.empty()) classes.push_back(cls);
   std::stable_sort(classes.begin(), classes.end(), [&](const EdgeClass& a, const EdgeClass& b) {
-    return kLegendRank[static_cast<std::size_t>(a.rank)] > kLegendRank[static_cast<std::size_t>(b.rank)];
+    return order(a.tier) < order(b.tier);
   });
   std::vector<LegendEntry> entries;
   for (const EdgeClass& cls : classes) entries.push_back({label_of(cls), pen_of(cls)});
-  if (layers.blocks && !scene.block_lines.empty()) entries.push_back({"block outline", kBlockPen});
-  if (!scene.zone_lines.empty()) entries.push_back({"zone", kZonePen});
   return entries;
 }
 
@@ -623,47 +767,72 @@ void draw_regions(Painter& p, const Scene& scene, const View& view) {
 void draw_region_labels(Painter& p, const Scene& scene, const View& view) {
   for (const RegionDef& region : scene.regions) {
     if (region.polygon.size() < 3 || region.name.empty()) continue;
+    const Box box = bounding_box(region.polygon);
+    const double size = 11.0 * p.s();
+    // A label much larger than its region would only hide the picture.
+    if (p.text_width(region.name, size) > 2.0 * view.k * (box.x1 - box.x0) ||
+        size > 2.0 * view.k * (box.y1 - box.y0))
+      continue;
     const Vec2 c = view(centroid(region.polygon));
-    p.text(region.name, c.x, c.y, 11.0 * p.s(), Painter::Align::centre, kInk, false, true);
+    p.text(region.name, c.x, c.y, size, Painter::Align::centre, kInk, false, true);
   }
+}
+
+// The title, shrunk to fit the canvas; left out when it would be too small to read.
+void draw_title(Painter& p, const std::string& title, double width, double y) {
+  const double full = 16.0 * p.s(), room = width - 2 * kMargin * p.s();
+  const double tw = p.text_width(title, full, true);
+  const double size = tw > room ? full * room / tw : full;
+  if (size >= 6.0) p.text(title, 0.5 * width, y, size, Painter::Align::centre, kInk, true);
+}
+
+void draw_counts(Painter& p, const Scene& scene, const Layout& lay, double left_limit) {
+  std::string counts = fmt::format("{} block{}", scene.blocks, scene.blocks == 1 ? "" : "s");
+  if (scene.zones && *scene.zones == 0) counts += ", not zoned";
+  if (scene.zones && *scene.zones > 0)
+    counts += fmt::format(", {} zone{}", *scene.zones, *scene.zones == 1 ? "" : "s");
+  const double size = 10.0 * p.s();
+  if (lay.right - p.text_width(counts, size) < left_limit + 12.0 * p.s()) return;  // no room
+  p.text(counts, lay.right, lay.footer_y, size, Painter::Align::right, rgb(0x707070));
 }
 
 void render(cairo_t* cr, const Scene& scene, const Layers& layers, double width, double height) {
   const double s = std::clamp(std::min(width, height) / 800.0, 0.5, 4.0);
   Painter p(cr, s);
-  const std::vector<LegendEntry> legend = legend_of(scene, layers);
-  Layout lay = layout(p, width, height, !scene.title.empty(), legend);
-  View view = fit(scene.box, lay.plot);
-  centre_with_legend(lay, view);
+  const std::vector<LegendEntry> legend = legend_of(scene);
+  const Layout lay = layout(p, scene.box, width, height, !scene.title.empty(), legend);
+  const View& view = lay.view;
 
   cairo_set_source_rgb(cr, 1, 1, 1);
   cairo_paint(cr);
 
-  // The model, clipped to its area (regions may reach outside the blocks).
+  // The model, clipped to its extent (regions may reach outside the blocks).
   cairo_save(cr);
   const double pad = 4.0 * s;
-  cairo_rectangle(cr, lay.plot.x - pad, lay.plot.y - pad, lay.plot.w + 2 * pad, lay.plot.h + 2 * pad);
+  cairo_rectangle(cr, lay.model.x - pad, lay.model.y - pad, lay.model.w + 2 * pad,
+                  lay.model.h + 2 * pad);
   cairo_clip(cr);
   if (layers.regions) draw_regions(p, scene, view);
-  p.stroke(scene.zone_lines, view, kZonePen);
+  p.hairlines(scene.zone_lines, view, kZonePen);
   p.stroke(scene.block_lines, view, kBlockPen);
   for (const auto& [cls, lines] : scene.edges) p.stroke(lines, view, pen_of(cls));
   if (layers.regions) draw_region_labels(p, scene, view);
   cairo_restore(cr);
 
-  if (!scene.title.empty())
-    p.text(scene.title, 0.5 * width, lay.title.y + 0.5 * lay.title.h, 16.0 * s,
-           Painter::Align::centre, kInk, true);
-  if (lay.has_legend) draw_legend(p, lay.legend, legend);
-  draw_scale_bar(p, lay.footer, view, lay.plot.w);
-  std::string counts = fmt::format("{} block{}", scene.blocks, scene.blocks == 1 ? "" : "s");
-  if (scene.zones) counts += fmt::format(", {} zone{}", *scene.zones, *scene.zones == 1 ? "" : "s");
-  const double right = lay.has_legend ? lay.legend.x + lay.legend.w : lay.footer.x + lay.footer.w;
-  p.text(counts, right, lay.footer.y + 0.5 * lay.footer.h, 10.0 * s,
-         Painter::Align::right, rgb(0x707070));
+  if (!scene.title.empty()) draw_title(p, scene.title, width, lay.title_y);
+  if (lay.has_legend()) draw_legend(p, lay, legend);
+  draw_counts(p, scene, lay, draw_scale_bar(p, lay));
 }
 
 }  // namespace
+
+#if defined(__SANITIZE_ADDRESS__)
+// fontconfig, loaded by cairo's text, keeps process-lifetime allocations that LeakSanitizer
+// reports at exit; they are not ours and cannot be freed from here.
+extern "C" const char* __lsan_default_suppressions() {
+  return "leak:libfontconfig.so\n";
+}
+#endif
 
 void plot(Model& model, const PlotDef& def) {
   const Format format = format_of(def.file);
@@ -676,13 +845,16 @@ void plot(Model& model, const PlotDef& def) {
   SurfacePtr surface = make_surface(format, tmp.path(), def.width, def.height);
   check_cairo(cairo_surface_status(surface.get()), def.file);
   if (format == Format::pdf) {
-    cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_TITLE, scene.title.c_str());
+    cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_TITLE,
+                                   printable(scene.title).c_str());
     cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATOR, "EDEM");
   }
   {
     ContextPtr cr(cairo_create(surface.get()));
     render(cr.get(), scene, layers, def.width, def.height);
-    check_cairo(cairo_status(cr.get()), def.file);
+    const cairo_status_t status = cairo_status(cr.get());
+    if (status != CAIRO_STATUS_SUCCESS)
+      fail("cannot draw '{}': {}", def.file, cairo_status_to_string(status));
   }
   if (format == Format::png) {
     check_cairo(cairo_surface_write_to_png(surface.get(), tmp.path().c_str()), def.file);

@@ -1,10 +1,11 @@
 // The schema layer: every command checks its arguments before touching the model, rejects
 // unknown keys with a hint, and a failed command leaves the model exactly as it was.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
-#include <set>
-
+#include <filesystem>
 #include <lua.hpp>
+#include <set>
 
 #include "commands.hpp"
 #include "interp_test.hpp"
@@ -13,9 +14,9 @@
 namespace edem {
 namespace {
 
+using test::contains;
 using test::error_of;
 using test::expect_runs;
-using test::contains;
 using test::starts_with;
 
 constexpr const char* kSquare = "block{ x = {0, 10}, y = {0, 10} }\n";
@@ -76,10 +77,14 @@ TEST(Schema, AcceptedForms) {
     zone{ edge = 1, far = 2, near = "a" }                             -- one name
     zone{ edge = 1, near = {{4, 4}, {6, 4}, {6, 6}} }                 -- one polygon
     zone{ edge = 1, near = {"a", {{4, 4}, {6, 4}, {6, 6}}} }          -- a list of both
-    plot{ file = "schema_forms.svg", show = "blocks", size = {200, 100} }
   )");
   EXPECT_EQ(interpreter.context().model().joint_set_count(), 2);
-  std::remove("schema_forms.svg");
+  const auto picture = std::filesystem::temp_directory_path() /
+                       ("edem_schema_forms_" + std::to_string(::getpid()) + ".svg");
+  expect_runs(interpreter,
+              "plot{ file = '" + picture.string() + "', show = 'blocks', size = {200, 100} }");
+  EXPECT_TRUE(std::filesystem::exists(picture));
+  std::filesystem::remove(picture);
 }
 
 TEST(Schema, PointsHandedOutAreAcceptedBack) {
@@ -96,11 +101,11 @@ TEST(Schema, FailedCommandsApplyNothing) {
   Model& model = interpreter.context().model();
   const ModelInfo before = model.info();
   for (const char* bad : {
-           "jset{ angle = 45, spacing = 1, gap = -1 }",          // a bad value
-           "jset{ angle = 45, spacing = 1, spacingg = 2 }",      // an unknown key
-           "jset{ angle = 45, spacing = {1, 0} }",               // a bad list item
-           "jset{ angle = 45, spacing = 1, region = 'none' }",   // an unknown region (engine)
-           "block{ x = {5, 15}, y = {0, 10} }",                  // overlapping (engine)
+           "jset{ angle = 45, spacing = 1, gap = -1 }",         // a bad value
+           "jset{ angle = 45, spacing = 1, spacingg = 2 }",     // an unknown key
+           "jset{ angle = 45, spacing = {1, 0} }",              // a bad list item
+           "jset{ angle = 45, spacing = 1, region = 'none' }",  // an unknown region (engine)
+           "block{ x = {5, 15}, y = {0, 10} }",                 // overlapping (engine)
            "region{ name = 'r', polygon = {{0, 0}, {1, 1}, {1, 0}, {0, 1}} }",
        }) {
     error_of(interpreter, bad);
@@ -179,9 +184,13 @@ TEST(Schema, TheRegistryIsWellFormed) {
       EXPECT_TRUE(keys.insert(key.name).second) << command->name << "." << key.name;
       EXPECT_FALSE(key.help.empty()) << command->name << "." << key.name;
       EXPECT_FALSE(key.rest) << "only positional items take the rest";
-      if (key.type == Type::number) EXPECT_FALSE(key.unit.empty()) << command->name << "." << key.name;
+      if (key.type == Type::number) {
+        EXPECT_FALSE(key.unit.empty()) << command->name << "." << key.name;
+      }
     }
-    if (command->form == Form::call) EXPECT_TRUE(command->keys.empty()) << command->name;
+    if (command->form == Form::call) {
+      EXPECT_TRUE(command->keys.empty()) << command->name;
+    }
   }
 }
 

@@ -18,7 +18,7 @@ namespace {
 namespace fs = std::filesystem;
 
 // A 10 m box cut by two joint sets and a crack, with a glued square region, zoned.
-Model jointed_box(bool zoned = true) {
+Model jointed_box(bool zoned = true, bool glued = true) {
   Model model(ModelDef{"Plot test: jointed box"});
   model.add_block(BlockDef{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}});
   JointSetDef main_set;
@@ -31,7 +31,7 @@ Model jointed_box(bool zoned = true) {
   cross.origin = {0.3, 0.7};
   model.add_joint_set(cross);
   model.add_crack(CrackDef{{1.2, 8.1}, {6.3, 9.2}});
-  model.add_region(RegionDef{"opening", {{4, 4}, {6, 4}, {6, 6}, {4, 6}}, true});
+  model.add_region(RegionDef{"opening", {{4, 4}, {6, 4}, {6, 6}, {4, 6}}, glued});
   if (zoned) {
     ZoneDef zone;
     zone.edge = 0.6;
@@ -143,6 +143,19 @@ TEST_F(PlotTest, EveryLayerAloneAndAllTogether) {
   EXPECT_NO_THROW(plot(model, def));
 }
 
+// cairo's SVG names dash patterns, so the outline style can be checked without rasterizing.
+TEST_F(PlotTest, GluedRegionOutlinesAreDashed) {
+  PlotDef def;
+  def.file = file("joints.svg");
+  def.show = {"joints"};
+  Model glued = jointed_box(false, true);
+  plot(glued, def);
+  EXPECT_NE(read_all(def.file).find("stroke-dasharray"), std::string::npos);
+  Model open = jointed_box(false, false);
+  plot(open, def);
+  EXPECT_EQ(read_all(def.file).find("stroke-dasharray"), std::string::npos);
+}
+
 TEST_F(PlotTest, OverwritesAnExistingFile) {
   Model model = jointed_box(false);
   const std::string path = file("box.png");
@@ -232,12 +245,26 @@ TEST_F(PlotTest, SizeOutOfRangeThrows) {
 
 TEST_F(PlotTest, SmallestAndOddSizesWork) {
   Model model = jointed_box();
-  for (const auto& [w, h] : {std::pair{kPlotMinSize, kPlotMinSize}, std::pair{2000, 100},
-                             std::pair{100, 1500}}) {
+  for (const auto& [w, h] :
+       {std::pair{kPlotMinSize, kPlotMinSize}, std::pair{2000, 100}, std::pair{100, 1500}}) {
     PlotDef def = all_layers(file("small.png"));
     def.width = w;
     def.height = h;
     EXPECT_NO_THROW(plot(model, def)) << w << "x" << h;
+  }
+}
+
+// Names may be any bytes; cairo refuses invalid UTF-8, which must not stop the picture.
+TEST_F(PlotTest, TitleAndNamesInAnyBytes) {
+  for (const std::string& title : {std::string("Kaverne \xe2\x80\x93 Stufe 1, \xc3\xa4"),
+                                   std::string("bad \xff\xfe\xc0\x80 \xed\xa0\x80 title\n\t")}) {
+    Model model(ModelDef{title});
+    model.add_block(BlockDef{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}});
+    model.add_region(RegionDef{title, {{4, 4}, {6, 4}, {6, 6}, {4, 6}}, true});
+    PlotDef def = all_layers(file("names.pdf"));
+    EXPECT_NO_THROW(plot(model, def)) << title;
+    def.file = file("names.png");
+    EXPECT_NO_THROW(plot(model, def)) << title;
   }
 }
 

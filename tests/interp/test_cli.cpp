@@ -1,0 +1,167 @@
+// The edem executable: exit status, --version, --help, running scripts, reporting errors.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "interp_test.hpp"
+
+namespace edem {
+namespace {
+
+namespace fs = std::filesystem;
+using test::contains;
+using test::starts_with;
+
+struct Outcome {
+  int status = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Each test works in its own directory: ctest runs them in parallel.
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("edem_cli_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  void write(const std::string& name, const std::string& text) {
+    std::ofstream(dir_ / name) << text;
+  }
+
+  // Runs edem with `args` (shell words) in the test's directory.
+  Outcome edem(const std::string& args) {
+    const std::string command =
+        "cd '" + dir_.string() + "' && '" EDEM_EXE "' " + args + " >stdout.txt 2>stderr.txt";
+    const int raw = std::system(command.c_str());
+    Outcome outcome;
+    outcome.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    outcome.out = slurp(dir_ / "stdout.txt");
+    outcome.err = slurp(dir_ / "stderr.txt");
+    return outcome;
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(Cli, Version) {
+  const Outcome r = edem("--version");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_EQ(r.out, "edem " EDEM_VERSION "\n");
+}
+
+TEST_F(Cli, Help) {
+  const Outcome r = edem("--help");
+  EXPECT_EQ(r.status, 0);
+  EXPECT_TRUE(contains(r.out, "run"));
+  EXPECT_TRUE(contains(r.out, "reference"));
+}
+
+TEST_F(Cli, NoScriptIsAUsageError) {
+  const Outcome r = edem("");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_TRUE(contains(r.err, "Usage"));
+}
+
+TEST_F(Cli, MissingScript) {
+  const Outcome r = edem("run missing.lua");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.err, "edem: cannot open 'missing.lua': No such file or directory\n");
+}
+
+TEST_F(Cli, DirectoryIsNotAScript) {
+  fs::create_directories(dir_ / "sub");
+  const Outcome r = edem("run sub");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_TRUE(contains(r.err, "'sub' is a directory"));
+}
+
+TEST_F(Cli, RunsAScriptBothWays) {
+  write("ok.lua", "block{ x = {0, 2}, y = {0, 1} }\nprint('blocks', info().blocks)\n");
+  for (const char* form : {"run ok.lua", "ok.lua"}) {
+    const Outcome r = edem(form);
+    EXPECT_EQ(r.status, 0) << form << "\n" << r.err;
+    EXPECT_EQ(r.out, "blocks\t1\n") << form;
+    EXPECT_EQ(r.err, "") << form;
+  }
+}
+
+TEST_F(Cli, ScriptArguments) {
+  write("args.lua", "print(arg[0], arg[1], arg[2], select('#', ...))\n");
+  const Outcome r = edem("run args.lua one two");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out, "args.lua\tone\ttwo\t2\n");
+}
+
+TEST_F(Cli, ScriptErrorExitsOneWithFileAndLine) {
+  write("bad.lua", "print('before')\njset{ angle = 30, spacing = -2 }\nprint('after')\n");
+  const Outcome r = edem("run bad.lua");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.out, "before\n");
+  EXPECT_EQ(r.err, "bad.lua:2: jset: spacing must be > 0, got -2\n");
+}
+
+TEST_F(Cli, PathAsGiven) {
+  fs::create_directories(dir_ / "deep" / "er");
+  write("deep/er/bad.lua", "zone{ edge = 1 }\n");
+  const Outcome r = edem("run ./deep/er/bad.lua");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_TRUE(starts_with(r.err, "./deep/er/bad.lua:1: zone: "));
+}
+
+TEST_F(Cli, ModulesNextToTheScript) {
+  fs::create_directories(dir_ / "lib");
+  write("lib/helper.lua", "return { answer = 42 }\n");
+  write("lib/main.lua", "print(require('helper').answer)\n");
+  const Outcome r = edem("run lib/main.lua");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out, "42\n");
+}
+
+TEST_F(Cli, StdlibComesFirstOnThePath) {
+  write("path.lua", "local stdlib = package.path:find('" EDEM_SOURCE_DIR
+                    "/stdlib/?.lua', 1, true)\n"
+                    "local here = package.path:find('./?.lua', 1, true)\n"
+                    "print(stdlib ~= nil and here ~= nil and stdlib < here)\n");
+  const Outcome r = edem("run path.lua");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out, "true\n");
+}
+
+TEST_F(Cli, Reference) {
+  for (const char* form : {"reference", "--reference"}) {
+    const Outcome r = edem(form);
+    EXPECT_EQ(r.status, 0) << form;
+    EXPECT_TRUE(starts_with(r.out, "## Language reference")) << form;
+    EXPECT_TRUE(contains(r.out, "### `jset`")) << form;
+  }
+}
+
+TEST_F(Cli, ReferenceUpdatesAReadme) {
+  write("README.md", "# Title\n\nText.\n");
+  EXPECT_EQ(edem("reference --update README.md").status, 0);
+  const std::string once = slurp(dir_ / "README.md");
+  EXPECT_TRUE(starts_with(once, "# Title\n\nText.\n"));
+  EXPECT_TRUE(contains(once, "<!-- reference:begin -->\n## Language reference"));
+  EXPECT_EQ(edem("reference --update README.md").status, 0);
+  EXPECT_EQ(slurp(dir_ / "README.md"), once) << "updating twice changes nothing";
+}
+
+}  // namespace
+}  // namespace edem
