@@ -182,18 +182,19 @@ class BaseCutter {
     CGAL::insert(arrangement_, curves.begin(), curves.end());
   }
 
-  // Faces reachable from the unbounded face without crossing a base edge are outside.
-  std::unordered_set<const void*> find_inside_faces() const {
-    std::unordered_set<const void*> reached;
+  // Faces reachable from the unbounded face without crossing an edge for which `blocks`
+  // is true. A closed outline of blocking edges keeps everything inside it unreached.
+  template <typename Blocks>
+  std::unordered_set<const void*> faces_reached_from_outside(Blocks blocks) const {
+    std::unordered_set<const void*> reached{&*arrangement_.unbounded_face()};
     std::queue<Face> queue;
     queue.push(arrangement_.unbounded_face());
-    reached.insert(&*arrangement_.unbounded_face());
     auto visit_ccb = [&](auto start) {
       auto c = start;
       do {
         Halfedge h = c;
         Face other = h->twin()->face();
-        if (!has_base_piece(h, pieces_) && reached.insert(&*other).second) queue.push(other);
+        if (!blocks(h) && reached.insert(&*other).second) queue.push(other);
       } while (++c != start);
     };
     while (!queue.empty()) {
@@ -202,9 +203,16 @@ class BaseCutter {
       if (!f->is_unbounded()) visit_ccb(f->outer_ccb());
       for (auto ic = f->inner_ccbs_begin(); ic != f->inner_ccbs_end(); ++ic) visit_ccb(*ic);
     }
+    return reached;
+  }
+
+  // Faces inside the base: those not reached without crossing a base edge.
+  std::unordered_set<const void*> find_inside_faces() const {
+    const auto outside =
+        faces_reached_from_outside([&](const Halfedge& h) { return has_base_piece(h, pieces_); });
     std::unordered_set<const void*> inside;
     for (auto f = arrangement_.faces_begin(); f != arrangement_.faces_end(); ++f)
-      if (!reached.count(&*f)) inside.insert(&*f);
+      if (!outside.count(&*f)) inside.insert(&*f);
     return inside;
   }
 
@@ -372,43 +380,21 @@ class BaseCutter {
     return ring;
   }
 
-  // Faces reached from the unbounded face without crossing the outline of region r.
+  // Which inside faces lie within region r: those not reached across its outline. (Where the
+  // outline coincides with a base edge, the edge carries both pieces and still blocks.)
   std::vector<bool> faces_inside_region(int r) const {
-    std::unordered_map<const void*, bool> reached;
-    std::queue<Face> queue;
-    queue.push(arrangement_.unbounded_face());
-    reached[&*arrangement_.unbounded_face()] = true;
-    auto on_outline = [&](const Halfedge& h) {
+    const auto outside = faces_reached_from_outside([&](const Halfedge& h) {
       for (int id : h->curve().data()) {
         const EdgeOrigin& o = pieces_[id].origin;
         if (o.kind == EdgeKind::region && o.source == r && !pieces_[id].base) return true;
       }
       return false;
-    };
-    auto visit_ccb = [&](auto start) {
-      auto c = start;
-      do {
-        Halfedge h = c;
-        Face other = h->twin()->face();
-        if (!on_outline(h) && !reached.count(&*other)) {
-          reached[&*other] = true;
-          queue.push(other);
-        }
-      } while (++c != start);
-    };
-    while (!queue.empty()) {
-      Face f = queue.front();
-      queue.pop();
-      if (!f->is_unbounded()) visit_ccb(f->outer_ccb());
-      for (auto ic = f->inner_ccbs_begin(); ic != f->inner_ccbs_end(); ++ic) visit_ccb(*ic);
-    }
+    });
     std::vector<bool> inside(inside_.size());
-    for (size_t i = 0; i < inside_.size(); ++i) inside[i] = !reached.count(&*inside_[i].face);
+    for (size_t i = 0; i < inside_.size(); ++i) inside[i] = !outside.count(&*inside_[i].face);
     return inside;
   }
 
-  // A region's outline could also coincide with a base edge, where a base piece carries
-  // the edge; then the region outline piece shares it and on_outline still sees it.
   void extract(BlockSet& out) {
     std::vector<std::vector<bool>> in_region;
     for (size_t r = 0; r < regions_.size(); ++r)

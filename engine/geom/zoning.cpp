@@ -33,10 +33,10 @@ using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_2;
 struct VertexInfo {
   int gp = -1;         // gridpoint index, -1 until numbered
-  bool sharp = false;  // a block corner with an interior angle below kMinZoneAngle
+  bool sharp = false;  // a block corner sharper than the shape bound (kShapeBoundAngle)
 };
-// Face info: nesting level while marking the domain.
 using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<VertexInfo, Kernel>;
+// Face info: nesting level while marking the domain.
 using FaceInfoBase = CGAL::Triangulation_face_base_with_info_2<int, Kernel>;
 using FaceBase = CGAL::Delaunay_mesh_face_base_2<
     Kernel, CGAL::Constrained_Delaunay_triangulation_face_base_2<
@@ -52,7 +52,9 @@ using FaceHandle = Cdt::Face_handle;
 constexpr double kShapeBound = 0.125;
 const double kShapeBoundAngle = std::asin(std::sqrt(kShapeBound)) * 180.0 / std::numbers::pi;
 
-Vec2 to_vec(const Point& p) { return {p.x(), p.y()}; }
+Vec2 to_vec(const Point& p) {
+  return {p.x(), p.y()};
+}
 
 // ---------------------------------------------------------------------------------------------
 // Size field, evaluated fast: polygons flattened with their bounding boxes, and a cut-off
@@ -156,9 +158,9 @@ class SizeShapeCriteria : public CGAL::Delaunay_mesh_criteria_2<Cdt> {
   // Oversized faces first, largest first; then insisted ones, worst first; then the rest,
   // worst first (CGAL's order, plus the middle group).
   struct Quality {
-    double sine = 1.0;   // squared sine of the smallest angle
-    double size = 0.0;   // (longest edge / size field)^2
-    bool insist = false; // badly shaped and to be split even in a cluster
+    double sine = 1.0;    // squared sine of the smallest angle
+    double size = 0.0;    // (longest edge / size field)^2
+    bool insist = false;  // badly shaped and to be split even in a cluster
     bool operator<(const Quality& other) const {
       if (size > 1.0) return other.size > 1.0 ? size > other.size : true;
       if (other.size > 1.0) return false;
@@ -186,8 +188,8 @@ class SizeShapeCriteria : public CGAL::Delaunay_mesh_criteria_2<Cdt> {
                            dot(p[0] - p[1], p[0] - p[1])};
       const int shortest = l[0] <= l[1] ? (l[0] <= l[2] ? 0 : 2) : (l[1] <= l[2] ? 1 : 2);
       const int longest = l[0] > l[1] ? (l[0] > l[2] ? 0 : 2) : (l[1] > l[2] ? 1 : 2);
-      const double size = size_->at({(p[0].x + p[1].x + p[2].x) / 3.0,
-                                     (p[0].y + p[1].y + p[2].y) / 3.0});
+      const double size =
+          size_->at({(p[0].x + p[1].x + p[2].x) / 3.0, (p[0].y + p[1].y + p[2].y) / 3.0});
       q = Quality{};
       q.size = l[longest] / (size * size);
       if (q.size > 1.0) return CGAL::Mesh_2::IMPERATIVELY_BAD;
@@ -253,8 +255,7 @@ struct DomainGabriel : CgalGabriel {
 // CGAL restores the domain marks of the faces around a new boundary vertex only after it has
 // checked the edges around it; DomainGabriel needs them before, so restore them first (the
 // same walk as CGAL::Mesh_2::Refine_edges_visitor::after_insertion).
-class DomainEdgesBase
-    : public CGAL::Mesh_2::Refine_edges_base_with_clusters<Cdt, DomainGabriel> {
+class DomainEdgesBase : public CGAL::Mesh_2::Refine_edges_base_with_clusters<Cdt, DomainGabriel> {
   using Super = CGAL::Mesh_2::Refine_edges_base_with_clusters<Cdt, DomainGabriel>;
 
  public:
@@ -289,8 +290,7 @@ void check_size_field(const SizeField& field, int block) {
   if (!(std::isfinite(field.edge) && field.edge > 0.0))
     fail("block {}: zone edge must be a positive length, got {}", block, field.edge);
   if (!(std::isfinite(field.far) && field.far >= field.edge))
-    fail("block {}: zone far size {} must be at least the edge {}", block, field.far,
-         field.edge);
+    fail("block {}: zone far size {} must be at least the edge {}", block, field.far, field.edge);
   if (!(std::isfinite(field.growth) && field.growth >= 0.0))
     fail("block {}: zone growth must be zero or positive, got {}", block, field.growth);
 }
@@ -299,8 +299,7 @@ void check_ring(const Ring& ring, int block, const char* what) {
   const size_t n = ring.points.size();
   if (n < 3) fail("block {}: its {} has {} vertices, at least 3 are needed", block, what, n);
   if (ring.edges.size() != n)
-    fail("block {}: its {} has {} vertices but {} edge origins", block, what, n,
-         ring.edges.size());
+    fail("block {}: its {} has {} vertices but {} edge origins", block, what, n, ring.edges.size());
   for (size_t i = 0; i < n; ++i) {
     const Vec2 p = ring.points[i];
     if (!std::isfinite(p.x) || !std::isfinite(p.y))
@@ -308,6 +307,16 @@ void check_ring(const Ring& ring, int block, const char* what) {
     if (p == ring.points[(i + 1) % n])
       fail("block {}: its {} repeats vertex ({}, {})", block, what, p.x, p.y);
   }
+}
+
+// Signed area, positive counter-clockwise [m^2]. Relative to the first vertex so that a small
+// block far from the origin keeps its digits.
+double ring_area(const Ring& ring) {
+  const Vec2 o = ring.points[0];
+  double twice = 0.0;
+  for (size_t i = 1; i + 1 < ring.points.size(); ++i)
+    twice += cross(ring.points[i] - o, ring.points[i + 1] - o);
+  return 0.5 * twice;
 }
 
 // Interior angle of a ring at vertex i, on the domain side (the left of the ring) [deg].
@@ -450,9 +459,8 @@ VertexHandle next_boundary_vertex(const Cdt& cdt, VertexHandle v, Vec2 along) {
       if (face->is_constrained(e) && !in_domain(cdt, face->neighbor(e))) {
         const VertexHandle w = face->vertex(Cdt::ccw(i));
         const Vec2 step = to_vec(w->point()) - to_vec(v->point());
-        const double deviation = dot(step, along) > 0.0
-                                     ? std::abs(cross(along, step)) / norm(step)
-                                     : std::numeric_limits<double>::max();
+        const double deviation = dot(step, along) > 0.0 ? std::abs(cross(along, step)) / norm(step)
+                                                        : std::numeric_limits<double>::max();
         if (deviation < best_deviation) {
           best_deviation = deviation;
           best = w;
@@ -477,8 +485,8 @@ BoundaryLoop walk_ring(const Cdt& cdt, const Ring& ring, const std::vector<Verte
     for (size_t step = 0; v != target; ++step) {
       const VertexHandle w = next_boundary_vertex(cdt, v, along);
       if (w == VertexHandle() || step > max_steps)
-        fail("block {}: lost the boundary after ({}, {}); the block outline is not simple",
-             block, v->point().x(), v->point().y());
+        fail("block {}: lost the boundary after ({}, {}); the block outline is not simple", block,
+             v->point().x(), v->point().y());
       loop.gridpoints.push_back(number(v));
       loop.edges.push_back(ring.edges[i]);
       v = w;
@@ -525,24 +533,29 @@ void sort_by_morton(std::vector<Handle>& items, const Box& box, Position positio
   visit(block.outer);
   for (const Ring& hole : block.holes) visit(hole);
   if (sharpest < kShapeBoundAngle)
-    fail("block {}: zoning it would make more than {} zones (zone edge {} m, sharpest corner "
-         "{:.3g} deg, which needs ever smaller zones); make the edge larger or the block less "
-         "slender",
-         index, max_zones, field.edge, sharpest);
+    fail(
+        "block {}: zoning it would make more than {} zones (zone edge {} m, sharpest corner "
+        "{:.3g} deg, which needs ever smaller zones); make the edge larger or the block less "
+        "slender",
+        index, max_zones, field.edge, sharpest);
   fail("block {}: zoning it would make more than {} zones (zone edge {} m); make the edge larger",
        index, max_zones, field.edge);
 }
 
-void mesh_block(const Block& block, const SizeField& field, int index, int max_zones,
-                Mesh& mesh) {
+void mesh_block(const Block& block, const SizeField& field, int index, int max_zones, Mesh& mesh) {
   check_size_field(field, index);
   check_ring(block.outer, index, "outer boundary");
   for (const Ring& hole : block.holes) check_ring(hole, index, "hole");
+  // The boundary walk relies on the block lying left of every ring.
+  if (!(ring_area(block.outer) > 0.0))
+    fail("block {}: its outer boundary must be counter-clockwise", index);
+  for (const Ring& hole : block.holes)
+    if (!(ring_area(hole) < 0.0)) fail("block {}: its holes must be clockwise", index);
 
   // A cheap lower bound first: even with equilateral zones of the `far` size the block may
   // need too many.
-  double area = signed_area(block.outer.points);
-  for (const Ring& hole : block.holes) area += signed_area(hole.points);  // holes: negative
+  double area = ring_area(block.outer);
+  for (const Ring& hole : block.holes) area += ring_area(hole);  // holes: negative
   const double fewest = area / (0.25 * std::sqrt(3.0) * field.far * field.far);
   if (fewest > max_zones) fail_budget(block, field, index, max_zones);
 
@@ -600,7 +613,9 @@ void mesh_block(const Block& block, const SizeField& field, int index, int max_z
 
 }  // namespace
 
-double SizeField::at(Vec2 point) const { return SizeEvaluator(*this).at(point); }
+double SizeField::at(Vec2 point) const {
+  return SizeEvaluator(*this).at(point);
+}
 
 Mesh zone_blocks(const BlockSet& blocks, const std::vector<const SizeField*>& size_of_block,
                  int max_zones_per_block) {

@@ -6,7 +6,9 @@
 //
 // What zone_blocks() guarantees, block by block:
 //  * gridpoints: every ring vertex is a gridpoint with its exact coordinates; the mesher adds
-//    points on ring edges (midpoints, rounded) and inside.
+//    points on ring edges (midpoints, rounded) and inside. A block's boundary gridpoints come
+//    first, in loop order, then its interior ones; interior gridpoints and zones are in
+//    Z-order (spatially local).
 //  * boundary: block_boundary[b] holds the outer loop (counter-clockwise, from the outer ring's
 //    first vertex) then one loop per hole (clockwise, from its first vertex); each segment
 //    carries the EdgeOrigin of the ring edge it lies on.
@@ -33,10 +35,10 @@
 namespace edem {
 
 struct SizeField {
-  double edge = 1.0;            // target edge length near the `near` polygons [m]
-  double far = 1.0;             // largest edge length, far from them [m]
-  double growth = 0.2;          // increase of edge length per metre of distance [-]
-  std::vector<Polygon> near;    // where the mesh is finest; empty: uniform `edge`
+  double edge = 1.0;          // target edge length near the `near` polygons [m]
+  double far = 1.0;           // largest edge length, far from them [m]
+  double growth = 0.2;        // increase of edge length per metre of distance [-]
+  std::vector<Polygon> near;  // where the mesh is finest; empty: uniform `edge`
   // Target edge length at a point [m]: min(far, edge + growth * d), d the distance to the
   // nearest `near` polygon (0 inside it); `edge` everywhere when `near` is empty.
   double at(Vec2 point) const;

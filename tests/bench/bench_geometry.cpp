@@ -3,6 +3,9 @@
 // zoned to about 50k zones. Results go to tests/bench/RESULTS.md.
 #include <benchmark/benchmark.h>
 
+#include <filesystem>
+
+#include "io/plot.hpp"
 #include "scenes.hpp"
 
 namespace {
@@ -37,6 +40,23 @@ void BM_CutAndZoneExample(benchmark::State& state) {
   state.counters["gridpoints"] = info.gridpoints;
 }
 BENCHMARK(BM_CutAndZoneExample)->Unit(benchmark::kMillisecond);
+
+// Plotting the zoned example with every layer to PNG (1200 x 900).
+void BM_PlotExample(benchmark::State& state) {
+  edem::Model model = jointed_cavern();
+  edem::ZoneDef zone;
+  zone.edge = kEdge;
+  zone.far = kFar;
+  zone.near = {{"cavern", {}}};
+  model.zone(zone);
+  edem::PlotDef def;
+  def.file = (std::filesystem::temp_directory_path() / "edem_bench_plot.png").string();
+  def.show = {"regions", "zones", "blocks", "joints"};
+  for (auto _ : state) edem::plot(model, def);
+  state.counters["zones"] = model.info().zones;
+  std::filesystem::remove(def.file);
+}
+BENCHMARK(BM_PlotExample)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -278,7 +278,8 @@ TEST_F(PlotTest, ModelWithoutBlocksThrows) {
   EXPECT_TRUE(dir_is_empty());
 }
 
-TEST_F(PlotTest, ManyZonesPlotQuickly) {
+// A model of ~14k zones plots completely. Its speed is measured in benchmarks, not here.
+TEST_F(PlotTest, ManyZonesPlot) {
   Model model(ModelDef{"many zones"});
   model.add_block(BlockDef{{{0, 0}, {100, 0}, {100, 60}, {0, 60}}});
   JointSetDef set;
@@ -288,16 +289,11 @@ TEST_F(PlotTest, ManyZonesPlotQuickly) {
   ZoneDef zone;
   zone.edge = 1.0;
   model.zone(zone);
-  const int zones = model.mesh().zone_count();
+  ASSERT_GT(model.mesh().zone_count(), 10000);
   const PlotDef def = all_layers(file("many.png"));
-  const auto start = std::chrono::steady_clock::now();
   plot(model, def);
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  RecordProperty("zones", zones);
-  RecordProperty("plot_ms", static_cast<int>(seconds * 1000));
   EXPECT_TRUE(fs::exists(def.file));
-  EXPECT_LT(seconds, 10.0) << zones << " zones";  // loose: sanitizer builds run this too
+  EXPECT_GT(fs::file_size(def.file), 10000u);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <numbers>
 #include <random>
@@ -18,7 +19,9 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-double degrees(double radians) { return radians * 180.0 / kPi; }
+double degrees(double radians) {
+  return radians * 180.0 / kPi;
+}
 
 // A ring whose edge i has a distinct origin, so that the boundary mapping can be checked.
 Ring make_ring(std::vector<Vec2> points, int first_source = 0) {
@@ -114,8 +117,8 @@ double segment_distance(Vec2 p, Vec2 a, Vec2 b) {
 }
 
 struct Checked {
-  int sharp_zones = 0;        // zones with an angle below kMinZoneAngle
-  double min_angle = 180.0;   // over zones not at a sharp corner [deg]
+  int sharp_zones = 0;       // zones with an angle below kMinZoneAngle
+  double min_angle = 180.0;  // over zones not at a sharp corner [deg]
 };
 
 // Checks one meshed block against everything zoning promises (see zoning.hpp).
@@ -170,12 +173,23 @@ Checked check_block(const Mesh& mesh, const Block& block, const SizeField& field
     if (sharp) {
       ++result.sharp_zones;
     } else {
-      result.min_angle = std::min(result.min_angle, *std::min_element(angles.begin(), angles.end()));
+      result.min_angle =
+          std::min(result.min_angle, *std::min_element(angles.begin(), angles.end()));
     }
   }
-  EXPECT_NEAR(area, block.area, 1e-9 * block.area);
+  // Points the mesher adds on ring edges are rounded to doubles, off the edge by ~1e-16 of the
+  // coordinates: that only shows for a block tiny compared with its distance from the origin.
+  double reach = 0.0, perimeter = 0.0;
+  for (const Ring* ring : rings)
+    for (size_t i = 0; i < ring->points.size(); ++i) {
+      reach = std::max({reach, std::abs(ring->points[i].x), std::abs(ring->points[i].y)});
+      perimeter += norm(ring->points[(i + 1) % ring->points.size()] - ring->points[i]);
+    }
+  EXPECT_NEAR(area, block.area, 1e-9 * block.area + 1e-15 * reach * perimeter);
   for (const auto& [gp, angle] : corner_of_gp) {
-    if (angle < kMinZoneAngle) EXPECT_EQ(zones_at_gp[gp], 1) << "sharp corner at gridpoint " << gp;
+    if (angle < kMinZoneAngle) {
+      EXPECT_EQ(zones_at_gp[gp], 1) << "sharp corner at gridpoint " << gp;
+    }
   }
 
   // Boundary loops: the rings, subdivided, in order, each segment with its ring edge's origin.
@@ -242,8 +256,8 @@ TEST(ZoningSizeField, GrowsWithDistanceUpToFar) {
   field.far = 10.0;
   field.growth = 0.2;
   field.near = {{{-12, -24}, {12, -24}, {12, 24}, {-12, 24}}};
-  EXPECT_DOUBLE_EQ(field.at({0, 0}), 0.5);    // inside
-  EXPECT_DOUBLE_EQ(field.at({12, 0}), 0.5);   // on it
+  EXPECT_DOUBLE_EQ(field.at({0, 0}), 0.5);   // inside
+  EXPECT_DOUBLE_EQ(field.at({12, 0}), 0.5);  // on it
   EXPECT_NEAR(field.at({22, 0}), 0.5 + 0.2 * 10, 1e-12);
   EXPECT_NEAR(field.at({0, -34}), 0.5 + 0.2 * 10, 1e-12);
   EXPECT_NEAR(field.at({15, 28}), 0.5 + 0.2 * 5, 1e-12);  // nearest: the corner
@@ -314,6 +328,15 @@ TEST(Zoning, BlockWithHoles) {
   }
 }
 
+TEST(Zoning, HoleTouchingTheOuterRing) {
+  // The hole shares the outer ring's vertex (5, 0): two boundary edges leave it.
+  const Block block =
+      make_block({{0, 0}, {5, 0}, {10, 0}, {10, 10}, {0, 10}}, {{{5, 0}, {4, 3}, {6, 3}}});
+  const SizeField field = uniform(0.5);
+  const Checked checked = check_block(zone_one(block, field), block, field, 0);
+  EXPECT_EQ(checked.sharp_zones, 0);
+}
+
 TEST(Zoning, TriangleWithTenDegreeCorner) {
   const double a = 10.0 * kPi / 180.0;
   const Block block = make_block({{0, 0}, {10, 0}, {10 * std::cos(a), 10 * std::sin(a)}});
@@ -330,7 +353,8 @@ TEST(Zoning, CornersFromTwentyToSixtyDegreesNeedNoExemption) {
   for (double angle : {20.5, 25.0, 30.0, 40.0, 50.0, 60.0}) {
     const double a = angle * kPi / 180.0;
     std::vector<Vec2> fan{{0, 0}};  // a pie slice: the only sharp corner is the apex
-    for (int k = 0; k <= 6; ++k) fan.push_back({10 * std::cos(a * k / 6), 10 * std::sin(a * k / 6)});
+    for (int k = 0; k <= 6; ++k)
+      fan.push_back({10 * std::cos(a * k / 6), 10 * std::sin(a * k / 6)});
     const Block block = make_block(fan);
     const SizeField field = uniform(0.5);
     const Checked checked = check_block(zone_one(block, field), block, field, 0);
@@ -358,9 +382,10 @@ TEST(Zoning, ThinWedges) {
 TEST(Zoning, NotchAndSlitBlocks) {
   // Reflex corners whose edges meet at a few degrees outside the block: CGAL's cluster rule
   // alone leaves skinny zones there; the insisting pass must not.
-  const Block notch = make_block({{0, 0}, {10, 0}, {10, 10}, {5.2, 10}, {5, 2}, {4.8, 10}, {0, 10}});
-  const Block spike = make_block({{0, 0}, {10, 0}, {10, 10}, {5.3, 10}, {5.05, 3}, {5, 9.8},
-                                  {4.95, 3}, {4.7, 10}, {0, 10}});
+  const Block notch =
+      make_block({{0, 0}, {10, 0}, {10, 10}, {5.2, 10}, {5, 2}, {4.8, 10}, {0, 10}});
+  const Block spike = make_block(
+      {{0, 0}, {10, 0}, {10, 10}, {5.3, 10}, {5.05, 3}, {5, 9.8}, {4.95, 3}, {4.7, 10}, {0, 10}});
   for (const Block* block : {&notch, &spike}) {
     for (double edge : {0.2, 0.6, 2.0}) {
       const SizeField field = uniform(edge);
@@ -374,7 +399,7 @@ TEST(Zoning, RandomStarBlocksKeepTheAngleRule) {
   std::mt19937 random(42);
   std::uniform_real_distribution<double> unit(0, 1);
   int meshed = 0;
-  for (int trial = 0; trial < 300; ++trial) {
+  for (int trial = 0; trial < 150; ++trial) {
     const int n = 5 + trial % 30;
     std::vector<double> theta(n);
     for (double& t : theta) t = 2 * kPi * unit(random);
@@ -401,7 +426,7 @@ TEST(Zoning, RandomStarBlocksKeepTheAngleRule) {
     check_block(mesh, block, field, 0);
     ++meshed;
   }
-  EXPECT_GT(meshed, 100);
+  EXPECT_GT(meshed, 50);
 }
 
 TEST(Zoning, GradedFieldNearACircle) {
@@ -449,6 +474,29 @@ TEST(Zoning, GradedFieldNearACircle) {
   EXPECT_LT(worst_ratio, 4.0);
   // Graded, not uniform: far fewer zones than a uniform `edge` mesh (~92000 equilateral).
   EXPECT_LT(mesh.zone_count(), 20000);
+}
+
+TEST(Zoning, MainExampleIsFast) {
+  // The seed paper's model: a 200 m x 180 m region, fine around a 24 m x 48 m opening.
+  const Block block = make_block({{-100, -90}, {100, -90}, {100, 90}, {-100, 90}});
+  SizeField field;
+  field.edge = 0.5;
+  field.far = 10;
+  field.growth = 0.2;
+  field.near = {{{-12, -24}, {12, -24}, {12, 24}, {-12, 24}}};
+  const auto start = std::chrono::steady_clock::now();
+  const Mesh mesh = zone_one(block, field);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  RecordProperty("zones", mesh.zone_count());
+  RecordProperty("milliseconds", static_cast<int>(1000 * seconds));
+  std::printf("main example: %d zones, %d gridpoints in %.3f s\n", mesh.zone_count(),
+              mesh.gp_count(), seconds);
+  EXPECT_GT(mesh.zone_count(), 20000);
+  EXPECT_LT(mesh.zone_count(), 60000);
+  EXPECT_LT(seconds, 3.0);  // ~0.1 s in a release build; generous for sanitizers
+  const Checked checked = check_block(mesh, block, field, 0);
+  EXPECT_EQ(checked.sharp_zones, 0);
 }
 
 TEST(Zoning, SeveralBlocksAndSkippedOnes) {
@@ -506,8 +554,15 @@ TEST(Zoning, RejectsBadInput) {
   bad = uniform(1.0);
   bad.growth = -1;
   EXPECT_THROW(zone_one(square, bad), Error);
-  const Block bow_tie = make_block({{0, 0}, {1, 1}, {1, 0}, {0, 1}});
-  EXPECT_THROW(zone_one(bow_tie, uniform(0.5)), Error);
+  const Block bow_tie = make_block({{0, 0}, {0, 1}, {3, 0}, {3, 3}});  // positive area
+  try {
+    zone_one(bow_tie, uniform(0.5));
+    ADD_FAILURE() << "no error";
+  } catch (const Error& error) {
+    EXPECT_NE(std::string(error.what()).find("crosses itself"), std::string::npos) << error.what();
+  }
+  const Block clockwise = make_block({{0, 0}, {0, 1}, {1, 1}, {1, 0}});
+  EXPECT_THROW(zone_one(clockwise, uniform(0.5)), Error);
   Block two_points = square;
   two_points.outer = make_ring({{0, 0}, {1, 0}});
   EXPECT_THROW(zone_one(two_points, uniform(0.5)), Error);
@@ -544,8 +599,7 @@ TEST(Zoning, StopsAtTheZoneBudget) {
     zone_blocks(blocks, {&field}, 50000);
     ADD_FAILURE() << "no error";
   } catch (const Error& error) {
-    EXPECT_NE(std::string(error.what()).find("sharpest corner"), std::string::npos)
-        << error.what();
+    EXPECT_NE(std::string(error.what()).find("sharpest corner"), std::string::npos) << error.what();
   }
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
 }
