@@ -34,9 +34,12 @@ double segment_distance(Vec2 p, Vec2 a, Vec2 b) {
 }  // namespace
 
 double signed_area(const Polygon& polygon) {
+  // Relative to the first vertex, so that a small polygon far from the origin keeps its digits.
   double twice = 0.0;
   const size_t n = polygon.size();
-  for (size_t i = 0; i < n; ++i) twice += cross(polygon[i], polygon[(i + 1) % n]);
+  if (n == 0) return 0.0;
+  const Vec2 o = polygon[0];
+  for (size_t i = 1; i + 1 < n; ++i) twice += cross(polygon[i] - o, polygon[i + 1] - o);
   return 0.5 * twice;
 }
 

@@ -368,14 +368,10 @@ TEST(Zoning, ThinWedges) {
     const double a = angle * kPi / 180.0;
     const Block block = make_block({{0, 0}, {100, 0}, {100 * std::cos(a), 100 * std::sin(a)}});
     const SizeField field = uniform(1.0);
-    const auto start = std::chrono::steady_clock::now();
     const Mesh mesh = zone_one(block, field);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const Checked checked = check_block(mesh, block, field, 0);
     EXPECT_EQ(checked.sharp_zones, 1) << angle << " deg";
     EXPECT_LT(mesh.zone_count(), 100000) << angle << " deg";
-    EXPECT_LT(seconds, 5.0) << angle << " deg";
   }
 }
 
@@ -476,25 +472,18 @@ TEST(Zoning, GradedFieldNearACircle) {
   EXPECT_LT(mesh.zone_count(), 20000);
 }
 
-TEST(Zoning, MainExampleIsFast) {
-  // The seed paper's model: a 200 m x 180 m region, fine around a 24 m x 48 m opening.
+// The seed paper's model region, fine around a 24 m x 48 m opening: zone count in the expected
+// range and every rule held. Its speed is measured in tests/bench (bench_geometry), not here.
+TEST(Zoning, MainExampleRegion) {
   const Block block = make_block({{-100, -90}, {100, -90}, {100, 90}, {-100, 90}});
   SizeField field;
   field.edge = 0.5;
   field.far = 10;
   field.growth = 0.2;
   field.near = {{{-12, -24}, {12, -24}, {12, 24}, {-12, 24}}};
-  const auto start = std::chrono::steady_clock::now();
   const Mesh mesh = zone_one(block, field);
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  RecordProperty("zones", mesh.zone_count());
-  RecordProperty("milliseconds", static_cast<int>(1000 * seconds));
-  std::printf("main example: %d zones, %d gridpoints in %.3f s\n", mesh.zone_count(),
-              mesh.gp_count(), seconds);
   EXPECT_GT(mesh.zone_count(), 20000);
   EXPECT_LT(mesh.zone_count(), 60000);
-  EXPECT_LT(seconds, 3.0);  // ~0.1 s in a release build; generous for sanitizers
   const Checked checked = check_block(mesh, block, field, 0);
   EXPECT_EQ(checked.sharp_zones, 0);
 }
