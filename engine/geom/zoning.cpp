@@ -309,15 +309,7 @@ void check_ring(const Ring& ring, int block, const char* what) {
   }
 }
 
-// Signed area, positive counter-clockwise [m^2]. Relative to the first vertex so that a small
-// block far from the origin keeps its digits.
-double ring_area(const Ring& ring) {
-  const Vec2 o = ring.points[0];
-  double twice = 0.0;
-  for (size_t i = 1; i + 1 < ring.points.size(); ++i)
-    twice += cross(ring.points[i] - o, ring.points[i + 1] - o);
-  return 0.5 * twice;
-}
+double ring_area(const Ring& ring) { return signed_area(ring.points); }
 
 // Interior angle of a ring at vertex i, on the domain side (the left of the ring) [deg].
 double interior_angle(const Ring& ring, size_t i) {

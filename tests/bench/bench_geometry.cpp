@@ -16,6 +16,16 @@ using edem::scenes::jointed_cavern;
 constexpr double kEdge = 0.42;
 constexpr double kFar = 3.2;
 
+edem::Model zoned_example() {
+  edem::Model model = jointed_cavern();
+  edem::ZoneDef zone;
+  zone.edge = kEdge;
+  zone.far = kFar;
+  zone.near = {{"cavern", {}}};
+  model.zone(zone);
+  return model;
+}
+
 void BM_CutExample(benchmark::State& state) {
   for (auto _ : state) {
     edem::Model model = jointed_cavern();
@@ -27,13 +37,7 @@ BENCHMARK(BM_CutExample)->Unit(benchmark::kMillisecond);
 void BM_CutAndZoneExample(benchmark::State& state) {
   edem::ModelInfo info;
   for (auto _ : state) {
-    edem::Model model = jointed_cavern();
-    edem::ZoneDef zone;
-    zone.edge = kEdge;
-    zone.far = kFar;
-    zone.near = {{"cavern", {}}};
-    model.zone(zone);
-    info = model.info();
+    info = zoned_example().info();
   }
   state.counters["blocks"] = info.blocks;
   state.counters["zones"] = info.zones;
@@ -43,12 +47,7 @@ BENCHMARK(BM_CutAndZoneExample)->Unit(benchmark::kMillisecond);
 
 // Plotting the zoned example with every layer to PNG (1200 x 900).
 void BM_PlotExample(benchmark::State& state) {
-  edem::Model model = jointed_cavern();
-  edem::ZoneDef zone;
-  zone.edge = kEdge;
-  zone.far = kFar;
-  zone.near = {{"cavern", {}}};
-  model.zone(zone);
+  edem::Model model = zoned_example();
   edem::PlotDef def;
   def.file = (std::filesystem::temp_directory_path() / "edem_bench_plot.png").string();
   def.show = {"regions", "zones", "blocks", "joints"};
