@@ -7,6 +7,8 @@
 #include "core/names.hpp"
 #include "geom/cutter.hpp"
 #include "geom/joint_set.hpp"
+#include "solver/mechanics.hpp"
+#include "solver/prepare.hpp"
 
 namespace edem {
 namespace {
@@ -23,7 +25,7 @@ Box extent_of(const std::vector<BlockDef>& bases) {
 
 }  // namespace
 
-Model::Model(ModelDef def) : def_(std::move(def)) {
+Model::Model(ModelDef def) : def_(std::move(def)), mechanics_(std::make_unique<Mechanics>()) {
   if (!(def_.tolerance > 0.0 && def_.tolerance <= 1e-3))
     fail("tolerance must be in (0, 1e-3], got {}", def_.tolerance);
 }
@@ -58,6 +60,7 @@ Polygon Model::resolve_in(const Inputs& inputs, const RegionRef& ref) const {
 Polygon Model::resolve(const RegionRef& ref) const { return resolve_in(inputs_, ref); }
 
 void Model::add_block(const BlockDef& def) {
+  check_geometry_open();
   validate_polygon(def.polygon, "block");
   for (size_t i = 0; i < inputs_.bases.size(); ++i)
     if (interiors_overlap(def.polygon, inputs_.bases[i].polygon))
@@ -68,6 +71,7 @@ void Model::add_block(const BlockDef& def) {
 }
 
 int Model::add_joint_set(const JointSetDef& def) {
+  check_geometry_open();
   check_finite(def.angle, "angle");
   if (def.spacing.empty()) fail("spacing needs at least one value");
   double min_spacing = INFINITY;
@@ -97,6 +101,7 @@ int Model::add_joint_set(const JointSetDef& def) {
 }
 
 void Model::add_crack(const CrackDef& def) {
+  check_geometry_open();
   for (double v : {def.from.x, def.from.y, def.to.x, def.to.y}) check_finite(v, "crack end");
   if (norm(def.to - def.from) <= tolerance())
     fail("crack from ({}, {}) to ({}, {}) has zero length", def.from.x, def.from.y, def.to.x,
@@ -108,6 +113,7 @@ void Model::add_crack(const CrackDef& def) {
 }
 
 void Model::add_region(const RegionDef& def) {
+  check_geometry_open();
   if (def.name.empty()) fail("a region needs a name");
   for (const auto& region : inputs_.regions)
     if (region.name == def.name) fail("region '{}' is already defined", def.name);
@@ -118,6 +124,7 @@ void Model::add_region(const RegionDef& def) {
 }
 
 void Model::zone(const ZoneDef& def) {
+  check_geometry_open();
   if (inputs_.bases.empty()) fail("no blocks to zone: define blocks with block{{...}} first");
   if (!(def.edge > 0.0) || !std::isfinite(def.edge)) fail("edge must be > 0, got {}", def.edge);
   const double far = def.far == 0.0 ? def.edge : def.far;
@@ -180,12 +187,27 @@ Mesh Model::zone_all(const Inputs& inputs, const BlockSet& blocks) const {
   return zone_blocks(blocks, size_of_block);
 }
 
+void Model::check_geometry_open() const {
+  if (cycling_started())
+    fail("the geometry cannot change once cycling has begun (cycle {})", solver_info().cycle);
+}
+
 void Model::commit(Inputs next) {
   BlockSet blocks = cut(next);
   Mesh mesh = zone_all(next, blocks);
   inputs_ = std::move(next);
   blocks_ = std::move(blocks);
   mesh_ = std::move(mesh);
+  // New zones: the mechanical commands given so far are applied to them again.
+  Mechanics& m = *mechanics_;
+  reset_for_mesh(m, mesh_);
+  if (mesh_.zone_count() == 0) return;
+  m.replaying = true;
+  struct Done {
+    bool& flag;
+    ~Done() { flag = false; }
+  } done{m.replaying};
+  for (const auto& command : m.replay) command(*this);
 }
 
 ModelInfo Model::info() const {

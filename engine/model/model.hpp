@@ -6,6 +6,8 @@
 // it throws.
 #pragma once
 
+#include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -15,12 +17,18 @@
 #include "geom/mesh.hpp"
 #include "geom/zoning.hpp"
 #include "model/defs.hpp"
+#include "model/physics_defs.hpp"
 
 namespace edem {
+
+struct Mechanics;  // solver/mechanics.hpp: materials, loads and the solver's arrays
 
 class Model {
  public:
   explicit Model(ModelDef def = {});
+  ~Model();
+  Model(Model&&) noexcept;
+  Model& operator=(Model&&) noexcept;
 
   const std::string& title() const { return def_.title; }
 
@@ -45,6 +53,51 @@ class Model {
   int joint_set_count() const { return static_cast<int>(inputs_.joint_sets.size()); }
   double tolerance() const;  // absolute geometric tolerance [m]
 
+  // ---- Mechanics (solver/mechanics.cpp). Commands given before the first cycle are replayed
+  // on the new zones when a geometry command re-zones the model; geometry commands after the
+  // first cycle are an error. Each call validates everything before it changes anything.
+
+  void add_material(const MaterialDef& def);          // a name may be redefined before use
+  void assign(const AssignDef& def);                   // needs zones
+  void set_gravity(Vec2 g);                            // [m/s^2]
+  void insitu(const InsituDef& def);                   // sets zone stresses (needs zones)
+  void boundary(const BoundaryDef& def);               // needs zones
+  void set_solver(const SolverSettings& settings);
+  const SolverSettings& solver_settings() const;
+  void set_threads(int threads);  // OpenMP threads for cycling; 0: OpenMP's default
+  // Zero displacements / velocities / plastic state flags of every gridpoint or zone.
+  void reset(bool displacement, bool velocity, bool state);
+
+  // Cycling. Throws edem::Error when the model is not ready (no zones, a zone without
+  // material) or when the watchdog stops an unstable run (the model stays at that cycle).
+  // Exceptions thrown by callbacks and history samplers pass through unchanged.
+  void cycle(long count);
+  SolveResult solve(const SolveDef& def);
+  SolverInfo solver_info() const;
+  bool cycling_started() const;
+  bool cycling_now() const;  // inside cycle() or solve(), e.g. while a callback runs
+
+  // Callbacks run after every cycle whose number is a multiple of `every`; returns a handle.
+  int add_callback(long every, std::function<void(long cycle)> fn);
+  void cancel_callback(int handle);  // throws for an unknown or cancelled handle
+
+  // Histories, sampled after every cycle whose number is a multiple of their `every`.
+  int add_history(HistoryDef def);
+  // A built-in quantity: "ratio", "time", "kinetic"; at a point: "ux", "uy", "vx", "vy"
+  // (nearest gridpoint) or "sxx", "syy", "sxy", "szz", "s1", "s3" (zone containing it).
+  std::function<double()> history_sampler(std::string_view quantity,
+                                          std::optional<Vec2> at) const;
+  static std::string history_unit(std::string_view quantity);  // "m", "Pa", "-", ...
+  const std::vector<History>& histories() const;
+  void write_histories(const std::string& path) const;  // CSV, one column per history
+
+  // Read-only views; ids are 0-based mesh gridpoints and zones.
+  int gridpoint_near(Vec2 point) const;  // -1 when there are no gridpoints
+  int zone_at(Vec2 point) const;         // -1 when no zone contains the point
+  GridpointView gridpoint(int id) const;
+  ZoneView zone_view(int id) const;
+  std::vector<std::string> material_names() const;
+
  private:
   struct ZoneRequest {
     SizeField size;
@@ -66,12 +119,15 @@ class Model {
   BlockSet cut(const Inputs& inputs) const;
   Mesh zone_all(const Inputs& inputs, const BlockSet& blocks) const;
   double tolerance_of(const Inputs& inputs) const;
+  void check_geometry_open() const;  // throws once cycling has begun
+  SolveResult run(long max_cycles, double target_ratio);  // target <= 0: no ratio stop
   Polygon resolve_in(const Inputs& inputs, const RegionRef& ref) const;
 
   ModelDef def_;
   Inputs inputs_;
   BlockSet blocks_;
   Mesh mesh_;
+  std::unique_ptr<Mechanics> mechanics_;
 };
 
 }  // namespace edem

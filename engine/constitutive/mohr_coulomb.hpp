@@ -1,0 +1,38 @@
+// Zone constitutive kernels: elastic and Mohr-Coulomb with tension cut-off, plane strain.
+//
+// Both take a strain increment (dexx, deyy, engineering dgxy; dezz = 0) and update the stress
+// in place. Mohr-Coulomb is the return mapping of FLAC/UDEC in principal stresses: an elastic
+// trial, then a correction onto the shear surface (non-associated flow with the dilation
+// angle) or the tension cut-off, the region chosen by the bisector h of the two surfaces.
+// Compression is negative; s1 <= s2 <= s3, so s1 is the most compressive.
+#pragma once
+
+#include <cstdint>
+
+#include "constitutive/material.hpp"
+
+namespace edem {
+
+struct Stress {
+  double xx = 0.0, yy = 0.0, xy = 0.0, zz = 0.0;  // [Pa]
+};
+
+inline void elastic_update(const MaterialParams& m, Stress& s, double dexx, double deyy,
+                           double dgxy) {
+  s.xx += m.e1 * dexx + m.e2 * deyy;
+  s.yy += m.e2 * dexx + m.e1 * deyy;
+  s.zz += m.e2 * (dexx + deyy);
+  s.xy += m.shear * dgxy;
+}
+
+// Returns the zone state bits of this step (kShearNow, kTensionNow, or 0 when elastic).
+std::uint8_t mohr_coulomb_update(const MaterialParams& m, Stress& s, double dexx, double deyy,
+                                 double dgxy);
+
+// In-plane principal stresses of s: first the most compressive.
+struct Principal {
+  double s1 = 0.0, s3 = 0.0;
+};
+Principal in_plane_principal(const Stress& s);
+
+}  // namespace edem

@@ -1,0 +1,152 @@
+// Definitions of the mechanical inputs (materials, loads, boundaries, solver settings) and the
+// read-only views a script gets back, as the command language fills and reads them.
+//
+// Plain data with defaults and units; the interpreter checks types and ranges against its
+// schema, the Model checks what needs the model (names, regions, consistency). Stresses are
+// compression negative [Pa]; angles in degrees.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/vec2.hpp"
+#include "model/defs.hpp"
+
+namespace edem {
+
+inline constexpr double kUnset = std::numeric_limits<double>::quiet_NaN();
+
+enum class MaterialModel : std::uint8_t { elastic, mohr, null };
+
+struct MaterialDef {
+  std::string name;
+  MaterialModel model = MaterialModel::elastic;
+  double density = 0.0;     // [kg/m^3]
+  double young = kUnset;    // Young's modulus [Pa]; with poisson, or give bulk and shear
+  double poisson = kUnset;  // [-]
+  double bulk = kUnset;     // bulk modulus [Pa]
+  double shear = kUnset;    // shear modulus [Pa]
+  double cohesion = 0.0;    // [Pa] (mohr)
+  double friction = 0.0;    // [deg] (mohr)
+  double dilation = 0.0;    // [deg] (mohr), at most friction
+  double tension = 0.0;     // tensile strength [Pa] (mohr); capped at cohesion / tan(friction)
+};
+
+// Gives the zones inside `region` (all zones when empty) the material `material`.
+struct AssignDef {
+  std::string material;
+  RegionRef region;
+};
+
+// Initial stresses. Either a field sxx.. + ygrad * y, or (from_surface) the lithostatic state
+// sv = -(surcharge + density * g * (surface - y)), sh = szz = k0 * sv.
+struct InsituDef {
+  bool from_surface = false;
+  // field form [Pa], ygrad [Pa/m]: s(y) = s0 + ygrad * y
+  double sxx = 0.0, syy = 0.0, sxy = 0.0;
+  double szz = kUnset;                 // unset: equal to sxx
+  std::array<double, 4> ygrad{};       // d/dy of sxx, syy, sxy, szz [Pa/m]
+  // surface form
+  double surface = 0.0;    // y of the ground surface [m]
+  double density = 0.0;    // [kg/m^3]
+  double k0 = 1.0;         // horizontal over vertical stress [-]
+  double surcharge = 0.0;  // vertical stress at the surface, positive for a load [Pa]
+  double gravity = 9.81;   // [m/s^2]; the Model uses |gravity{}| when one is set
+  RegionRef region;        // only zones inside it (empty: all)
+};
+
+// Conditions on the model's outer boundary gridpoints: those on one side of its bounding box,
+// or those inside a polygon.
+struct BoundaryDef {
+  std::string side;  // "left", "right", "top", "bottom", or empty with `polygon`
+  Polygon polygon;
+  // traction from a stress tensor [Pa]; or from the in-situ field (stress_insitu)
+  std::optional<std::array<double, 3>> stress;  // sxx, syy, sxy
+  bool stress_insitu = false;
+  std::string fix;   // "", "x", "y", "xy": hold these velocity components
+  std::string free;  // "", "x", "y", "xy": release these (and their applied velocity)
+  double xvel = kUnset;  // held x velocity [m/s] (implies fix x)
+  double yvel = kUnset;  // held y velocity [m/s] (implies fix y)
+};
+
+enum class SolverMode : std::uint8_t { static_, dynamic };
+enum class Damping : std::uint8_t { adaptive, local, none };
+
+struct SolverSettings {
+  SolverMode mode = SolverMode::static_;
+  Damping damping = Damping::adaptive;  // static mode; dynamic mode has none unless asked
+  double local_damping = 0.8;           // coefficient of local damping [-]
+  double step = 0.0;                    // forced time step [s] (dynamic); 0: automatic
+  double step_fraction = 0.9;           // automatic step over the critical estimate [-]
+};
+
+struct SolveDef {
+  double ratio = 1e-5;        // stop when the unbalanced-force ratio is at most this [-]
+  long max_cycles = 100000;   // and stop after this many cycles whatever the ratio
+};
+
+struct SolveResult {
+  long cycles = 0;         // cycles done by this solve
+  double ratio = 0.0;      // ratio reached
+  bool converged = false;
+};
+
+// Zone state flags (bits): failing now and failed in the past, in shear and in tension.
+enum ZoneState : std::uint8_t {
+  kShearNow = 1,
+  kTensionNow = 2,
+  kShearPast = 4,
+  kTensionPast = 8,
+};
+// "elastic", "shear", "tension", "shear-past", "tension-past", "shear tension" ...
+std::string zone_state_name(std::uint8_t state);
+
+struct GridpointView {
+  int id = -1;     // 0-based mesh gridpoint
+  Vec2 position;   // reference position [m]
+  Vec2 u;          // displacement [m]
+  Vec2 v;          // velocity [m/s]
+  Vec2 f;          // unbalanced force of the last cycle [N/m]
+  bool fixed_x = false, fixed_y = false;
+};
+
+struct ZoneView {
+  int id = -1;          // 0-based zone
+  Vec2 centroid;        // [m]
+  double sxx = 0, syy = 0, sxy = 0, szz = 0;  // [Pa]
+  double s1 = 0, s3 = 0;                      // in-plane principal, s1 <= s3 [Pa]
+  std::uint8_t state = 0;
+  std::string material;  // "" when none assigned
+};
+
+// A history: a quantity sampled every `every` cycles.
+struct HistoryDef {
+  std::string name;
+  long every = 10;
+  std::function<double()> sample;  // evaluated between cycles
+  std::string unit = "-";          // for the CSV header
+};
+
+struct History {
+  std::string name;
+  long every = 10;
+  std::function<double()> sample;
+  std::string unit;
+  std::vector<long> cycles;
+  std::vector<double> values;
+};
+
+struct SolverInfo {
+  long cycle = 0;
+  double time = 0.0;   // [s] (static mode: cycles, with a step of 1)
+  double step = 0.0;   // [s]
+  double ratio = 0.0;  // last measured unbalanced-force ratio [-]
+  double kinetic = 0.0;  // last measured kinetic energy [J/m]
+};
+
+}  // namespace edem

@@ -1,0 +1,33 @@
+// The explicit cycle: zones (strain rate, mixed discretisation, constitutive update, nodal
+// forces), then nodes (sum forces, damping, integrate).
+#pragma once
+
+#include "solver/mechanics.hpp"
+
+namespace edem {
+
+// What the last cycle of a batch measured.
+struct Measure {
+  double unbalanced = 0.0;   // sum of |F| over free components [N/m]
+  double applied = 0.0;      // sum of |zone corner forces| + |weight| + |load| [N/m]
+  double kinetic = 0.0;      // 1/2 sum m v^2 with the cycling masses [J/m]
+  double rayleigh_num = 0.0; // sum du . (r_start - r)
+  double rayleigh_den = 0.0; // sum m du^2
+  int inverted_zone = -1;    // lowest mesh zone turned inside out, or -1
+  int fastest_node = -1;     // node with the largest speed
+  bool finite = true;        // every force and velocity finite
+};
+
+// Runs `count` cycles (>= 1) on prepared mechanics; the last one measures. Deterministic:
+// the same bits for any thread count.
+Measure run_cycles(Mechanics& m, int count);
+
+}  // namespace edem
+
+namespace edem {
+
+// Measures the current state without moving anything: the unbalanced forces of the current
+// stresses and loads (for the ratio before any cycle).
+Measure measure_state(const Mechanics& m);
+
+}  // namespace edem

@@ -1,0 +1,456 @@
+// The Model's mechanical commands: materials, loads, cycling with the watchdog, callbacks,
+// histories and the read-only views.
+#include "solver/mechanics.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+#include "core/error.hpp"
+#include "core/names.hpp"
+#include "model/model.hpp"
+#include "solver/run.hpp"
+#include "solver/loads.hpp"
+#include "solver/prepare.hpp"
+
+namespace edem {
+namespace {
+
+bool has_x(const std::string& axes) { return axes.find('x') != std::string::npos; }
+bool has_y(const std::string& axes) { return axes.find('y') != std::string::npos; }
+
+void check_axes(const std::string& axes, const char* key) {
+  if (!(axes.empty() || axes == "x" || axes == "y" || axes == "xy"))
+    fail("{} must be \"x\", \"y\" or \"xy\", got \"{}\"", key, axes);
+}
+
+}  // namespace
+
+Model::~Model() = default;
+Model::Model(Model&&) noexcept = default;
+Model& Model::operator=(Model&&) noexcept = default;
+
+std::string zone_state_name(std::uint8_t state) {
+  std::string name;
+  auto add = [&](const char* part) {
+    if (!name.empty()) name += ' ';
+    name += part;
+  };
+  if (state & kShearNow)
+    add("shear");
+  else if (state & kShearPast)
+    add("shear-past");
+  if (state & kTensionNow)
+    add("tension");
+  else if (state & kTensionPast)
+    add("tension-past");
+  return name.empty() ? "elastic" : name;
+}
+
+// ---- inputs -----------------------------------------------------------------------------------
+
+void Model::add_material(const MaterialDef& def) {
+  if (def.name.empty()) fail("a material needs a name");
+  const MaterialParams params = material_params(def);
+  Mechanics& m = *mechanics_;
+  for (size_t i = 0; i < m.materials.size(); ++i) {
+    if (m.materials[i].name != def.name) continue;
+    if ((m.params[i].model == MaterialModel::null) != (params.model == MaterialModel::null)) {
+      for (const int used : m.zone_material)
+        if (used == static_cast<int>(i))
+          fail("material '{}' is assigned to zones; it cannot change to or from model \"null\" "
+               "(assign the zones another material instead)", def.name);
+    }
+    m.materials[i] = def;
+    m.params[i] = params;
+    m.dirty = true;
+    return;
+  }
+  m.materials.push_back(def);
+  m.params.push_back(params);
+}
+
+std::vector<std::string> Model::material_names() const {
+  std::vector<std::string> names;
+  for (const auto& material : mechanics_->materials) names.push_back(material.name);
+  return names;
+}
+
+namespace {
+
+int material_index(const Mechanics& m, const std::string& name) {
+  std::vector<std::string> names;
+  for (size_t i = 0; i < m.materials.size(); ++i) {
+    if (m.materials[i].name == name) return static_cast<int>(i);
+    names.push_back(m.materials[i].name);
+  }
+  if (names.empty()) fail("unknown material '{}': no material{{...}} has been defined", name);
+  fail("unknown material '{}'{}", name, did_you_mean(name, names));
+}
+
+}  // namespace
+
+void Model::assign(const AssignDef& def) {
+  Mechanics& m = *mechanics_;
+  const int material = material_index(m, def.material);
+  if (mesh_.zone_count() == 0) fail("there are no zones to assign to: zone{{...}} the blocks first");
+  std::vector<int> zones;
+  if (def.region.empty()) {
+    for (int z = 0; z < mesh_.zone_count(); ++z) zones.push_back(z);
+  } else if (!def.region.name.empty()) {
+    const int region = region_index(def.region.name);
+    for (int z = 0; z < mesh_.zone_count(); ++z) {
+      const auto& regions = blocks_.blocks[static_cast<size_t>(mesh_.zone_block[static_cast<size_t>(z)])].regions;
+      if (std::find(regions.begin(), regions.end(), region) != regions.end()) zones.push_back(z);
+    }
+  } else {
+    const Polygon polygon = resolve(def.region);
+    for (int z = 0; z < mesh_.zone_count(); ++z)
+      if (contains(polygon, mesh_.zone_centroid(z))) zones.push_back(z);
+  }
+  if (zones.empty()) fail("no zone lies in the region");
+  const bool null = m.params[static_cast<size_t>(material)].model == MaterialModel::null;
+  for (const int z : zones) {
+    m.zone_material[static_cast<size_t>(z)] = material;
+    if (null) {
+      m.stress[static_cast<size_t>(z)] = Stress{};
+      m.zone_state[static_cast<size_t>(z)] = 0;
+    }
+  }
+  m.dirty = true;
+  if (!cycling_started() && !m.replaying)
+    m.replay.push_back([def](Model& model) { model.assign(def); });
+}
+
+void Model::set_gravity(Vec2 g) {
+  if (!std::isfinite(g.x) || !std::isfinite(g.y))
+    fail("gravity must be finite, got ({}, {})", g.x, g.y);
+  mechanics_->gravity = g;
+  mechanics_->gravity_set = true;
+  mechanics_->dirty = true;
+}
+
+void Model::insitu(const InsituDef& def) {
+  check_insitu(def);
+  Mechanics& m = *mechanics_;
+  if (mesh_.zone_count() == 0) fail("there are no zones to initialise: zone{{...}} the blocks first");
+  Polygon region;
+  if (!def.region.empty()) region = resolve(def.region);
+  const double g = m.gravity_set ? norm(m.gravity) : 9.81;
+  for (int z = 0; z < mesh_.zone_count(); ++z) {
+    const Vec2 centroid = mesh_.zone_centroid(z);
+    if (!region.empty() && !contains(region, centroid)) continue;
+    const int material = m.zone_material[static_cast<size_t>(z)];
+    if (material >= 0 && m.params[static_cast<size_t>(material)].model == MaterialModel::null) continue;
+    m.stress[static_cast<size_t>(z)] = insitu_stress(def, centroid, g);
+  }
+  m.insitu.push_back(def);
+  m.insitu_regions.push_back(region);
+  m.dirty = true;
+  if (!cycling_started() && !m.replaying)
+    m.replay.push_back([def](Model& model) { model.insitu(def); });
+}
+
+void Model::boundary(const BoundaryDef& def) {
+  Mechanics& m = *mechanics_;
+  if (def.side.empty() == def.polygon.empty()) fail("give either side or polygon");
+  check_axes(def.fix, "fix");
+  check_axes(def.free, "free");
+  for (double vel : {def.xvel, def.yvel})
+    if (!std::isnan(vel) && !std::isfinite(vel)) fail("velocity must be finite, got {}", vel);
+  if (def.stress && def.stress_insitu) fail("give stress as three numbers or \"insitu\", not both");
+  if (def.stress)
+    for (double s : *def.stress)
+      if (!std::isfinite(s)) fail("stress must be finite, got {}", s);
+  if (mesh_.zone_count() == 0) fail("there are no gridpoints: zone{{...}} the blocks first");
+  const std::vector<int> nodes = select_boundary_nodes(m, def);
+  if (nodes.empty()) fail("no outer boundary gridpoint lies on side \"{}\"", def.side);
+
+  // Tractions first: they can fail (no in-situ field), and nothing is changed before.
+  std::vector<char> chosen(static_cast<size_t>(m.node_count), 0);
+  for (int n : nodes) chosen[static_cast<size_t>(n)] = 1;
+  std::vector<std::pair<size_t, std::pair<Stress, Stress>>> loads;
+  if (def.stress || def.stress_insitu) {
+    for (size_t i = 0; i < m.boundary.size(); ++i) {
+      const BoundarySegment& s = m.boundary[i];
+      if (!chosen[static_cast<size_t>(s.a)] || !chosen[static_cast<size_t>(s.b)]) continue;
+      Stress at_a, at_b;
+      if (def.stress_insitu) {
+        auto point = [&](int n) {
+          return Vec2{m.position[2 * static_cast<size_t>(n)], m.position[2 * static_cast<size_t>(n) + 1]};
+        };
+        at_a = insitu_stress_at(m, point(s.a));
+        at_b = insitu_stress_at(m, point(s.b));
+      } else {
+        at_a = at_b = Stress{(*def.stress)[0], (*def.stress)[1], (*def.stress)[2], 0.0};
+      }
+      loads.push_back({i, {at_a, at_b}});
+    }
+    if (loads.empty()) fail("the selection holds no boundary segment to load (it needs two neighbouring gridpoints)");
+  }
+
+  for (const auto& [i, stresses] : loads) {
+    m.boundary[i].loaded = true;
+    m.boundary[i].at_a = stresses.first;
+    m.boundary[i].at_b = stresses.second;
+  }
+  for (int n : nodes) {
+    const size_t nn = static_cast<size_t>(n);
+    std::uint8_t& fix = m.fix[nn];
+    if (has_x(def.free)) fix &= static_cast<std::uint8_t>(~1u), m.v[2 * nn] = 0.0;
+    if (has_y(def.free)) fix &= static_cast<std::uint8_t>(~2u), m.v[2 * nn + 1] = 0.0;
+    if (has_x(def.fix)) fix |= 1, m.v[2 * nn] = 0.0;
+    if (has_y(def.fix)) fix |= 2, m.v[2 * nn + 1] = 0.0;
+    if (!std::isnan(def.xvel)) fix |= 1, m.v[2 * nn] = def.xvel;
+    if (!std::isnan(def.yvel)) fix |= 2, m.v[2 * nn + 1] = def.yvel;
+  }
+  lump_boundary_loads(m);
+  m.dirty = true;
+  if (!cycling_started() && !m.replaying)
+    m.replay.push_back([def](Model& model) { model.boundary(def); });
+}
+
+void Model::set_solver(const SolverSettings& settings) {
+  if (!(settings.local_damping >= 0.0 && settings.local_damping < 1.0))
+    fail("local damping must be in [0, 1), got {}", settings.local_damping);
+  if (!(settings.step >= 0.0) || !std::isfinite(settings.step))
+    fail("step must be >= 0 (0: automatic), got {}", settings.step);
+  if (!(settings.step_fraction > 0.0 && settings.step_fraction <= 1.0))
+    fail("fraction must be in (0, 1], got {}", settings.step_fraction);
+  mechanics_->settings = settings;
+  mechanics_->dirty = true;
+}
+
+const SolverSettings& Model::solver_settings() const { return mechanics_->settings; }
+
+void Model::set_threads(int threads) {
+  if (threads < 0) fail("threads must be >= 1, got {}", threads);
+  mechanics_->threads = threads;
+}
+
+void Model::reset(bool displacement, bool velocity, bool state) {
+  Mechanics& m = *mechanics_;
+  if (displacement) std::fill(m.u.begin(), m.u.end(), 0.0);
+  if (velocity)
+    for (size_t n = 0; n < static_cast<size_t>(m.node_count); ++n) {
+      if (!(m.fix[n] & 1)) m.v[2 * n] = 0.0;
+      if (!(m.fix[n] & 2)) m.v[2 * n + 1] = 0.0;
+    }
+  if (state) std::fill(m.zone_state.begin(), m.zone_state.end(), 0);
+  m.dirty = true;  // restarts the adaptive damping from here
+}
+
+// ---- cycling --------------------------------------------------------------------------------
+
+bool Model::cycling_started() const { return mechanics_->cycles_run > 0; }
+bool Model::cycling_now() const { return mechanics_->cycling_now; }
+SolverInfo Model::solver_info() const { return mechanics_->info; }
+
+SolveResult Model::run(long max_cycles, double target_ratio) {
+  return run_solver(*mechanics_, mesh_, max_cycles, target_ratio);
+}
+
+void Model::cycle(long count) {
+  if (count < 1) fail("the number of cycles must be >= 1, got {}", count);
+  run(count, 0.0);
+}
+
+SolveResult Model::solve(const SolveDef& def) {
+  if (!(def.ratio > 0.0 && def.ratio < 1.0)) fail("ratio must be in (0, 1), got {}", def.ratio);
+  if (def.max_cycles < 1) fail("max_cycles must be >= 1, got {}", def.max_cycles);
+  return run(def.max_cycles, def.ratio);
+}
+
+int Model::add_callback(long every, std::function<void(long)> fn) {
+  if (every < 1) fail("every must be >= 1, got {}", every);
+  Mechanics& m = *mechanics_;
+  m.callbacks.push_back({m.next_handle, every, std::move(fn)});
+  return m.next_handle++;
+}
+
+void Model::cancel_callback(int handle) {
+  auto& callbacks = mechanics_->callbacks;
+  const auto it = std::find_if(callbacks.begin(), callbacks.end(),
+                               [&](const Callback& c) { return c.handle == handle; });
+  if (it == callbacks.end()) fail("no callback with handle {} (cancelled already?)", handle);
+  callbacks.erase(it);
+}
+
+// ---- histories --------------------------------------------------------------------------------
+
+int Model::add_history(HistoryDef def) {
+  if (def.name.empty()) fail("a history needs a name");
+  if (def.every < 1) fail("every must be >= 1, got {}", def.every);
+  if (!def.sample) fail("history '{}' has nothing to sample", def.name);
+  for (const History& h : mechanics_->histories)
+    if (h.name == def.name) fail("a history named '{}' exists already", def.name);
+  mechanics_->histories.push_back({def.name, def.every, std::move(def.sample), def.unit, {}, {}});
+  return static_cast<int>(mechanics_->histories.size());
+}
+
+namespace {
+const std::vector<std::string>& point_quantities() {
+  static const std::vector<std::string> names{"ux", "uy", "vx", "vy", "sxx", "syy",
+                                              "sxy", "szz", "s1", "s3"};
+  return names;
+}
+const std::vector<std::string>& global_quantities() {
+  static const std::vector<std::string> names{"ratio", "time", "kinetic", "cycle"};
+  return names;
+}
+}  // namespace
+
+std::string Model::history_unit(std::string_view quantity) {
+  if (quantity == "ratio" || quantity == "cycle") return "-";
+  if (quantity == "time") return "s";
+  if (quantity == "kinetic") return "J/m";
+  if (quantity == "ux" || quantity == "uy") return "m";
+  if (quantity == "vx" || quantity == "vy") return "m/s";
+  return "Pa";
+}
+
+std::function<double()> Model::history_sampler(std::string_view quantity,
+                                                std::optional<Vec2> at) const {
+  const auto& global = global_quantities();
+  const auto& local = point_quantities();
+  const bool is_global = std::find(global.begin(), global.end(), quantity) != global.end();
+  const bool is_local = std::find(local.begin(), local.end(), quantity) != local.end();
+  if (!is_global && !is_local) {
+    std::vector<std::string> all = global;
+    all.insert(all.end(), local.begin(), local.end());
+    fail("unknown history quantity '{}'{}", quantity, did_you_mean(quantity, all));
+  }
+  const Mechanics* m = mechanics_.get();
+  if (is_global) {
+    if (quantity == "ratio") return [m] { return m->info.ratio; };
+    if (quantity == "time") return [m] { return m->info.time; };
+    if (quantity == "kinetic") return [m] { return m->info.kinetic; };
+    return [m] { return static_cast<double>(m->info.cycle); };
+  }
+  if (!at) fail("history quantity '{}' needs at = {{x, y}}", quantity);
+  if (quantity[0] == 'u' || quantity[0] == 'v') {
+    const int gp = gridpoint_near(*at);
+    if (gp < 0) fail("there are no gridpoints to follow: zone{{...}} the blocks first");
+    const size_t dof = 2 * static_cast<size_t>(m->gp_node[static_cast<size_t>(gp)]) + (quantity[1] == 'y' ? 1 : 0);
+    if (quantity[0] == 'u') return [m, dof] { return m->u[dof]; };
+    return [m, dof] { return m->v[dof]; };
+  }
+  const int zone = zone_at(*at);
+  if (zone < 0) fail("no zone contains the point ({}, {})", at->x, at->y);
+  const size_t z = static_cast<size_t>(zone);
+  const std::string q(quantity);
+  if (q == "sxx") return [m, z] { return m->stress[z].xx; };
+  if (q == "syy") return [m, z] { return m->stress[z].yy; };
+  if (q == "sxy") return [m, z] { return m->stress[z].xy; };
+  if (q == "szz") return [m, z] { return m->stress[z].zz; };
+  if (q == "s1") return [m, z] { return in_plane_principal(m->stress[z]).s1; };
+  return [m, z] { return in_plane_principal(m->stress[z]).s3; };
+}
+
+const std::vector<History>& Model::histories() const { return mechanics_->histories; }
+
+void Model::write_histories(const std::string& path) const {
+  const auto& histories = mechanics_->histories;
+  if (histories.empty()) fail("there are no histories to write: history{{...}} first");
+  std::map<long, std::vector<const double*>> rows;
+  for (size_t h = 0; h < histories.size(); ++h)
+    for (size_t i = 0; i < histories[h].cycles.size(); ++i) {
+      auto& row = rows[histories[h].cycles[i]];
+      row.resize(histories.size(), nullptr);
+      row[h] = &histories[h].values[i];
+    }
+  const std::string temporary = path + ".tmp";
+  {
+    std::ofstream out(temporary);
+    if (!out) fail("cannot write '{}'", path);
+    out << "cycle";
+    for (const History& h : histories) out << ',' << h.name << " [" << h.unit << ']';
+    out << '\n';
+    for (const auto& [cycle, row] : rows) {
+      out << cycle;
+      for (const double* value : row) {
+        out << ',';
+        if (value) out << fmt::format("{}", *value);
+      }
+      out << '\n';
+    }
+    if (!out) fail("cannot write '{}'", path);
+  }
+  std::error_code error;
+  std::filesystem::rename(temporary, path, error);
+  if (error) fail("cannot write '{}': {}", path, error.message());
+}
+
+// ---- views ----------------------------------------------------------------------------------
+
+int Model::gridpoint_near(Vec2 point) const {
+  int best = -1;
+  double best_distance = INFINITY;
+  for (int gp = 0; gp < mesh_.gp_count(); ++gp) {
+    const Vec2 d = mesh_.gp_position[static_cast<size_t>(gp)] - point;
+    const double distance = dot(d, d);
+    if (distance < best_distance) best_distance = distance, best = gp;
+  }
+  return best;
+}
+
+int Model::zone_at(Vec2 point) const {
+  const double slack = 1e-12 * (1.0 + std::fabs(point.x) + std::fabs(point.y));
+  for (int z = 0; z < mesh_.zone_count(); ++z) {
+    const auto& corners = mesh_.zone_gp[static_cast<size_t>(z)];
+    bool inside = true;
+    for (int i = 0; i < 3 && inside; ++i) {
+      const Vec2 a = mesh_.gp_position[static_cast<size_t>(corners[static_cast<size_t>(i)])];
+      const Vec2 b = mesh_.gp_position[static_cast<size_t>(corners[static_cast<size_t>((i + 1) % 3)])];
+      inside = cross(b - a, point - a) >= -slack * norm(b - a);
+    }
+    if (inside) return z;
+  }
+  return -1;
+}
+
+GridpointView Model::gridpoint(int id) const {
+  if (id < 0 || id >= mesh_.gp_count()) fail("no gridpoint {}", id + 1);
+  const Mechanics& m = *mechanics_;
+  GridpointView view;
+  view.id = id;
+  view.position = mesh_.gp_position[static_cast<size_t>(id)];
+  if (m.gp_node.empty()) return view;
+  const size_t n = static_cast<size_t>(m.gp_node[static_cast<size_t>(id)]);
+  view.u = {m.u[2 * n], m.u[2 * n + 1]};
+  view.v = {m.v[2 * n], m.v[2 * n + 1]};
+  view.f = {m.force[2 * n], m.force[2 * n + 1]};
+  view.fixed_x = m.fix[n] & 1;
+  view.fixed_y = m.fix[n] & 2;
+  for (double value : {view.u.x, view.u.y, view.v.x, view.v.y, view.f.x, view.f.y})
+    if (!std::isfinite(value))
+      fail("gridpoint {} holds no finite state: the run went unstable earlier", id + 1);
+  return view;
+}
+
+ZoneView Model::zone_view(int id) const {
+  if (id < 0 || id >= mesh_.zone_count()) fail("no zone {}", id + 1);
+  const Mechanics& m = *mechanics_;
+  ZoneView view;
+  view.id = id;
+  view.centroid = mesh_.zone_centroid(id);
+  if (m.stress.empty()) return view;
+  const Stress& s = m.stress[static_cast<size_t>(id)];
+  for (double value : {s.xx, s.yy, s.xy, s.zz})
+    if (!std::isfinite(value))
+      fail("zone {} holds no finite stress: the run went unstable earlier", id + 1);
+  view.sxx = s.xx, view.syy = s.yy, view.sxy = s.xy, view.szz = s.zz;
+  const Principal p = in_plane_principal(s);
+  view.s1 = p.s1, view.s3 = p.s3;
+  view.state = m.zone_state[static_cast<size_t>(id)];
+  const int material = m.zone_material[static_cast<size_t>(id)];
+  if (material >= 0) view.material = m.materials[static_cast<size_t>(material)].name;
+  return view;
+}
+
+}  // namespace edem

@@ -1,0 +1,129 @@
+// Mechanics of a zoned model: materials, loads, and the arrays the explicit solver cycles.
+//
+// Owned by the Model. Nodes are the mesh gridpoints with those on either side of a glued edge
+// merged into one (glued blocks are one continuum). Arrays indexed by mesh zone hold the
+// zone state (stress, material, plastic state) for every zone, null or not; the solver loops
+// over `active` only. Node vectors interleave x and y: [2n] is x, [2n + 1] is y.
+//
+// Derived arrays (geometry, masses, partition) are rebuilt by prepare() whenever `dirty`;
+// the state (stresses, displacements, velocities) persists across rebuilds.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "constitutive/material.hpp"
+#include "constitutive/mohr_coulomb.hpp"
+#include "geom/mesh.hpp"
+#include "model/physics_defs.hpp"
+
+namespace edem {
+
+// Per mesh zone, from the reference positions.
+struct ZoneGeometry {
+  std::array<int, 3> node{};  // solver nodes, counter-clockwise
+  double area = 0.0;          // [m^2]
+  double b[3] = {};           // dN_i/dx [1/m]
+  double c[3] = {};           // dN_i/dy [1/m]
+};
+
+// A segment of the model's outer boundary (a block{} outline), domain on its left.
+struct BoundarySegment {
+  int a = -1, b = -1;   // nodes
+  bool loaded = false;  // carries a traction from a stress tensor
+  Stress at_a, at_b;    // the stress whose traction it carries, at each end [Pa]
+};
+
+// How zones and nodes are split among threads, and where each zone corner's contribution
+// goes. Contributions to a node are always summed in active-zone order, so the result is the
+// same bits for any thread count: a node whose zones all belong to one thread's range is
+// accumulated in place; a node shared by ranges gathers its per-corner slots in order.
+struct Partition {
+  int threads = 0;
+  std::vector<int> zone_begin;          // thread t: active positions [zone_begin[t], [t+1])
+  std::vector<int> mixed_begin;         // thread t: its entries of Mechanics::mixed
+  std::vector<int> node_begin;          // thread t: nodes [node_begin[t], [t+1])
+  std::vector<std::array<int, 3>> dest; // per active zone corner: accumulator index
+  std::vector<int> gather_first;        // per node + 1: its slots in `gather` (empty: owned)
+  std::vector<int> gather;              // accumulator indices of shared nodes' slots, in order
+  int accumulators = 0;                 // nodes + slots
+};
+
+struct Callback {
+  int handle = 0;
+  long every = 1;
+  std::function<void(long)> fn;
+};
+
+// The adaptive damping of static mode: viscous damping c = 2 omega, omega^2 the Rayleigh
+// quotient of the displacement since the start of the cycling command (see cycle.cpp).
+struct AdaptiveDamping {
+  double c = 0.0;                 // [1/s]
+  std::vector<double> u_start;    // displacement at the start [m]
+  std::vector<double> r_start;    // unbalanced force at the start (first cycle) [N/m]
+  bool have_r_start = false;
+};
+
+struct Mechanics {
+  // ---- inputs
+  std::vector<MaterialDef> materials;
+  std::vector<MaterialParams> params;  // same order as materials
+  SolverSettings settings;
+  Vec2 gravity;  // [m/s^2]
+  bool gravity_set = false;
+  int threads = 0;  // 0: OpenMP's default
+  std::vector<InsituDef> insitu;         // in order; boundary stress="insitu" uses them
+  std::vector<Polygon> insitu_regions;   // their regions resolved (empty: everywhere)
+  // Commands given before the first cycle, replayed after a re-zone.
+  std::vector<std::function<void(class Model&)>> replay;
+  bool replaying = false;
+  bool cycling_now = false;
+
+  // ---- state per mesh zone
+  std::vector<int> zone_material;  // -1: none assigned
+  std::vector<Stress> stress;
+  std::vector<std::uint8_t> zone_state;
+
+  // ---- state per node
+  int node_count = 0;
+  std::vector<int> gp_node;         // mesh gridpoint -> node
+  std::vector<double> position;     // reference [m], 2 per node
+  std::vector<double> u, v;         // displacement [m], velocity [m/s]
+  std::vector<double> force;        // unbalanced force of the last cycle [N/m]
+  std::vector<double> load;         // boundary tractions lumped to nodes [N/m]
+  std::vector<std::uint8_t> fix;    // bit 0: x held, bit 1: y held
+  std::vector<int> node_block;      // a block of the node (for messages)
+  std::vector<BoundarySegment> boundary;
+
+  // ---- derived by prepare()
+  bool dirty = true;
+  std::vector<ZoneGeometry> geometry;  // per mesh zone
+  std::vector<int> active;             // mesh zones that are cycled (material not null)
+  std::vector<int> mixed;              // active positions of the plastic zones (ascending)
+  std::vector<double> mass;            // per node, inertial (scaled in static mode) [kg/m]
+  std::vector<double> stiffness;       // per node, Gershgorin row sum of the zone stiffness [N/m^2]
+  std::vector<double> weight;          // gravity force, 2 per node [N/m]
+  std::vector<double> inv_area;        // per node, 1 / area of its active zones [1/m^2]
+  double step = 1.0;                   // time step [s]
+  double critical_step = 0.0;          // estimate: 2 min sqrt(m / k) with real masses [s]
+  double applied_magnitude = 0.0;      // sum of |weight| + |load| over nodes [N/m]
+  Partition partition;
+  std::vector<double> acc_force;       // accumulators, 2 per entry
+  std::vector<double> acc_volume;      // accumulators (area x volumetric strain rate)
+  std::vector<double> node_volume;     // per node: averaged volumetric strain rate [1/s]
+
+  // ---- solver progress
+  SolverInfo info;
+  long cycles_run = 0;  // cycles since the model was made; > 0 locks geometry
+  AdaptiveDamping adaptive;
+  double last_kinetic = 0.0;
+  int growth_checks = 0;  // consecutive checks with fast kinetic energy growth
+  std::vector<Callback> callbacks;
+  int next_handle = 1;
+  std::vector<History> histories;
+};
+
+}  // namespace edem

@@ -1,0 +1,283 @@
+// Nodes, zone geometry, masses, time step, loads and the thread partition.
+#include "solver/prepare.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <utility>
+
+#include "core/error.hpp"
+
+namespace edem {
+namespace {
+
+// Size of the blocks of zones and nodes that thread ranges are made of; also the unit of the
+// partial sums, so that reductions give the same bits for any thread count.
+constexpr int kChunk = 1024;
+
+int find_root(std::vector<int>& parent, int i) {
+  while (parent[static_cast<size_t>(i)] != i) {
+    parent[static_cast<size_t>(i)] = parent[static_cast<size_t>(parent[static_cast<size_t>(i)])];
+    i = parent[static_cast<size_t>(i)];
+  }
+  return i;
+}
+
+// Mesh gridpoint -> node: gridpoints at the two ends of the same glued segment, seen from the
+// blocks on either side, become one node.
+std::vector<int> merge_glued(const Mesh& mesh, int& node_count) {
+  const int n = mesh.gp_count();
+  std::vector<int> parent(static_cast<size_t>(n));
+  for (int i = 0; i < n; ++i) parent[static_cast<size_t>(i)] = i;
+  using Key = std::pair<std::pair<double, double>, std::pair<double, double>>;
+  std::map<Key, std::pair<int, int>> first_side;  // segment -> its gridpoints (a, b)
+  for (const auto& loops : mesh.block_boundary) {
+    for (const BoundaryLoop& loop : loops) {
+      const size_t count = loop.gridpoints.size();
+      for (size_t i = 0; i < count; ++i) {
+        if (!loop.edges[i].glued) continue;
+        const int a = loop.gridpoints[i], b = loop.gridpoints[(i + 1) % count];
+        Vec2 pa = mesh.gp_position[static_cast<size_t>(a)];
+        Vec2 pb = mesh.gp_position[static_cast<size_t>(b)];
+        const bool swap = std::make_pair(pb.x, pb.y) < std::make_pair(pa.x, pa.y);
+        const Key key = swap ? Key{{pb.x, pb.y}, {pa.x, pa.y}} : Key{{pa.x, pa.y}, {pb.x, pb.y}};
+        const std::pair<int, int> ends = swap ? std::make_pair(b, a) : std::make_pair(a, b);
+        const auto [it, inserted] = first_side.emplace(key, ends);
+        if (inserted) continue;
+        parent[static_cast<size_t>(find_root(parent, ends.first))] = find_root(parent, it->second.first);
+        parent[static_cast<size_t>(find_root(parent, ends.second))] = find_root(parent, it->second.second);
+      }
+    }
+  }
+  std::vector<int> node_of_root(static_cast<size_t>(n), -1), gp_node(static_cast<size_t>(n));
+  node_count = 0;
+  for (int i = 0; i < n; ++i) {
+    int& node = node_of_root[static_cast<size_t>(find_root(parent, i))];
+    if (node < 0) node = node_count++;
+    gp_node[static_cast<size_t>(i)] = node;
+  }
+  return gp_node;
+}
+
+ZoneGeometry zone_geometry(const Mechanics& m, const Mesh& mesh, int zone) {
+  ZoneGeometry g;
+  Vec2 p[3];
+  for (int i = 0; i < 3; ++i) {
+    const int gp = mesh.zone_gp[static_cast<size_t>(zone)][static_cast<size_t>(i)];
+    g.node[static_cast<size_t>(i)] = m.gp_node[static_cast<size_t>(gp)];
+    p[i] = mesh.gp_position[static_cast<size_t>(gp)];
+  }
+  const double twice_area = cross(p[1] - p[0], p[2] - p[0]);
+  g.area = 0.5 * twice_area;
+  for (int i = 0; i < 3; ++i) {
+    const Vec2 pj = p[(i + 1) % 3], pk = p[(i + 2) % 3];
+    g.b[i] = (pj.y - pk.y) / twice_area;
+    g.c[i] = (pk.x - pj.x) / twice_area;
+  }
+  return g;
+}
+
+// Gershgorin row sums of one zone's stiffness matrix A B^T D B, added to the nodes: free rows
+// over free columns only, since held components do not take part in the vibration.
+void add_row_sums(const ZoneGeometry& g, const MaterialParams& p,
+                  const std::vector<std::uint8_t>& fix, std::vector<double>& rows) {
+  auto free = [&](int corner, int axis) {
+    return !((fix[static_cast<size_t>(g.node[static_cast<size_t>(corner)])] >> axis) & 1);
+  };
+  for (int i = 0; i < 3; ++i) {
+    double row_x = 0.0, row_y = 0.0;
+    for (int j = 0; j < 3; ++j) {
+      const double xx = p.e1 * g.b[i] * g.b[j] + p.shear * g.c[i] * g.c[j];
+      const double xy = p.e2 * g.b[i] * g.c[j] + p.shear * g.c[i] * g.b[j];
+      const double yx = p.e2 * g.c[i] * g.b[j] + p.shear * g.b[i] * g.c[j];
+      const double yy = p.e1 * g.c[i] * g.c[j] + p.shear * g.b[i] * g.b[j];
+      if (free(j, 0)) row_x += std::fabs(xx), row_y += std::fabs(yx);
+      if (free(j, 1)) row_x += std::fabs(xy), row_y += std::fabs(yy);
+    }
+    const size_t n = static_cast<size_t>(g.node[static_cast<size_t>(i)]);
+    if (free(i, 0)) rows[2 * n] += g.area * row_x;
+    if (free(i, 1)) rows[2 * n + 1] += g.area * row_y;
+  }
+}
+
+std::vector<int> chunked_split(int items, int parts) {
+  const int chunks = (items + kChunk - 1) / kChunk;
+  std::vector<int> begin(static_cast<size_t>(parts) + 1);
+  for (int t = 0; t <= parts; ++t)
+    begin[static_cast<size_t>(t)] = std::min(items, static_cast<int>(static_cast<long>(chunks) * t / parts) * kChunk);
+  return begin;
+}
+
+Partition make_partition(const Mechanics& m, int threads) {
+  Partition part;
+  part.threads = threads;
+  const int zones = static_cast<int>(m.active.size());
+  part.zone_begin = chunked_split(zones, threads);
+  part.node_begin = chunked_split(m.node_count, threads);
+  part.mixed_begin.resize(static_cast<size_t>(threads) + 1);
+  for (int t = 0; t <= threads; ++t)
+    part.mixed_begin[static_cast<size_t>(t)] = static_cast<int>(
+        std::lower_bound(m.mixed.begin(), m.mixed.end(), part.zone_begin[static_cast<size_t>(t)]) - m.mixed.begin());
+  // Corners of each node, in active order, and the range each belongs to.
+  std::vector<int> first(static_cast<size_t>(m.node_count) + 1, 0);
+  for (int k = 0; k < zones; ++k)
+    for (int node : m.geometry[static_cast<size_t>(m.active[static_cast<size_t>(k)])].node)
+      ++first[static_cast<size_t>(node) + 1];
+  for (size_t n = 0; n < static_cast<size_t>(m.node_count); ++n) first[n + 1] += first[n];
+  std::vector<int> corners(static_cast<size_t>(first.back()));
+  std::vector<int> fill(first.begin(), first.end() - 1);
+  for (int k = 0; k < zones; ++k) {
+    const auto& node = m.geometry[static_cast<size_t>(m.active[static_cast<size_t>(k)])].node;
+    for (int i = 0; i < 3; ++i)
+      corners[static_cast<size_t>(fill[static_cast<size_t>(node[static_cast<size_t>(i)])]++)] = 3 * k + i;
+  }
+  std::vector<int> range_of(static_cast<size_t>(zones));
+  for (int t = 0; t < threads; ++t)
+    for (int k = part.zone_begin[static_cast<size_t>(t)]; k < part.zone_begin[static_cast<size_t>(t) + 1]; ++k)
+      range_of[static_cast<size_t>(k)] = t;
+  part.dest.resize(static_cast<size_t>(zones));
+  part.gather_first.assign(static_cast<size_t>(m.node_count) + 1, 0);
+  int slot = m.node_count;
+  for (int n = 0; n < m.node_count; ++n) {
+    const int begin = first[static_cast<size_t>(n)], end = first[static_cast<size_t>(n) + 1];
+    bool shared = false;
+    for (int c = begin; c < end; ++c)
+      shared |= range_of[static_cast<size_t>(corners[static_cast<size_t>(c)] / 3)] !=
+                range_of[static_cast<size_t>(corners[static_cast<size_t>(begin)] / 3)];
+    for (int c = begin; c < end; ++c) {
+      const int corner = corners[static_cast<size_t>(c)];
+      int& dest = part.dest[static_cast<size_t>(corner / 3)][static_cast<size_t>(corner % 3)];
+      if (!shared) {
+        dest = n;
+      } else {
+        dest = slot++;
+        part.gather.push_back(dest);
+      }
+    }
+    part.gather_first[static_cast<size_t>(n) + 1] = static_cast<int>(part.gather.size());
+  }
+  part.accumulators = slot;
+  return part;
+}
+
+}  // namespace
+
+int thread_count(const Mechanics& m) {
+  return m.threads > 0 ? m.threads : std::max(1, omp_get_max_threads());
+}
+
+void reset_for_mesh(Mechanics& m, const Mesh& mesh) {
+  const size_t zones = static_cast<size_t>(mesh.zone_count());
+  m.zone_material.assign(zones, -1);
+  m.stress.assign(zones, Stress{});
+  m.zone_state.assign(zones, 0);
+  m.gp_node = merge_glued(mesh, m.node_count);
+  const size_t dofs = 2 * static_cast<size_t>(m.node_count);
+  m.position.assign(dofs, 0.0);
+  m.node_block.assign(static_cast<size_t>(m.node_count), -1);
+  for (size_t gp = 0; gp < m.gp_node.size(); ++gp) {
+    const size_t n = static_cast<size_t>(m.gp_node[gp]);
+    m.position[2 * n] = mesh.gp_position[gp].x;
+    m.position[2 * n + 1] = mesh.gp_position[gp].y;
+    if (m.node_block[n] < 0) m.node_block[n] = mesh.gp_block[gp];
+  }
+  m.u.assign(dofs, 0.0);
+  m.v.assign(dofs, 0.0);
+  m.force.assign(dofs, 0.0);
+  m.load.assign(dofs, 0.0);
+  m.fix.assign(static_cast<size_t>(m.node_count), 0);
+  m.boundary.clear();
+  for (const auto& loops : mesh.block_boundary)
+    for (const BoundaryLoop& loop : loops)
+      for (size_t i = 0; i < loop.gridpoints.size(); ++i)
+        if (loop.edges[i].kind == EdgeKind::boundary)
+          m.boundary.push_back({m.gp_node[static_cast<size_t>(loop.gridpoints[i])],
+                                m.gp_node[static_cast<size_t>(loop.gridpoints[(i + 1) % loop.gridpoints.size()])],
+                                false, {}, {}});
+  m.geometry.resize(zones);
+  for (size_t z = 0; z < zones; ++z) m.geometry[z] = zone_geometry(m, mesh, static_cast<int>(z));
+  m.insitu.clear();
+  m.dirty = true;
+}
+
+void prepare(Mechanics& m, const Mesh& mesh) {
+  const int threads = thread_count(m);
+  if (!m.dirty && m.partition.threads == threads) return;
+  if (mesh.zone_count() == 0) fail("the model has no zones: zone{{...}} the blocks first");
+
+  m.active.clear();
+  m.mixed.clear();
+  for (int z = 0; z < mesh.zone_count(); ++z) {
+    const int material = m.zone_material[static_cast<size_t>(z)];
+    if (material < 0) {
+      const Vec2 c = mesh.zone_centroid(z);
+      fail("zone {} at ({:.6g}, {:.6g}) has no material: assign{{ material = ... }} first", z + 1,
+           c.x, c.y);
+    }
+    const MaterialModel model = m.params[static_cast<size_t>(material)].model;
+    if (model == MaterialModel::null) continue;
+    if (model == MaterialModel::mohr) m.mixed.push_back(static_cast<int>(m.active.size()));
+    m.active.push_back(z);
+  }
+
+  const size_t nodes = static_cast<size_t>(m.node_count);
+  std::vector<double> rows(2 * nodes, 0.0), real_mass(nodes, 0.0), area(nodes, 0.0);
+  m.weight.assign(2 * nodes, 0.0);
+  for (const int z : m.active) {
+    const ZoneGeometry& g = m.geometry[static_cast<size_t>(z)];
+    const MaterialParams& p = m.params[static_cast<size_t>(m.zone_material[static_cast<size_t>(z)])];
+    add_row_sums(g, p, m.fix, rows);
+    for (const int node : g.node) {
+      const size_t n = static_cast<size_t>(node);
+      real_mass[n] += p.density * g.area / 3.0;
+      if (p.model == MaterialModel::mohr) area[n] += g.area;
+      m.weight[2 * n] += p.density * g.area / 3.0 * m.gravity.x;
+      m.weight[2 * n + 1] += p.density * g.area / 3.0 * m.gravity.y;
+    }
+  }
+  m.stiffness.assign(nodes, 0.0);
+  m.inv_area.assign(nodes, 0.0);
+  double critical = INFINITY;
+  for (size_t n = 0; n < nodes; ++n) {
+    m.stiffness[n] = std::max(rows[2 * n], rows[2 * n + 1]);
+    m.inv_area[n] = area[n] > 0.0 ? 1.0 / area[n] : 0.0;
+    if (m.stiffness[n] > 0.0 && real_mass[n] > 0.0)
+      critical = std::min(critical, 2.0 * std::sqrt(real_mass[n] / m.stiffness[n]));
+  }
+  m.critical_step = std::isfinite(critical) ? critical : 0.0;
+
+  const double fraction = m.settings.step_fraction;
+  m.mass.assign(nodes, 0.0);
+  if (m.settings.mode == SolverMode::dynamic) {
+    for (const int z : m.active) {
+      const auto& p = m.params[static_cast<size_t>(m.zone_material[static_cast<size_t>(z)])];
+      if (!(p.density > 0.0))
+        fail("dynamic mode needs a density > 0 in every material; material '{}' has {}",
+             m.materials[static_cast<size_t>(m.zone_material[static_cast<size_t>(z)])].name,
+             p.density);
+    }
+    m.mass = real_mass;
+    m.step = m.settings.step > 0.0 ? m.settings.step : fraction * m.critical_step;
+  } else {
+    // Density scaling: with a step of 1, masses that make every node's own bound equal.
+    m.step = 1.0;
+    for (size_t n = 0; n < nodes; ++n)
+      m.mass[n] = m.stiffness[n] / (4.0 * fraction * fraction);
+  }
+
+  m.applied_magnitude = 0.0;
+  for (size_t n = 0; n < nodes; ++n)
+    m.applied_magnitude += std::hypot(m.weight[2 * n], m.weight[2 * n + 1]) +
+                           std::hypot(m.load[2 * n], m.load[2 * n + 1]);
+
+  m.partition = make_partition(m, threads);
+  m.acc_force.assign(2 * static_cast<size_t>(m.partition.accumulators), 0.0);
+  m.acc_volume.assign(static_cast<size_t>(m.partition.accumulators), 0.0);
+  m.node_volume.assign(nodes, 0.0);
+  m.info.step = m.step;
+  m.dirty = false;
+}
+
+}  // namespace edem

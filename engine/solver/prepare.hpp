@@ -1,0 +1,22 @@
+// Building the solver's arrays from the mesh and the mechanical inputs.
+#pragma once
+
+#include "geom/mesh.hpp"
+#include "solver/mechanics.hpp"
+
+namespace edem {
+
+// Fresh mechanics state for a new mesh: nodes (gridpoints merged across glued edges), zone
+// state arrays, outer boundary segments. Materials, gravity and settings are kept from `old`.
+void reset_for_mesh(Mechanics& m, const Mesh& mesh);
+
+// Recomputes the derived arrays (active zones, masses, time step, loads, partition) if
+// m.dirty. Throws edem::Error when the model cannot be cycled (no zones, a zone without
+// material, dynamic mode with zero density, a forced step at or above the critical step is
+// allowed but noted by the watchdog).
+void prepare(Mechanics& m, const Mesh& mesh);
+
+// The number of threads cycling will use.
+int thread_count(const Mechanics& m);
+
+}  // namespace edem

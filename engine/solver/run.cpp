@@ -1,0 +1,178 @@
+// Cycling commands: batches of cycles between measurements, the watchdog, the adaptive
+// damping, callbacks and histories.
+#include "solver/run.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/error.hpp"
+#include "solver/cycle.hpp"
+#include "solver/prepare.hpp"
+
+namespace edem {
+namespace {
+
+// The ratio and the watchdog look at the state every this many cycles (and at the end of
+// every batch cut short by a callback or history).
+constexpr int kMeasureInterval = 10;
+// Kinetic energy growing faster than this per cycle for kGrowthChecks checks in a row is an
+// instability (a stable run from rest grows as t^2, far slower).
+constexpr double kGrowthPerCycle = 1.585;  // 100x over 10 cycles
+constexpr int kGrowthChecks = 3;
+
+// Clears Mechanics::cycling_now however cycling ends.
+struct CyclingFlag {
+  explicit CyclingFlag(bool& flag) : flag_(flag) { flag_ = true; }
+  ~CyclingFlag() { flag_ = false; }
+  CyclingFlag(const CyclingFlag&) = delete;
+  CyclingFlag& operator=(const CyclingFlag&) = delete;
+  bool& flag_;
+};
+
+Vec2 node_position(const Mechanics& m, int node) {
+  return {m.position[2 * static_cast<size_t>(node)], m.position[2 * static_cast<size_t>(node) + 1]};
+}
+
+std::string likely_cause(const Mechanics& m) {
+  if (m.settings.mode == SolverMode::dynamic && m.settings.step > 0.0 &&
+      m.settings.step >= m.critical_step)
+    return fmt::format(
+        "likely cause: the forced time step {:.6g} s is above the critical step {:.6g} s of the "
+        "stiffest gridpoint; leave set{{ step }} out to get the automatic step",
+        m.settings.step, m.critical_step);
+  return "likely cause: the time step is too large for the stiffest part of the model, or a "
+         "material with an unphysical stiffness; check the materials and set{ step }";
+}
+
+// Stops the run with a message if the measured state is unstable.
+void watch(Mechanics& m, const Mesh& mesh, const Measure& measure, int batch) {
+  const long cycle = m.info.cycle;
+  auto where = [&](int node) {
+    if (node < 0) return std::string();
+    const Vec2 p = node_position(m, node);
+    return fmt::format(" near ({:.6g}, {:.6g}) in block {}", p.x, p.y,
+                       m.node_block[static_cast<size_t>(node)] + 1);
+  };
+  const double per_cycle = m.last_kinetic > 0.0
+                               ? std::pow(measure.kinetic / m.last_kinetic, 1.0 / batch)
+                               : 0.0;
+  m.growth_checks = per_cycle > kGrowthPerCycle ? m.growth_checks + 1 : 0;
+  m.last_kinetic = measure.kinetic;
+  std::string inverted;
+  if (measure.inverted_zone >= 0) {
+    const Vec2 c = mesh.zone_centroid(measure.inverted_zone);
+    inverted = fmt::format("zone {} at ({:.6g}, {:.6g}) in block {} turned inside out (its "
+                           "deformed area is not positive)",
+                           measure.inverted_zone + 1, c.x, c.y,
+                           mesh.zone_block[static_cast<size_t>(measure.inverted_zone)] + 1);
+  }
+  if (!measure.finite)
+    fail("cycle {}: the run went unstable: forces or velocities are no longer finite{}; {}", cycle,
+         where(measure.fastest_node), likely_cause(m));
+  // Fast growth of the kinetic energy is the signature of a step above the stability limit;
+  // an inverted zone while it grows is the same instability seen sooner.
+  if (m.growth_checks >= kGrowthChecks || (m.growth_checks >= 1 && !inverted.empty()))
+    fail("cycle {}: the run went unstable: kinetic energy grows without bound ({:.3g}x per "
+         "cycle), fastest{}{}; {}",
+         cycle, per_cycle, where(measure.fastest_node), inverted.empty() ? "" : "; " + inverted,
+         likely_cause(m));
+  if (!inverted.empty())
+    fail("cycle {}: {}; likely cause: displacements larger than the zones, from an unsupported "
+         "or too soft region or a load the material cannot carry; check boundary conditions "
+         "and materials",
+         cycle, inverted);
+}
+
+void adapt_damping(Mechanics& m, const Measure& measure) {
+  if (!(measure.rayleigh_den > 0.0 && measure.rayleigh_num > 0.0)) return;
+  const double omega2 = measure.rayleigh_num / measure.rayleigh_den;
+  if (!std::isfinite(omega2)) return;
+  m.adaptive.c = std::min(2.0 * std::sqrt(omega2), 2.0 / m.step);
+}
+
+long next_due(const Mechanics& m, long cycle) {
+  long due = cycle + kMeasureInterval - cycle % kMeasureInterval;
+  for (const Callback& c : m.callbacks) due = std::min(due, (cycle / c.every + 1) * c.every);
+  for (const History& h : m.histories) due = std::min(due, (cycle / h.every + 1) * h.every);
+  return due;
+}
+
+void run_due(Mechanics& m, long cycle) {
+  for (History& h : m.histories)
+    if (cycle % h.every == 0) {
+      const double value = h.sample();
+      h.cycles.push_back(cycle);
+      h.values.push_back(value);
+    }
+  // Callbacks may add or cancel callbacks: walk the handles present now.
+  std::vector<std::pair<int, long>> due;
+  for (const Callback& c : m.callbacks)
+    if (cycle % c.every == 0) due.push_back({c.handle, c.every});
+  for (const auto& [handle, every] : due) {
+    const auto it = std::find_if(m.callbacks.begin(), m.callbacks.end(),
+                                 [&](const Callback& c) { return c.handle == handle; });
+    if (it == m.callbacks.end()) continue;
+    const auto fn = it->fn;  // a copy: the callback may cancel itself
+    fn(cycle);
+  }
+}
+
+void start_adaptive(Mechanics& m) {
+  m.adaptive.u_start = m.u;
+  m.adaptive.r_start.assign(m.u.size(), 0.0);
+  m.adaptive.have_r_start = false;
+  m.adaptive.c = 0.0;
+  m.last_kinetic = 0.0;
+  m.growth_checks = 0;
+}
+
+}  // namespace
+
+SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double target_ratio) {
+  if (m.cycling_now) fail("cannot cycle from inside a callback or history while cycling");
+  if (m.dirty) {
+    prepare(m, mesh);
+    start_adaptive(m);
+  } else {
+    prepare(m, mesh);  // the thread count may have changed
+  }
+  CyclingFlag flag(m.cycling_now);
+  SolveResult result;
+  if (target_ratio > 0.0) {
+    const Measure now = measure_state(m);
+    m.info.ratio = now.applied > 0.0 ? now.unbalanced / now.applied : 0.0;
+    if (m.info.ratio <= target_ratio) {
+      result.ratio = m.info.ratio;
+      result.converged = true;
+      return result;
+    }
+  }
+  while (result.cycles < max_cycles) {
+    if (m.dirty) {  // a callback changed the model
+      prepare(m, mesh);
+      start_adaptive(m);
+    }
+    const long cycle = m.info.cycle;
+    const long batch = std::min(max_cycles - result.cycles, next_due(m, cycle) - cycle);
+    const Measure measure = run_cycles(m, static_cast<int>(batch));
+    result.cycles += batch;
+    m.cycles_run += batch;
+    m.info.cycle += batch;
+    m.info.time += static_cast<double>(batch) * m.step;
+    m.info.kinetic = measure.kinetic;
+    m.info.ratio = measure.applied > 0.0 ? measure.unbalanced / measure.applied : 0.0;
+    watch(m, mesh, measure, static_cast<int>(batch));
+    if (m.settings.damping == Damping::adaptive) adapt_damping(m, measure);
+    run_due(m, m.info.cycle);
+    if (target_ratio > 0.0 && m.info.ratio <= target_ratio) {
+      result.converged = true;
+      break;
+    }
+  }
+  result.ratio = m.info.ratio;
+  return result;
+}
+
+}  // namespace edem
