@@ -3,17 +3,20 @@
 
 #include "commands.hpp"
 #include "context.hpp"
+#include "core/error.hpp"
 
 namespace edem {
 namespace {
 
 int run_model(lua_State*, Context& context, const Args& args) {
+  if (const Running* cycling = context.cycling())
+    fail("cannot start a new model inside a callback while {}() at {} cycles the current one",
+         cycling->command, cycling->cycling_at);
   ModelDef def;
   def.title = args.string("title");
   def.tolerance = args.number("tolerance");
   // Built before the old one is dropped, so a failure keeps the current model.
-  auto next = std::make_unique<Model>(def);
-  context.current = std::move(next);
+  context.replace_model(std::make_unique<Model>(def));
   return 0;
 }
 

@@ -1,4 +1,5 @@
-// Reading the model from a script: info() and the iterators blocks() and zones().
+// Reading the model from a script: info(), gp_near(), zone_at() and the iterators blocks(),
+// zones() and gridpoints().
 //
 // Iterators hold only a position and look the model up at each step, so a script that changes
 // the model inside the loop sees the new model, never a dangling reference. Ids are 1-based.
@@ -19,7 +20,8 @@ namespace {
 int run_info(lua_State* L, Context& context, const Args&) {
   Model& model = context.model();
   const ModelInfo info = model.info();
-  lua_createtable(L, 0, 8);
+  const SolverInfo solver = model.solver_info();
+  lua_createtable(L, 0, 12);
   set_field(L, "blocks", info.blocks);
   set_field(L, "zones", info.zones);
   set_field(L, "gridpoints", info.gridpoints);
@@ -28,6 +30,10 @@ int run_info(lua_State* L, Context& context, const Args&) {
   set_field(L, "regions", info.regions);
   set_field(L, "joint_sets", info.joint_sets);
   set_field(L, "title", model.title());
+  set_field(L, "cycle", static_cast<long long>(solver.cycle));
+  set_field(L, "time", solver.time);
+  set_field(L, "step", solver.step);
+  set_field(L, "ratio", solver.ratio);
   return 1;
 }
 
@@ -118,6 +124,36 @@ void push_zone(lua_State* L, const Model& model, size_t index) {
   lua_setfield(L, -2, "vertices");
   set_field(L, "block", block + 1);
   set_region(L, model, model.blocks().blocks[static_cast<size_t>(block)].regions);
+  const ZoneView view = model.zone_view(zone);
+  set_field(L, "sxx", view.sxx);
+  set_field(L, "syy", view.syy);
+  set_field(L, "sxy", view.sxy);
+  set_field(L, "szz", view.szz);
+  set_field(L, "s1", view.s1);
+  set_field(L, "s3", view.s3);
+  set_field(L, "state", zone_state_name(view.state));
+  if (!view.material.empty()) set_field(L, "material", view.material);
+}
+
+void push_gridpoint(lua_State* L, const Model& model, size_t index) {
+  const GridpointView gp = model.gridpoint(static_cast<int>(index));
+  lua_createtable(L, 0, 14);
+  set_field(L, "id", static_cast<long long>(index + 1));
+  push_point(L, gp.position);
+  lua_setfield(L, -2, "position");
+  set_field(L, "x", gp.position.x);
+  set_field(L, "y", gp.position.y);
+  set_field(L, "ux", gp.u.x);
+  set_field(L, "uy", gp.u.y);
+  set_field(L, "vx", gp.v.x);
+  set_field(L, "vy", gp.v.y);
+  set_field(L, "fx", gp.f.x);
+  set_field(L, "fy", gp.f.y);
+  lua_pushboolean(L, gp.fixed_x);
+  lua_setfield(L, -2, "fixed_x");
+  lua_pushboolean(L, gp.fixed_y);
+  lua_setfield(L, -2, "fixed_y");
+  set_field(L, "block", model.mesh().gp_block[index] + 1);
 }
 
 // One step of an iterator: upvalue 1 is the 0-based position of the next item.
@@ -144,6 +180,39 @@ int next_zone(lua_State* L) {
       L, "zones", [](const Model& m) { return m.mesh().zone_gp.size(); }, push_zone);
 }
 
+int next_gridpoint(lua_State* L) {
+  return step(
+      L, "gridpoints", [](const Model& m) { return m.mesh().gp_position.size(); }, push_gridpoint);
+}
+
+int run_gp_near(lua_State* L, Context& context, const Args& args) {
+  const Model& model = context.model();
+  const int gp = model.gridpoint_near({args.number("x"), args.number("y")});
+  if (gp < 0) {
+    lua_pushnil(L);
+    return 1;
+  }
+  push_gridpoint(L, model, static_cast<size_t>(gp));
+  return 1;
+}
+
+int run_zone_at(lua_State* L, Context& context, const Args& args) {
+  const Model& model = context.model();
+  const int zone = model.zone_at({args.number("x"), args.number("y")});
+  if (zone < 0) {
+    lua_pushnil(L);
+    return 1;
+  }
+  push_zone(L, model, static_cast<size_t>(zone));
+  return 1;
+}
+
+int run_gridpoints(lua_State* L, Context&, const Args&) {
+  lua_pushinteger(L, 0);
+  lua_pushcclosure(L, next_gridpoint, 1);
+  return 1;
+}
+
 int run_blocks(lua_State* L, Context&, const Args&) {
   lua_pushinteger(L, 0);
   lua_pushcclosure(L, next_block, 1);
@@ -161,12 +230,13 @@ int run_zones(lua_State* L, Context&, const Args&) {
 const Command& info_command() {
   static const Command command{
       .name = "info",
-      .help = "Counts of the current model.",
+      .help = "Counts and solver state of the current model.",
       .form = Form::call,
       .run = run_info,
       .returns =
           "a table: blocks, zones, gridpoints, joint_edges, dropped_cuts, regions, "
-          "joint_sets, title",
+          "joint_sets, title, cycle (cycles run so far), time (model time [s]; static mode: "
+          "the cycle count), step (time step [s]), ratio (last unbalanced-force ratio)",
       .usage = "print(info().blocks)",
   };
   return command;
@@ -197,8 +267,61 @@ const Command& zones_command() {
       .returns =
           "an iterator; each zone is a table: id, area, centroid {x =, y =}, x, y, "
           "vertices (three points, counter-clockwise), gridpoints (their ids), block "
-          "(its block's id), region (innermost region's name or nil)",
+          "(its block's id), region (innermost region's name or nil), sxx, syy, sxy, szz "
+          "(stresses [Pa], compression negative), s1, s3 (in-plane principal stresses, s1 <= "
+          "s3), state (\"elastic\", \"shear\", \"tension\", ... with \"-past\" for failure "
+          "in the past), material (name, nil when none is assigned)",
       .usage = "for z in zones() do total = total + z.area end",
+  };
+  return command;
+}
+
+const Command& gridpoints_command() {
+  static const Command command{
+      .name = "gridpoints",
+      .help = "Iterates over the gridpoints (zone corners; distinct on the two sides of a joint).",
+      .form = Form::call,
+      .run = run_gridpoints,
+      .returns =
+          "an iterator; each gridpoint is a table: id, position {x =, y =}, x, y (where it was "
+          "made [m]), ux, uy (displacement [m]), vx, vy (velocity [m/s]), fx, fy (unbalanced "
+          "force of the last cycle [N/m]), fixed_x, fixed_y (true when held), block (its "
+          "block's id)",
+      .usage = "for gp in gridpoints() do umax = math.max(umax, math.abs(gp.uy)) end",
+  };
+  return command;
+}
+
+const Command& gp_near_command() {
+  static const Command command{
+      .name = "gp_near",
+      .help = "The gridpoint nearest to a point.",
+      .form = Form::call,
+      .positional =
+          {
+              {"x", Type::number, "m", any_value, kRequired, "x of the point"},
+              {"y", Type::number, "m", any_value, kRequired, "y of the point"},
+          },
+      .run = run_gp_near,
+      .returns = "a gridpoint table as `gridpoints()` gives, or nil when the model has no zones",
+      .usage = "local roof = gp_near(0, 24)",
+  };
+  return command;
+}
+
+const Command& zone_at_command() {
+  static const Command command{
+      .name = "zone_at",
+      .help = "The zone containing a point.",
+      .form = Form::call,
+      .positional =
+          {
+              {"x", Type::number, "m", any_value, kRequired, "x of the point"},
+              {"y", Type::number, "m", any_value, kRequired, "y of the point"},
+          },
+      .run = run_zone_at,
+      .returns = "a zone table as `zones()` gives, or nil when no zone contains the point",
+      .usage = "local z = zone_at(0, -30)",
   };
   return command;
 }

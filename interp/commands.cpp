@@ -12,16 +12,32 @@ namespace edem {
 
 const std::vector<const Command*>& commands() {
   static const std::vector<const Command*> table = {
-      &model_command(),   // cmd_model.cpp
-      &block_command(),   // cmd_geometry.cpp
-      &jset_command(),    //
-      &crack_command(),   //
-      &region_command(),  //
-      &zone_command(),    //
-      &info_command(),    // cmd_query.cpp
-      &blocks_command(),  //
-      &zones_command(),   //
-      &plot_command(),    // cmd_plot.cpp
+      &model_command(),          // cmd_model.cpp
+      &block_command(),          // cmd_geometry.cpp
+      &jset_command(),           //
+      &crack_command(),          //
+      &region_command(),         //
+      &zone_command(),           //
+      &material_command(),       // cmd_material.cpp
+      &assign_command(),         //
+      &gravity_command(),        // cmd_loads.cpp
+      &insitu_command(),         //
+      &boundary_command(),       //
+      &set_command(),            // cmd_solve.cpp
+      &cycle_command(),          //
+      &solve_command(),          //
+      &reset_command(),          //
+      &every_command(),          //
+      &cancel_command(),         //
+      &history_command(),        // cmd_history.cpp
+      &history_write_command(),  //
+      &info_command(),           // cmd_query.cpp
+      &blocks_command(),         //
+      &zones_command(),          //
+      &gridpoints_command(),     //
+      &gp_near_command(),        //
+      &zone_at_command(),        //
+      &plot_command(),           // cmd_plot.cpp
   };
   return table;
 }
@@ -34,9 +50,27 @@ const Command* find_command(std::string_view name) {
 
 namespace {
 
+// Marks a command as running for as long as it does (Context::running), also when it fails.
+class RunningScope {
+ public:
+  RunningScope(Context& context, Running& running) : context_(context), outer_(context.running) {
+    running.outer = outer_;
+    context.running = &running;
+  }
+  ~RunningScope() { context_.running = outer_; }
+  RunningScope(const RunningScope&) = delete;
+  RunningScope& operator=(const RunningScope&) = delete;
+
+ private:
+  Context& context_;
+  Running* outer_;
+};
+
 // Every command's Lua function: upvalue 1 is its Command, upvalue 2 its table of defaults.
 int dispatch(lua_State* L) {
   const auto& command = *static_cast<const Command*>(lua_touserdata(L, lua_upvalueindex(1)));
+  Running running{.L = L, .command = command.name, .cycling_at = {}, .outer = nullptr};
+  const RunningScope scope(context_of(L), running);
   return guarded(L, command.name, [&] {
     const Args args = read_args(L, command, lua_upvalueindex(2));
     return command.run(L, context_of(L), args);

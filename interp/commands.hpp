@@ -21,9 +21,25 @@ const Command& jset_command();
 const Command& crack_command();
 const Command& region_command();
 const Command& zone_command();
+const Command& material_command();
+const Command& assign_command();
+const Command& gravity_command();
+const Command& insitu_command();
+const Command& boundary_command();
+const Command& set_command();
+const Command& cycle_command();
+const Command& solve_command();
+const Command& reset_command();
+const Command& every_command();
+const Command& cancel_command();
+const Command& history_command();
+const Command& history_write_command();
 const Command& info_command();
 const Command& blocks_command();
 const Command& zones_command();
+const Command& gridpoints_command();
+const Command& gp_near_command();
+const Command& zone_at_command();
 const Command& plot_command();
 
 // Every command of the language, in reference order.

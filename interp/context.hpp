@@ -2,10 +2,16 @@
 //
 // One Context per lua_State, owned by the Interpreter and reached from Lua C functions through
 // the state's extra space (context_of), so the language keeps no global mutable state.
+//
+// Lua functions that the model keeps (every() callbacks, history fns) are called back from
+// inside engine calls; `running` says on which Lua thread, and for which command, so that
+// they run on the thread that is executing (never a suspended one) and their errors name it.
 #pragma once
 
 #include <memory>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "model/model.hpp"
 
@@ -13,15 +19,44 @@ struct lua_State;
 
 namespace edem {
 
+// A command executing now: set by the command dispatcher for the duration of one call.
+struct Running {
+  lua_State* L = nullptr;          // the thread that called it
+  std::string_view command;        // its name
+  std::string cycling_at;          // "FILE:LINE" of a cycle() or solve() call, else empty
+  const Running* outer = nullptr;  // the command it runs inside (from a callback), if any
+};
+
 struct Context {
   std::unique_ptr<Model> current;  // null until the first command needs a model
   bool quiet = false;              // --quiet: commands print no progress
+  int threads = 0;                 // --threads: OpenMP threads of every model; 0: default
   std::string last_command_error;  // the last "FILE:LINE: command: message" raised
+  // Traceback lines ("  FILE:LINE: in ...") of a callback that failed, shown above those of
+  // the command that was cycling when last_command_error is reported.
+  std::vector<std::string> last_error_frames;
+  lua_State* lua = nullptr;        // the main thread while the state is open, else null
+  Running* running = nullptr;      // the innermost command executing now
+  bool histories_written = false;  // history_write() wrote the current model's histories
 
   // The current model; a script that starts without model{} gets a default one.
   Model& model() {
-    if (!current) current = std::make_unique<Model>();
+    if (!current) replace_model(std::make_unique<Model>());
     return *current;
+  }
+
+  // Makes `next` the current model (with the run's thread count), dropping the old one.
+  void replace_model(std::unique_ptr<Model> next) {
+    next->set_threads(threads);
+    current = std::move(next);
+    histories_written = false;
+  }
+
+  // The command cycling the model now (cycle() or solve()), or nullptr.
+  const Running* cycling() const {
+    for (const Running* r = running; r != nullptr; r = r->outer)
+      if (!r->cycling_at.empty()) return r;
+    return nullptr;
   }
 };
 

@@ -1,11 +1,15 @@
 // The Lua state that runs EDEM scripts: standard Lua plus the commands, the stdlib on
-// package.path, and errors reported as "FILE:LINE: word: message".
+// package.path, and errors reported as "FILE:LINE: word: message" (errors.hpp).
 //
 // The first line of every error names the script line and one lowercase word: the command
 // that failed (`jset: spacing must be > 0, got -2`), or `syntax`, `lua` (a Lua runtime
 // error), `error` (the script's own error() or assert()); an unknown global function becomes
 // `blok: unknown command (did you mean 'block'?)`. A short traceback follows when the error
 // happened inside a function.
+//
+// When a script file ends without error and its model recorded histories that no
+// history_write() wrote, they go to "<script name without .lua>_history.csv" in the working
+// directory.
 #pragma once
 
 #include <memory>
@@ -22,6 +26,7 @@ namespace edem {
 
 struct InterpreterOptions {
   bool quiet = false;                    // commands print no progress
+  int threads = 0;                       // OpenMP threads of every model; 0: OpenMP's default
   std::vector<std::string> stdlib_dirs;  // searched first for require "edem.x"
 };
 
@@ -45,6 +50,7 @@ class Interpreter {
 
  private:
   std::optional<std::string> run_loaded(int status, const std::string& path, int nargs);
+  std::optional<std::string> write_pending_histories(const std::string& path);
 
   std::string stdlib_path_;  // package.path entries of the stdlib, searched first
   std::string lua_path_;     // Lua's own package.path, searched last

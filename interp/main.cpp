@@ -1,6 +1,7 @@
 // The edem program: runs a script, prints the language reference, or says its version.
 //
-//   edem run FILE.lua [ARGS...]     (or: edem FILE.lua [ARGS...])
+//   edem [-q] [--threads N] run FILE.lua [ARGS...]     (or: edem FILE.lua [ARGS...];
+//                                                     the options may follow `run` too)
 //   edem reference [--update README.md]
 //   edem --version | --help
 //
@@ -25,6 +26,7 @@ struct Options {
   std::string script;
   std::vector<std::string> script_args;
   bool quiet = false;
+  int threads = 0;  // 0: OpenMP's default
   bool reference = false;
   std::string update;  // README to rewrite with the reference
 };
@@ -40,7 +42,9 @@ std::vector<std::string> stdlib_near_executable() {
 }
 
 int run_script(const Options& options) {
-  edem::Interpreter interpreter({options.quiet, stdlib_near_executable()});
+  edem::Interpreter interpreter({.quiet = options.quiet,
+                                 .threads = options.threads,
+                                 .stdlib_dirs = stdlib_near_executable()});
   const auto error = interpreter.run_file(options.script, options.script_args);
   if (!error) return 0;
   std::fflush(stdout);  // what the script printed comes before the error
@@ -75,6 +79,9 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "edem " EDEM_VERSION);
   app.fallthrough();
   app.add_flag("-q,--quiet", options.quiet, "print no progress while running");
+  app.add_option("--threads", options.threads,
+                 "threads for cycling the model (default: OpenMP's, e.g. OMP_NUM_THREADS)")
+      ->check(CLI::Range(1, 4096));
   app.add_flag("--reference", options.reference,
                "print the language reference (markdown) and exit");
   app.add_option("script", options.script, "Lua script to run (same as 'edem run SCRIPT')");

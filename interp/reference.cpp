@@ -48,8 +48,11 @@ std::string allowed_of(const Key& key) {
 }
 
 std::string row(std::string_view what, const Key& key) {
-  return fmt::format("| {} | {} | {} | {} | {} | {} |\n", what, type_name(key.type), key.unit,
-                     allowed_of(key), default_of(key), key.help);
+  // Items that take the rest of a table are each one string (a polygon's are its corners).
+  const std::string_view type =
+      key.rest && key.type == Type::strings ? type_name(Type::string) : type_name(key.type);
+  return fmt::format("| {} | {} | {} | {} | {} | {} |\n", what, type, key.unit, allowed_of(key),
+                     default_of(key), key.help);
 }
 
 // "`call`" or "`one` or `other`": the command's example calls, one a line in its usage.

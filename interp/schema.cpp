@@ -1,7 +1,9 @@
 // Reading a call against its command's schema: types, ranges, unknown keys, defaults.
 //
-// Every reader leaves the Lua stack as it found it and reads raw (no metamethods run), so a
-// failed check has no effect anywhere. Messages name the key as the user wrote it
+// Every reader reads raw (no metamethods run) and leaves the Lua stack as it found it, but for
+// a function given inside the call's table: it stays pushed, above the call's arguments, so
+// that its FunctionArg index is valid while the command runs. A failed check has no effect
+// anywhere. Messages name the key as the user wrote it
 // ("spacing[2] must be > 0, got 0").
 #include "schema.hpp"
 
@@ -61,6 +63,9 @@ TypeText type_text(Type type) {
               "`\"blocks\"` or `{\"blocks\", \"zones\"}`"};
     case Type::function:
       return {"function", "a function", "`function(x) ... end`"};
+    case Type::numbers_or_name:
+      return {"numbers or name", "a list of numbers or a name",
+              "`{0, -1e6, 0}` or one of the names listed, `\"insitu\"`"};
   }
   return {"?", "?", "?"};
 }
@@ -349,6 +354,10 @@ Value read_value(lua_State* L, int index, const Key& key, std::string_view path)
     case Type::function:
       if (!lua_isfunction(L, index)) wrong_type(L, index, path, key.type);
       return FunctionArg{lua_absindex(L, index)};
+    case Type::numbers_or_name:
+      if (lua_type(L, index) == LUA_TSTRING) return read_string(L, index, path, key.choices);
+      if (!lua_istable(L, index)) wrong_type(L, index, path, key.type);
+      return read_numbers(L, index, path, key.range);
   }
   throw std::logic_error("unhandled schema type");
 }
@@ -397,13 +406,23 @@ void read_table_items(lua_State* L, const Command& command, int table, Args& arg
   for (int i = 1; i <= std::min(length, declared); ++i) {
     const Key& key = command.positional[static_cast<size_t>(i - 1)];
     if (&key == rest) {
-      args.values[std::string(key.name)] = read_points(
-          L, table, i, length, key.name, [](int item) { return fmt::format("item #{}", item); });
+      const auto name_of = [](int item) { return fmt::format("item #{}", item); };
+      if (key.type == Type::polygon) {
+        args.values[std::string(key.name)] = read_points(L, table, i, length, key.name, name_of);
+      } else {
+        std::vector<std::string> items;
+        for (int item = i; item <= length; ++item)
+          items.push_back(read_item(L, table, item, [&](int top) {
+            return read_string(L, top, name_of(item), key.choices);
+          }));
+        args.values[std::string(key.name)] = std::move(items);
+      }
       return;
     }
-    args.values[std::string(key.name)] = read_item(L, table, i, [&](int top) {
-      return read_value(L, top, key, fmt::format("item #{} ({})", i, key.name));
-    });
+    lua_rawgeti(L, table, i);
+    args.values[std::string(key.name)] =
+        read_value(L, lua_gettop(L), key, fmt::format("item #{} ({})", i, key.name));
+    if (key.type != Type::function) lua_pop(L, 1);  // a function stays: see the top
   }
 }
 
@@ -431,6 +450,7 @@ void check_table_keys(lua_State* L, const Command& command, int table) {
 }
 
 void read_table(lua_State* L, const Command& command, Args& args) {
+  if (lua_gettop(L) == 0 && command.bare_call) lua_newtable(L);
   const int count = lua_gettop(L);
   if (count != 1 || !lua_istable(L, 1)) {
     if (count == 0) fail("expects a table, like {}", usage_of(command));
@@ -442,8 +462,9 @@ void read_table(lua_State* L, const Command& command, Args& args) {
   for (const Key& key : command.keys) {
     const std::string name(key.name);
     lua_pushstring(L, name.c_str());
-    if (lua_rawget(L, 1) != LUA_TNIL) args.values[name] = read_value(L, lua_gettop(L), key, name);
-    lua_pop(L, 1);
+    const bool given = lua_rawget(L, 1) != LUA_TNIL;
+    if (given) args.values[name] = read_value(L, lua_gettop(L), key, name);
+    if (!given || key.type != Type::function) lua_pop(L, 1);  // a function stays: see the top
   }
 }
 
@@ -487,8 +508,12 @@ void complete(lua_State* L, const Command& command, int defaults, Args& args) {
 std::string usage_of(const Command& command) {
   if (!command.usage.empty()) return std::string(command.usage.substr(0, command.usage.find('\n')));
   std::vector<std::string> parts;
-  for (const Key& key : command.positional)
-    parts.push_back(key.rest ? "{x, y}, {x, y}, ..." : std::string(key.name));
+  for (const Key& key : command.positional) {
+    if (!key.rest)
+      parts.emplace_back(key.name);
+    else
+      parts.emplace_back(key.type == Type::polygon ? "{x, y}, {x, y}, ..." : "...");
+  }
   bool optional = false;
   for (const Key& key : command.keys) {
     if (key.required())

@@ -28,25 +28,26 @@ struct Context;
 
 // What a key or positional item accepts.
 enum class Type {
-  number,    // a finite number
-  integer,   // a finite number with no fractional part
-  string,    // a string
-  boolean,   // true or false
-  point,     // {x, y} or {x = x, y = y}
-  pair,      // {a, b}: two numbers
-  int_pair,  // {a, b}: two integers
-  numbers,   // a number or a non-empty list of numbers
-  polygon,   // a list of at least three points, a simple polygon
-  region,    // a region's name or a polygon
-  regions,   // a region (name or polygon) or a list of them
-  strings,   // a string or a list of strings
-  function,  // a Lua function
+  number,           // a finite number
+  integer,          // a finite number with no fractional part
+  string,           // a string
+  boolean,          // true or false
+  point,            // {x, y} or {x = x, y = y}
+  pair,             // {a, b}: two numbers
+  int_pair,         // {a, b}: two integers
+  numbers,          // a number or a non-empty list of numbers
+  polygon,          // a list of at least three points, a simple polygon
+  region,           // a region's name or a polygon
+  regions,          // a region (name or polygon) or a list of them
+  strings,          // a string or a list of strings
+  function,         // a Lua function
+  numbers_or_name,  // a list of numbers, or one of the key's choices: {0, -1e6, 0} or "insitu"
 };
 
-inline constexpr Type kAllTypes[] = {Type::number,  Type::integer, Type::string,   Type::boolean,
-                                     Type::point,   Type::pair,    Type::int_pair, Type::numbers,
-                                     Type::polygon, Type::region,  Type::regions,  Type::strings,
-                                     Type::function};
+inline constexpr Type kAllTypes[] = {
+    Type::number,  Type::integer,  Type::string,   Type::boolean,        Type::point,
+    Type::pair,    Type::int_pair, Type::numbers,  Type::polygon,        Type::region,
+    Type::regions, Type::strings,  Type::function, Type::numbers_or_name};
 
 // A type's name in the reference ("point"), and how a script writes it ("`{x, y}` or ...").
 std::string_view type_name(Type type);
@@ -77,6 +78,12 @@ constexpr Range between(double lo, double hi) {
 constexpr Range above_upto(double lo, double hi) {
   return {lo, hi, true, false};
 }
+constexpr Range above_below(double lo, double hi) {
+  return {lo, hi, true, true};
+}
+constexpr Range from_below(double lo, double hi) {
+  return {lo, hi, false, true};
+}
 
 // A key's default, as a Lua literal ("0", "{0, 0}", "true"); or one of these markers.
 inline constexpr std::string_view kRequired = "!required";  // the key must be given
@@ -93,8 +100,10 @@ struct Key {
   std::string_view fallback;     // Lua literal, kRequired or kOptional
   std::string_view help;         // one line
   std::string_view absent = {};  // for kOptional: what leaving it out means ("edge")
-  Choices choices = nullptr;     // strings only
-  bool rest = false;  // positional polygon that takes every array item: f{ {x,y}, {x,y}, ... }
+  Choices choices = nullptr;     // strings and numbers_or_name only
+  // A last positional polygon or strings that takes every array item from its position on:
+  // block{ {x,y}, {x,y}, ... }, reset{ "velocity", "state" }.
+  bool rest = false;
 
   bool required() const { return fallback == kRequired; }
   bool has_default() const { return !required() && !fallback.empty(); }
@@ -115,9 +124,11 @@ struct Command {
   Runner run = nullptr;           // validates nothing: Args are already checked
   std::string_view returns = {};  // what it returns, if anything
   std::string_view usage = {};    // example calls, one a line; generated when empty
+  bool bare_call = false;         // table form: f() is accepted as f{}
 };
 
-// A Lua function argument: its absolute stack index while the command runs.
+// A Lua function argument: its absolute stack index while the command runs (a function given
+// in the call's table is left pushed on the stack for this).
 struct FunctionArg {
   int index = 0;
 };
@@ -140,6 +151,9 @@ struct Args {
 
   template <typename T>
   const T& get(std::string_view key) const;
+  // The value of `key` if it was given with type T, else nullptr (for keys of two types).
+  template <typename T>
+  const T* find(std::string_view key) const;
 };
 
 template <typename T>
@@ -150,6 +164,12 @@ const T& Args::get(std::string_view key) const {
     throw std::logic_error("the command reads key '" + std::string(key) +
                            "' that its schema does not give with that type");
   return *value;
+}
+
+template <typename T>
+const T* Args::find(std::string_view key) const {
+  const auto it = values.find(key);
+  return it == values.end() ? nullptr : std::get_if<T>(&it->second);
 }
 
 // Checks the arguments of a call (the whole Lua stack) against `command` and converts them.

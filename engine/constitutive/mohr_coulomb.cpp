@@ -8,17 +8,18 @@ namespace edem {
 
 Principal in_plane_principal(const Stress& s) {
   const double centre = 0.5 * (s.xx + s.yy);
-  const double radius = std::hypot(0.5 * (s.xx - s.yy), s.xy);
+  const double half = 0.5 * (s.xx - s.yy);
+  const double radius = std::sqrt(half * half + s.xy * s.xy);  // no hypot: it is slow
   return {centre - radius, centre + radius};
 }
 
 std::uint8_t mohr_coulomb_update(const MaterialParams& m, Stress& s, double dexx, double deyy,
-                                 double dgxy) {
-  elastic_update(m, s, dexx, deyy, dgxy);
+                                 double dgxy, double dezz) {
+  elastic_update(m, s, dexx, deyy, dgxy, dezz);
 
   // In-plane principal stresses a <= b and the direction of b (cos 2t, sin 2t).
   const double centre = 0.5 * (s.xx + s.yy), half = 0.5 * (s.xx - s.yy);
-  const double radius = std::hypot(half, s.xy);
+  const double radius = std::sqrt(half * half + s.xy * s.xy);  // hypot is several times slower
   const double a = centre - radius, b = centre + radius;
   const double cos2 = radius > 0.0 ? half / radius : 1.0;
   const double sin2 = radius > 0.0 ? s.xy / radius : 0.0;

@@ -1,6 +1,7 @@
 // Zone constitutive kernels: elastic and Mohr-Coulomb with tension cut-off, plane strain.
 //
-// Both take a strain increment (dexx, deyy, engineering dgxy; dezz = 0) and update the stress
+// Both take a strain increment (dexx, deyy, engineering dgxy, and dezz: zero in plane strain
+// except for the isotropic share the mixed discretisation gives a zone) and update the stress
 // in place. Mohr-Coulomb is the return mapping of FLAC/UDEC in principal stresses: an elastic
 // trial, then a correction onto the shear surface (non-associated flow with the dilation
 // angle) or the tension cut-off, the region chosen by the bisector h of the two surfaces.
@@ -18,16 +19,16 @@ struct Stress {
 };
 
 inline void elastic_update(const MaterialParams& m, Stress& s, double dexx, double deyy,
-                           double dgxy) {
-  s.xx += m.e1 * dexx + m.e2 * deyy;
-  s.yy += m.e2 * dexx + m.e1 * deyy;
-  s.zz += m.e2 * (dexx + deyy);
+                           double dgxy, double dezz = 0.0) {
+  s.xx += m.e1 * dexx + m.e2 * (deyy + dezz);
+  s.yy += m.e1 * deyy + m.e2 * (dexx + dezz);
+  s.zz += m.e1 * dezz + m.e2 * (dexx + deyy);
   s.xy += m.shear * dgxy;
 }
 
 // Returns the zone state bits of this step (kShearNow, kTensionNow, or 0 when elastic).
 std::uint8_t mohr_coulomb_update(const MaterialParams& m, Stress& s, double dexx, double deyy,
-                                 double dgxy);
+                                 double dgxy, double dezz = 0.0);
 
 // In-plane principal stresses of s: first the most compressive.
 struct Principal {

@@ -218,7 +218,8 @@ void prepare(Mechanics& m, const Mesh& mesh) {
     }
     const MaterialModel model = m.params[static_cast<size_t>(material)].model;
     if (model == MaterialModel::null) continue;
-    if (model == MaterialModel::mohr) m.mixed.push_back(static_cast<int>(m.active.size()));
+    if (model == MaterialModel::mohr && m.settings.mixed)
+      m.mixed.push_back(static_cast<int>(m.active.size()));
     m.active.push_back(z);
   }
 
@@ -232,7 +233,7 @@ void prepare(Mechanics& m, const Mesh& mesh) {
     for (const int node : g.node) {
       const size_t n = static_cast<size_t>(node);
       real_mass[n] += p.density * g.area / 3.0;
-      if (p.model == MaterialModel::mohr) area[n] += g.area;
+      if (p.model == MaterialModel::mohr && m.settings.mixed) area[n] += g.area;
       m.weight[2 * n] += p.density * g.area / 3.0 * m.gravity.x;
       m.weight[2 * n + 1] += p.density * g.area / 3.0 * m.gravity.y;
     }
@@ -262,9 +263,13 @@ void prepare(Mechanics& m, const Mesh& mesh) {
     m.step = m.settings.step > 0.0 ? m.settings.step : fraction * m.critical_step;
   } else {
     // Density scaling: with a step of 1, masses that make every node's own bound equal.
+    // Local damping can add up to alpha |F| to a force (when F opposes the velocity), which
+    // acts like a stiffness (1 + alpha) times larger: the masses grow with it.
     m.step = 1.0;
+    const double amplification =
+        m.settings.damping == Damping::local ? 1.0 + m.settings.local_damping : 1.0;
     for (size_t n = 0; n < nodes; ++n)
-      m.mass[n] = m.stiffness[n] / (4.0 * fraction * fraction);
+      m.mass[n] = amplification * m.stiffness[n] / (4.0 * fraction * fraction);
   }
 
   m.applied_magnitude = 0.0;

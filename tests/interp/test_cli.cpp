@@ -163,5 +163,74 @@ TEST_F(Cli, ReferenceUpdatesAReadme) {
   EXPECT_EQ(slurp(dir_ / "README.md"), once) << "updating twice changes nothing";
 }
 
+// A zoned elastic square on a fixed base, under gravity.
+constexpr const char* kLoaded =
+    "block{ x = {0, 4}, y = {0, 4} }\nzone{ edge = 1 }\n"
+    "material{ 'rock', density = 2000, young = 1e9, poisson = 0.2 }\nassign{ material = 'rock' }\n"
+    "boundary{ side = 'bottom', fix = 'xy' }\ngravity{ 0, -9.81 }\n";
+
+TEST_F(Cli, ThreadsBeforeOrAfterRun) {
+  write("ok.lua", std::string(kLoaded) + "cycle(10)\n");
+  for (const char* form :
+       {"--threads 2 run ok.lua", "run --threads 2 ok.lua", "--threads=1 ok.lua"}) {
+    const Outcome r = edem(form);
+    EXPECT_EQ(r.status, 0) << form << "\n" << r.err;
+  }
+  const Outcome zero = edem("--threads 0 run ok.lua");
+  EXPECT_EQ(zero.status, 2);
+  EXPECT_TRUE(contains(zero.err, "--threads")) << zero.err;
+  EXPECT_EQ(edem("run --threads two ok.lua").status, 2);
+}
+
+TEST_F(Cli, QuietSilencesProgress) {
+  write("solve.lua", std::string(kLoaded) + "solve()\nprint('done')\n");
+  const Outcome loud = edem("run solve.lua");
+  EXPECT_EQ(loud.status, 0) << loud.err;
+  EXPECT_TRUE(starts_with(loud.out, "solve: ")) << loud.out;
+  for (const char* form : {"-q run solve.lua", "run -q solve.lua", "--quiet solve.lua"}) {
+    const Outcome quiet = edem(form);
+    EXPECT_EQ(quiet.status, 0) << form << "\n" << quiet.err;
+    EXPECT_EQ(quiet.out, "done\n") << form;
+  }
+}
+
+TEST_F(Cli, HistoriesNobodyWroteAreWrittenAtTheEnd) {
+  write("sag.lua", std::string(kLoaded) + "history{ 'uy', at = {2, 4} }\ncycle(30)\n");
+  const Outcome r = edem("run sag.lua");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out, "history: 1 history written to sag_history.csv\n");
+  EXPECT_TRUE(starts_with(slurp(dir_ / "sag_history.csv"), "cycle,uy@(2 4) [m]\n10,"));
+  fs::remove(dir_ / "sag_history.csv");
+  EXPECT_EQ(edem("run -q sag.lua").out, "");
+  EXPECT_TRUE(fs::exists(dir_ / "sag_history.csv")) << "quiet still writes";
+}
+
+TEST_F(Cli, HistoriesAreNotWrittenTwiceNorAfterAnError) {
+  write("own.lua",
+        std::string(kLoaded) + "history{ 'ratio' }\ncycle(10)\nhistory_write('mine.csv')\n");
+  const Outcome own = edem("run own.lua");
+  EXPECT_EQ(own.status, 0) << own.err;
+  EXPECT_EQ(own.out, "");
+  EXPECT_TRUE(fs::exists(dir_ / "mine.csv"));
+  EXPECT_FALSE(fs::exists(dir_ / "own_history.csv"));
+  write("fails.lua", std::string(kLoaded) + "history{ 'ratio' }\ncycle(10)\nerror('stop')\n");
+  EXPECT_EQ(edem("run fails.lua").status, 1);
+  EXPECT_FALSE(fs::exists(dir_ / "fails_history.csv"));
+}
+
+TEST_F(Cli, ACallbackErrorIsOneLineAndATraceback) {
+  write("cb.lua", std::string(kLoaded) +  // 6 lines
+                      "every(5, function(c)\n"
+                      "  if c == 10 then error('too far') end\n"
+                      "end)\n"
+                      "cycle(20)\n");
+  const Outcome r = edem("run cb.lua");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_EQ(r.err,
+            "cb.lua:8: every: error in the callback (while cycle() at cb.lua:10 was running): "
+            "too far\ntraceback:\n  cb.lua:8: in function <cb.lua:7>\n  cb.lua:10: in main "
+            "chunk\n");
+}
+
 }  // namespace
 }  // namespace edem

@@ -177,7 +177,7 @@ TEST(Schema, TheRegistryIsWellFormed) {
       EXPECT_TRUE(keys.insert(key.name).second) << command->name << "." << key.name;
       if (key.rest) {
         EXPECT_EQ(i + 1, command->positional.size()) << "a rest item must come last";
-        EXPECT_EQ(key.type, Type::polygon) << command->name;
+        EXPECT_TRUE(key.type == Type::polygon || key.type == Type::strings) << command->name;
       }
     }
     for (const Key& key : command->keys) {
@@ -190,6 +190,7 @@ TEST(Schema, TheRegistryIsWellFormed) {
     }
     if (command->form == Form::call) {
       EXPECT_TRUE(command->keys.empty()) << command->name;
+      EXPECT_FALSE(command->bare_call) << "a call-form command takes f() already";
     }
   }
 }

@@ -1,0 +1,30 @@
+// Lua functions that the model keeps and calls back between cycles: every() callbacks and
+// history fns.
+//
+// Each is a std::function holding a shared reference to the Lua function in the registry;
+// the reference is released when the engine drops the last copy (cancel(), a new model{},
+// the interpreter closing), never after the Lua state is closed. A call runs in a pcall on
+// the thread of the command executing now (Context::running), so it never touches a
+// suspended coroutine. A failure unwinds the engine as a CallbackError that names the line
+// inside the function that failed and the command that was cycling:
+//
+//   test.lua:7: every: error in the callback (while cycle() at test.lua:12 was running): ...
+//
+// and its traceback shows the callback's frames above those of the cycling command.
+#pragma once
+
+#include <functional>
+#include <string>
+
+struct lua_State;
+
+namespace edem {
+
+// every(n, f): the function at `index` called as f(cycle) with the cycle number.
+std::function<void(long cycle)> lua_callback(lua_State* L, int index);
+
+// history{ name = , fn = f }: the function at `index` called as f(), which must return a
+// number. `name` is the history's name for messages.
+std::function<double()> lua_sampler(lua_State* L, int index, const std::string& name);
+
+}  // namespace edem

@@ -1,0 +1,259 @@
+// Running the model: set{} (solver settings), reset{}, cycle(), solve{}, and the callbacks
+// every() and cancel().
+//
+// cycle() and solve() mark their call's position in Context::running, so that a callback
+// failing while they run names them, and refuse to run inside a callback of another.
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <limits>
+#include <lua.hpp>
+
+#include "callbacks.hpp"
+#include "commands.hpp"
+#include "context.hpp"
+#include "core/error.hpp"
+#include "lua_util.hpp"
+
+namespace edem {
+namespace {
+
+const std::vector<std::string>& modes() {
+  static const std::vector<std::string> names = {"static", "dynamic"};
+  return names;
+}
+
+const std::vector<std::string>& dampings() {
+  static const std::vector<std::string> names = {"adaptive", "local", "none"};
+  return names;
+}
+
+const std::vector<std::string>& resettable() {
+  static const std::vector<std::string> names = {"displacement", "velocity", "state"};
+  return names;
+}
+
+Damping damping_of(const std::string& name) {
+  if (name == "local") return Damping::local;
+  if (name == "none") return Damping::none;
+  return Damping::adaptive;
+}
+
+int run_set(lua_State*, Context& context, const Args& args) {
+  if (args.values.empty())
+    fail("nothing to set: give mode, damping, local_damping, step, fraction or mixed");
+  Model& model = context.model();
+  SolverSettings settings = model.solver_settings();
+  if (args.has("mode")) {
+    const bool dynamic = args.string("mode") == "dynamic";
+    settings.mode = dynamic ? SolverMode::dynamic : SolverMode::static_;
+    // Each mode has its own natural damping unless this call says otherwise.
+    settings.damping = dynamic ? Damping::none : Damping::adaptive;
+  }
+  if (args.has("damping")) settings.damping = damping_of(args.string("damping"));
+  if (args.has("local_damping")) settings.local_damping = args.number("local_damping");
+  if (args.has("step")) settings.step = args.number("step");
+  if (args.has("fraction")) settings.step_fraction = args.number("fraction");
+  if (args.has("mixed")) settings.mixed = args.boolean("mixed");
+  model.set_solver(settings);
+  return 0;
+}
+
+int run_reset(lua_State*, Context& context, const Args& args) {
+  const auto& what = args.get<std::vector<std::string>>("what");
+  const auto named = [&](std::string_view name) {
+    return std::find(what.begin(), what.end(), name) != what.end();
+  };
+  context.model().reset(named("displacement"), named("velocity"), named("state"));
+  return 0;
+}
+
+// Marks the running command as cycling the model; refuses to cycle inside a callback.
+void start_cycling(lua_State* L, Context& context, std::string_view name) {
+  if (const Running* outer = context.cycling())
+    fail("cannot cycle inside a callback while {}() at {} is cycling", outer->command,
+         outer->cycling_at);
+  std::string at = where(L);  // "FILE:LINE: "
+  if (at.size() >= 2) at.resize(at.size() - 2);
+  context.running->cycling_at = at.empty() ? fmt::format("{}()", name) : at;
+}
+
+int run_cycle(lua_State* L, Context& context, const Args& args) {
+  start_cycling(L, context, "cycle");
+  context.model().cycle(static_cast<long>(args.integer("n")));
+  return 0;
+}
+
+int run_solve(lua_State* L, Context& context, const Args& args) {
+  start_cycling(L, context, "solve");
+  SolveDef def;
+  def.ratio = args.number("ratio");
+  def.max_cycles = static_cast<long>(args.integer("max_cycles"));
+  const SolveResult result = context.model().solve(def);
+  if (!context.quiet) {
+    if (result.converged)
+      fmt::print("solve: {} cycles, ratio {:.3g}\n", result.cycles, result.ratio);
+    else
+      fmt::print("solve: stopped after {} cycles at ratio {:.3g} (not converged to {:.3g})\n",
+                 result.cycles, result.ratio, def.ratio);
+    std::fflush(stdout);
+  }
+  lua_createtable(L, 0, 3);
+  set_field(L, "cycles", static_cast<long long>(result.cycles));
+  set_field(L, "ratio", result.ratio);
+  lua_pushboolean(L, result.converged);
+  lua_setfield(L, -2, "converged");
+  return 1;
+}
+
+int run_every(lua_State* L, Context& context, const Args& args) {
+  auto callback = lua_callback(L, args.get<FunctionArg>("fn").index);
+  const int handle =
+      context.model().add_callback(static_cast<long>(args.integer("n")), std::move(callback));
+  lua_pushinteger(L, handle);
+  return 1;
+}
+
+int run_cancel(lua_State*, Context& context, const Args& args) {
+  const std::int64_t handle = args.integer("handle");
+  if (handle < std::numeric_limits<int>::min() || handle > std::numeric_limits<int>::max())
+    fail("no callback with handle {}", handle);
+  context.model().cancel_callback(static_cast<int>(handle));
+  return 0;
+}
+
+}  // namespace
+
+const Command& set_command() {
+  static const Command command{
+      .name = "set",
+      .help =
+          "Changes solver settings; keys left out keep their current value. `mode = "
+          "\"dynamic\"` also turns damping off and `mode = \"static\"` makes it adaptive, "
+          "unless the same call gives `damping`.",
+      .keys =
+          {
+              {"mode", Type::string, "", any_value, kOptional,
+               "static: damped to equilibrium; dynamic: real time, real masses",
+               "unchanged (initially static)", modes},
+              {"damping", Type::string, "", any_value, kOptional,
+               "adaptive: viscous damping 2 omega, omega from the Rayleigh quotient of the "
+               "displacement so far (adaptive dynamic relaxation); local: Itasca's local "
+               "damping with a fixed coefficient; none",
+               "unchanged (initially adaptive)", dampings},
+              {"local_damping", Type::number, "-", from_below(0, 1), kOptional,
+               "coefficient of local damping", "unchanged (initially 0.8)"},
+              {"step", Type::number, "s", ge(0), kOptional,
+               "forced time step (dynamic mode); 0: automatic", "unchanged (initially 0)"},
+              {"fraction", Type::number, "-", above_upto(0, 1), kOptional,
+               "automatic time step as a fraction of the critical one",
+               "unchanged (initially 0.9)"},
+              {"mixed", Type::boolean, "", any_value, kOptional,
+               "nodal mixed discretisation in Mohr-Coulomb zones (experimental: better "
+               "elastic stresses, worse plastic answers; see solver/cycle.cpp)",
+               "unchanged (initially false)"},
+          },
+      .run = run_set,
+      .usage = "set{ mode = \"dynamic\" }\nset{ damping = \"local\", local_damping = 0.8 }",
+  };
+  return command;
+}
+
+const Command& reset_command() {
+  static const Command command{
+      .name = "reset",
+      .help =
+          "Sets to zero the gridpoint displacements or velocities, or clears the zones' "
+          "plastic state flags, of the whole model (stresses are kept).",
+      .positional =
+          {
+              {"what",
+               Type::strings,
+               "",
+               any_value,
+               kRequired,
+               "what to reset",
+               {},
+               resettable,
+               true},
+          },
+      .run = run_reset,
+      .usage = "reset{ \"displacement\", \"velocity\" }",
+  };
+  return command;
+}
+
+const Command& cycle_command() {
+  static const Command command{
+      .name = "cycle",
+      .help =
+          "Runs a number of solver cycles (steps), whatever the unbalanced force. Callbacks "
+          "and histories run between cycles.",
+      .form = Form::call,
+      .positional =
+          {
+              {"n", Type::integer, "", ge(1), kRequired, "number of cycles"},
+          },
+      .run = run_cycle,
+      .usage = "cycle(1000)",
+  };
+  return command;
+}
+
+const Command& solve_command() {
+  static const Command command{
+      .name = "solve",
+      .help =
+          "Cycles until the unbalanced-force ratio is at most `ratio`, or `max_cycles` have "
+          "run, and prints one line saying which (not with --quiet).",
+      .keys =
+          {
+              {"ratio", Type::number, "-", above_below(0, 1), "1e-5",
+               "unbalanced-force ratio to reach: total unbalanced force over total applied and "
+               "zone forces"},
+              {"max_cycles", Type::integer, "", ge(1), "100000", "stop after this many cycles"},
+          },
+      .run = run_solve,
+      .returns = "a table: cycles (run by this call), ratio (reached), converged (true or false)",
+      .usage = "solve{ ratio = 1e-5 }\nsolve()",
+      .bare_call = true,
+  };
+  return command;
+}
+
+const Command& every_command() {
+  static const Command command{
+      .name = "every",
+      .help =
+          "Calls a function after every n-th cycle (cycle numbers that are multiples of n), "
+          "with the cycle number as its argument. An error inside it stops the run at that "
+          "cycle and names its line and the cycle() or solve() that was running.",
+      .form = Form::call,
+      .positional =
+          {
+              {"n", Type::integer, "", ge(1), kRequired, "cycles between calls"},
+              {"fn", Type::function, "", any_value, kRequired, "the function, fn(cycle)"},
+          },
+      .run = run_every,
+      .returns = "a handle for `cancel`",
+      .usage = "local h = every(100, function(cycle) print(cycle, info().ratio) end)",
+  };
+  return command;
+}
+
+const Command& cancel_command() {
+  static const Command command{
+      .name = "cancel",
+      .help = "Stops calling a function registered with `every`.",
+      .form = Form::call,
+      .positional =
+          {
+              {"handle", Type::integer, "", any_value, kRequired, "what `every` returned"},
+          },
+      .run = run_cancel,
+      .usage = "cancel(h)",
+  };
+  return command;
+}
+
+}  // namespace edem

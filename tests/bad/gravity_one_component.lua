@@ -1,0 +1,3 @@
+-- line: 3
+-- expect: gravity: missing item #2 \(gy\)
+gravity{ -9.81 }
