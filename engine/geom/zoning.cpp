@@ -1,11 +1,15 @@
 // Zoning with CGAL's constrained Delaunay refinement (Ruppert's algorithm, Shewchuk's clusters).
 //
-// Each block is meshed on its own: its rings go in as constraints of a CDT, the faces inside
-// the outer ring and outside the holes are marked by nesting level, and CGAL's mesher levels
-// (assembled here rather than through Delaunay_mesher_2, see DomainGabriel and refine()) insert
-// points one at a time until every face meets the size field and the shape bound. A zone
-// budget stops runaway meshes. The refined CDT is then read out block-contiguously: boundary
-// gridpoints in loop order first, then interior gridpoints and zones in Z-order.
+// Blocks joined by glued edges must share their gridpoints along those edges, so they are
+// meshed together: union-find groups the zoned blocks over their glued edges, and each group
+// goes into one CDT with all its rings as constraints. A flood fill over unconstrained edges,
+// seeded left of every ring edge, labels each face with its block; the labelled faces are the
+// domain. CGAL's mesher levels (assembled here rather than through Delaunay_mesher_2, see
+// DomainGabriel and refine()) insert points one at a time until every face meets the size
+// field and the shape bound, splitting a shared edge for both blocks at once. A zone budget
+// stops runaway meshes. The refined CDT is labelled again and read out block by block:
+// boundary gridpoints in loop order first, then interior gridpoints and zones in Z-order. A
+// block with no glued edge is a group of one, meshed exactly as it would be alone.
 #include "geom/zoning.hpp"
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -17,12 +21,16 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <numbers>
-#include <queue>
+#include <string>
+#include <tuple>
 #include <utility>
+#include <vector>
 
 #include "core/error.hpp"
 
@@ -32,12 +40,17 @@ namespace {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_2;
 struct VertexInfo {
-  int gp = -1;         // gridpoint index, -1 until numbered
-  bool sharp = false;  // a block corner sharper than the shape bound (kShapeBoundAngle)
+  int gp = -1;          // gridpoint index in the block being read out, -1 until numbered
+  bool sharp = false;   // a block corner sharper than the shape bound (kShapeBoundAngle)
+  bool shared = false;  // several blocks of the group meet here (see lop_sharp_corners)
+  int block = -1;       // the first block (in the group) with a corner here
 };
 using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<VertexInfo, Kernel>;
-// Face info: nesting level while marking the domain.
-using FaceInfoBase = CGAL::Triangulation_face_base_with_info_2<int, Kernel>;
+struct FaceInfo {
+  int block = -1;       // the face's block in the group, -1 outside every zoned block
+  bool frozen = false;  // in a lopped corner: a zone as it is, never refined (lop_sharp_corners)
+};
+using FaceInfoBase = CGAL::Triangulation_face_base_with_info_2<FaceInfo, Kernel>;
 using FaceBase = CGAL::Delaunay_mesh_face_base_2<
     Kernel, CGAL::Constrained_Delaunay_triangulation_face_base_2<
                 Kernel, CGAL::Constrained_triangulation_face_base_2<Kernel, FaceInfoBase>>>;
@@ -135,6 +148,46 @@ class SizeEvaluator {
   std::vector<NearPolygon> polygons_;
 };
 
+// The size field of a group of blocks zoned together: the pointwise minimum of their distinct
+// size fields, so that every block's zones meet its own field (the shared edges must be split
+// alike on both sides, so one field has to hold for the whole CDT).
+class GroupSize {
+ public:
+  explicit GroupSize(const std::vector<const SizeField*>& fields) {
+    std::vector<const SizeField*> distinct;
+    for (const SizeField* field : fields)
+      if (std::find(distinct.begin(), distinct.end(), field) == distinct.end())
+        distinct.push_back(field);
+    for (const SizeField* field : distinct) {
+      evaluators_.emplace_back(*field);
+      growth_ = std::max(growth_, field->growth);
+    }
+  }
+
+  // Target edge length at p [m].
+  double at(Vec2 p) const {
+    double size = evaluators_.front().at(p);
+    for (size_t i = 1; i < evaluators_.size(); ++i) size = std::min(size, evaluators_[i].at(p));
+    return size;
+  }
+
+  // The fastest the size can change with position [-]: at() never changes by more than
+  // growth() times the distance moved.
+  double growth() const { return growth_; }
+
+ private:
+  std::vector<SizeEvaluator> evaluators_;
+  double growth_ = 0.0;
+};
+
+// Whether the angle of `face` at its vertex i is a sharp block corner, spared by the shape
+// rule because no mesh can do better there: the rule of a block meshed alone. Sharp corners at
+// vertices several blocks share are lopped instead (see lop_sharp_corners()).
+bool at_sharp_corner(const FaceHandle& face, int i) {
+  const VertexInfo& info = face->vertex(i)->info();
+  return info.sharp && !info.shared;
+}
+
 // ---------------------------------------------------------------------------------------------
 // Refinement criteria, modelled on CGAL::Delaunay_mesh_size_criteria_2 but with a size field:
 // a face is imperatively bad when its longest edge exceeds the size at its centroid, and bad
@@ -143,14 +196,14 @@ class SizeEvaluator {
 // refinement from running forever at sharp corners).
 //
 // With `insist` set (the second pass, see refine()), a badly shaped face is imperatively bad
-// too, unless its smallest angle sits at a sharp block corner: no mesh can do better there.
+// too, unless its smallest angle sits at a sharp block corner (at_sharp_corner).
 
 class SizeShapeCriteria : public CGAL::Delaunay_mesh_criteria_2<Cdt> {
  public:
   using Base = CGAL::Delaunay_mesh_criteria_2<Cdt>;
   using Face_handle = Cdt::Face_handle;
 
-  SizeShapeCriteria(const SizeEvaluator& size, double shape_bound = kShapeBound)
+  SizeShapeCriteria(const GroupSize& size, double shape_bound = kShapeBound)
       : Base(shape_bound), size_(&size) {}
 
   void insist(bool on) { insist_ = on; }
@@ -171,7 +224,7 @@ class SizeShapeCriteria : public CGAL::Delaunay_mesh_criteria_2<Cdt> {
 
   class Is_bad {
    public:
-    Is_bad(double shape_bound, const SizeEvaluator* size, bool insist)
+    Is_bad(double shape_bound, const GroupSize* size, bool insist)
         : bound_(shape_bound), size_(size), insist_(insist) {}
 
     CGAL::Mesh_2::Face_badness operator()(const Quality& q) const {
@@ -201,20 +254,20 @@ class SizeShapeCriteria : public CGAL::Delaunay_mesh_criteria_2<Cdt> {
         if (i != shortest) others *= l[i];
       q.sine = twice_area * twice_area / others;
       if (q.sine >= bound_) return CGAL::Mesh_2::NOT_BAD;
-      q.insist = insist_ && !face->vertex(shortest)->info().sharp;
+      q.insist = insist_ && !at_sharp_corner(face, shortest);
       return q.insist ? CGAL::Mesh_2::IMPERATIVELY_BAD : CGAL::Mesh_2::BAD;
     }
 
    private:
     double bound_;
-    const SizeEvaluator* size_;
+    const GroupSize* size_;
     bool insist_;
   };
 
   Is_bad is_bad_object() const { return Is_bad(bound(), size_, insist_); }
 
  private:
-  const SizeEvaluator* size_;
+  const GroupSize* size_;
   bool insist_ = false;
 };
 
@@ -284,7 +337,7 @@ using FacesLevel = CGAL::Mesh_2::Refine_faces<Cdt, SizeShapeCriteria, EdgesLevel
 using LevelsVisitor = CGAL::Mesh_2::Refine_edges_visitor_from_faces<FacesLevel>;
 
 // ---------------------------------------------------------------------------------------------
-// One block.
+// Checks on the input, block by block.
 
 void check_size_field(const SizeField& field, int block) {
   if (!(std::isfinite(field.edge) && field.edge > 0.0))
@@ -320,59 +373,472 @@ double interior_angle(const Ring& ring, size_t i) {
   return angle < 0.0 ? angle + 360.0 : angle;
 }
 
-// Inserts the ring's vertices and edges; returns the vertex handle of each ring point.
-std::vector<VertexHandle> insert_ring(Cdt& cdt, const Ring& ring) {
+// Everything zoning asks of one zoned block on its own.
+void check_block(const Block& block, const SizeField& field, int index) {
+  check_size_field(field, index);
+  check_ring(block.outer, index, "outer boundary");
+  for (const Ring& hole : block.holes) check_ring(hole, index, "hole");
+  // The labelling and the boundary walk rely on the block lying left of every ring.
+  if (!(ring_area(block.outer) > 0.0))
+    fail("block {}: its outer boundary must be counter-clockwise", index);
+  for (const Ring& hole : block.holes)
+    if (!(ring_area(hole) < 0.0)) fail("block {}: its holes must be clockwise", index);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Groups: the zoned blocks joined through glued edges, each meshed in one CDT.
+
+using Group = std::vector<int>;  // block indices, ascending
+
+class DisjointSets {
+ public:
+  explicit DisjointSets(size_t count) : parent_(count) {
+    for (size_t i = 0; i < count; ++i) parent_[i] = static_cast<int>(i);
+  }
+  int find(int i) {
+    while (parent_[i] != i) i = parent_[i] = parent_[parent_[i]];
+    return i;
+  }
+  void join(int a, int b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent_[std::max(a, b)] = std::min(a, b);
+  }
+
+ private:
+  std::vector<int> parent_;
+};
+
+// A ring edge, directed with its block on the left.
+struct RingEdge {
+  Vec2 a, b;
+  int block = -1;
+  bool glued = false;
+};
+
+bool by_end_points(const RingEdge& e, const RingEdge& f) {
+  return std::tie(e.a.x, e.a.y, e.b.x, e.b.y) < std::tie(f.a.x, f.a.y, f.b.x, f.b.y);
+}
+
+bool is_finite(Vec2 p) { return std::isfinite(p.x) && std::isfinite(p.y); }
+
+// Every ring edge of every block with finite end points, sorted by end points. Blocks without
+// a size field are in too, so that a glued edge next to one still finds its twin.
+std::vector<RingEdge> ring_edges(const BlockSet& blocks) {
+  std::vector<RingEdge> edges;
+  for (size_t b = 0; b < blocks.blocks.size(); ++b) {
+    auto add = [&](const Ring& ring) {
+      const size_t n = ring.points.size();
+      if (ring.edges.size() != n) return;
+      for (size_t i = 0; i < n; ++i) {
+        const Vec2 a = ring.points[i], c = ring.points[(i + 1) % n];
+        if (is_finite(a) && is_finite(c))
+          edges.push_back({a, c, static_cast<int>(b), ring.edges[i].glued});
+      }
+    };
+    add(blocks.blocks[b].outer);
+    for (const Ring& hole : blocks.blocks[b].holes) add(hole);
+  }
+  std::sort(edges.begin(), edges.end(), by_end_points);
+  return edges;
+}
+
+// Whether two ring edges run along each other in opposite directions over a stretch of
+// positive length: one boundary seen from its two sides but split at a vertex only one side
+// has. Exact for the collinearity.
+bool overlap_opposite(const RingEdge& e, const RingEdge& f) {
+  const Point a(e.a.x, e.a.y), b(e.b.x, e.b.y);
+  if (CGAL::orientation(a, b, Point(f.a.x, f.a.y)) != CGAL::COLLINEAR ||
+      CGAL::orientation(a, b, Point(f.b.x, f.b.y)) != CGAL::COLLINEAR)
+    return false;
+  if (!(dot(e.b - e.a, f.b - f.a) < 0.0)) return false;
+  // Collinear points keep their order along the edge's dominant axis.
+  const bool along_x = std::abs(e.b.x - e.a.x) >= std::abs(e.b.y - e.a.y);
+  auto at = [along_x](Vec2 p) { return along_x ? p.x : p.y; };
+  const double low = std::max(std::min(at(e.a), at(e.b)), std::min(at(f.a), at(f.b)));
+  const double high = std::min(std::max(at(e.a), at(e.b)), std::max(at(f.a), at(f.b)));
+  return low < high;
+}
+
+// The zoned blocks in groups joined through glued edges: each group ascending, the groups in
+// the order of their first block. Two zoned blocks are joined when a glued edge of one runs
+// along an edge of the other the other way. Cut blocks come from one exact arrangement, so a
+// shared edge has the same end points on both sides and the sorted lookup finds its twin; a
+// glued edge without one (blocks built by hand with a vertex only one side has) is compared
+// with every edge instead.
+std::vector<Group> glued_groups(const BlockSet& blocks,
+                                const std::vector<const SizeField*>& size_of_block) {
+  const size_t count = blocks.blocks.size();
+  auto zoned = [&](int b) { return size_of_block[b] != nullptr; };
+  const std::vector<RingEdge> edges = ring_edges(blocks);
+  DisjointSets sets(count);
+  for (const RingEdge& edge : edges) {
+    if (!edge.glued || !zoned(edge.block)) continue;
+    const RingEdge twin{edge.b, edge.a};
+    const auto [first, last] = std::equal_range(edges.begin(), edges.end(), twin, by_end_points);
+    for (auto other = first; other != last; ++other)
+      if (zoned(other->block)) sets.join(edge.block, other->block);
+    if (first != last) continue;
+    for (const RingEdge& other : edges)
+      if (other.block != edge.block && zoned(other.block) && overlap_opposite(edge, other))
+        sets.join(edge.block, other.block);
+  }
+  std::vector<Group> groups;
+  std::vector<int> group_of_root(count, -1);
+  for (size_t b = 0; b < count; ++b) {
+    if (!zoned(static_cast<int>(b))) continue;
+    int& group = group_of_root[sets.find(static_cast<int>(b))];
+    if (group < 0) {
+      group = static_cast<int>(groups.size());
+      groups.emplace_back();
+    }
+    groups[group].push_back(static_cast<int>(b));
+  }
+  return groups;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Building a group's CDT and labelling its faces with their blocks.
+
+using RingHandles = std::vector<std::vector<VertexHandle>>;  // per ring: outer, then holes
+
+const Ring& ring_of(const Block& block, size_t r) {
+  return r == 0 ? block.outer : block.holes[r - 1];
+}
+
+// Inserts the ring of block k (in the group) with its vertices and edges; returns the vertex
+// handle of each ring point. A point or edge another block inserted already is reused (CGAL
+// returns the existing vertex), and a vertex lying on another ring's edge splits it.
+std::vector<VertexHandle> insert_ring(Cdt& cdt, const Ring& ring, int k) {
   std::vector<VertexHandle> handles;
   handles.reserve(ring.points.size());
   for (size_t i = 0; i < ring.points.size(); ++i) {
     const Vec2 p = ring.points[i];
     handles.push_back(cdt.insert(Point(p.x, p.y)));
-    if (interior_angle(ring, i) < kShapeBoundAngle) handles.back()->info().sharp = true;
+    VertexInfo& info = handles.back()->info();
+    if (interior_angle(ring, i) < kShapeBoundAngle) info.sharp = true;
+    if (info.block < 0) info.block = k;
+    if (info.block != k) info.shared = true;
   }
   for (size_t i = 0; i < handles.size(); ++i)
     cdt.insert_constraint(handles[i], handles[(i + 1) % handles.size()]);
   return handles;
 }
 
-// In the domain: faces at odd nesting level (crossing constraints from the infinite face),
-// i.e. inside the outer ring and outside every hole.
-void mark_domain(Cdt& cdt) {
-  for (auto face = cdt.all_faces_begin(); face != cdt.all_faces_end(); ++face) face->info() = -1;
-  std::queue<FaceHandle> level_seeds, queue;
-  level_seeds.push(cdt.infinite_face());
-  int level = 0;
-  while (!level_seeds.empty()) {
-    std::queue<FaceHandle> next_seeds;
-    while (!level_seeds.empty()) {
-      const FaceHandle seed = level_seeds.front();
-      level_seeds.pop();
-      if (seed->info() != -1) continue;
-      seed->info() = level;
-      queue.push(seed);
-      while (!queue.empty()) {
-        const FaceHandle face = queue.front();
-        queue.pop();
-        for (int i = 0; i < 3; ++i) {
-          const FaceHandle neighbor = face->neighbor(i);
-          if (neighbor->info() != -1) continue;
-          if (face->is_constrained(i)) {
-            next_seeds.push(neighbor);
-          } else {
-            neighbor->info() = level;
-            queue.push(neighbor);
-          }
-        }
-      }
-    }
-    level_seeds = std::move(next_seeds);
-    ++level;
+// A sharp vertex of one block that also lies on another block's ring edge (only one side of a
+// shared edge has it) is shared too: more constrained edges meet there than its corner's two.
+void mark_vertices_on_other_rings(Cdt& cdt) {
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
+    if (!v->info().sharp || v->info().shared) continue;
+    int constrained = 0;
+    auto edge = cdt.incident_edges(v);
+    const auto first = edge;
+    do {
+      if (cdt.is_constrained(*edge)) ++constrained;
+    } while (++edge != first);
+    if (constrained != 2) v->info().shared = true;
   }
-  for (auto face = cdt.all_faces_begin(); face != cdt.all_faces_end(); ++face)
-    face->set_in_domain(!cdt.is_infinite(face) && face->info() % 2 == 1);
 }
 
-bool in_domain(const Cdt& cdt, FaceHandle face) {
-  return !cdt.is_infinite(face) && face->is_in_domain();
+// The constrained edge leaving v closest to direction `along` among those accept(face, edge)
+// takes, as (face on its left, edge index); a null face when there is none. Points the mesher
+// adds on ring edges are rounded, so the direction matches only nearly. Backward edges are
+// taken only when no forward one is.
+template <typename Accept>
+Cdt::Edge edge_leaving(const Cdt& cdt, VertexHandle v, Vec2 along, Accept accept) {
+  Cdt::Edge best(FaceHandle(), -1);
+  double best_deviation = std::numeric_limits<double>::infinity();
+  auto face = cdt.incident_faces(v);
+  const auto first = face;
+  do {
+    const int i = face->index(v);
+    const int e = Cdt::cw(i);  // edge v -> vertex(ccw(i)), face on its left
+    if (!cdt.is_infinite(face) && face->is_constrained(e) && accept(face, e)) {
+      const Vec2 step = to_vec(face->vertex(Cdt::ccw(i))->point()) - to_vec(v->point());
+      const double deviation = dot(step, along) > 0.0 ? std::abs(cross(along, step)) / norm(step)
+                                                      : std::numeric_limits<double>::max();
+      if (deviation < best_deviation) {
+        best_deviation = deviation;
+        best = Cdt::Edge(face, e);
+      }
+    }
+  } while (++face != first);
+  return best;
+}
+
+// Blocks by ring vertex, exact coordinates: the blocks around each vertex of the arrangement.
+using BlocksAtVertex = std::map<std::pair<double, double>, std::vector<int>>;
+
+BlocksAtVertex blocks_at_vertices(const BlockSet& blocks) {
+  BlocksAtVertex at;
+  for (size_t b = 0; b < blocks.blocks.size(); ++b)
+    for (size_t r = 0; r <= blocks.blocks[b].holes.size(); ++r)
+      for (Vec2 p : ring_of(blocks.blocks[b], r).points)
+        if (is_finite(p)) {
+          std::vector<int>& list = at[{p.x, p.y}];
+          if (list.empty() || list.back() != static_cast<int>(b)) list.push_back(static_cast<int>(b));
+        }
+  return at;
+}
+
+// Whether a ring can go into a CDT: three points or more, finite, none repeated next to itself.
+bool well_formed(const Ring& ring) {
+  const size_t n = ring.points.size();
+  if (n < 3) return false;
+  for (size_t i = 0; i < n; ++i)
+    if (!is_finite(ring.points[i]) || ring.points[i] == ring.points[(i + 1) % n]) return false;
+  return true;
+}
+
+// The blocks outside the group around it inserted as bare constraints, outside the domain: the
+// triangulation outside the group's boundary then follows the blocks there instead of forming
+// slivers across a straight cut the group has on one side only, which a point rounded onto the
+// group's boundary could turn over.
+void insert_neighbours(Cdt& cdt, const BlockSet& blocks, const Group& group,
+                       const BlocksAtVertex& blocks_at) {
+  std::vector<int> neighbours;
+  for (int b : group)
+    for (size_t r = 0; r <= blocks.blocks[b].holes.size(); ++r)
+      for (Vec2 p : ring_of(blocks.blocks[b], r).points)
+        for (int other : blocks_at.at({p.x, p.y}))
+          if (!std::binary_search(group.begin(), group.end(), other)) neighbours.push_back(other);
+  std::sort(neighbours.begin(), neighbours.end());
+  neighbours.erase(std::unique(neighbours.begin(), neighbours.end()), neighbours.end());
+  for (int b : neighbours)
+    for (size_t r = 0; r <= blocks.blocks[b].holes.size(); ++r) {
+      const Ring& ring = ring_of(blocks.blocks[b], r);
+      if (!well_formed(ring)) continue;
+      std::vector<VertexHandle> handles;
+      for (Vec2 p : ring.points) handles.push_back(cdt.insert(Point(p.x, p.y)));
+      try {
+        for (size_t i = 0; i < handles.size(); ++i)
+          cdt.insert_constraint(handles[i], handles[(i + 1) % handles.size()]);
+      } catch (const Cdt::Intersection_of_constraints_exception&) {
+        fail("block {}: its boundary crosses that of block {} and cannot be zoned", b,
+             group.front());
+      }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Lopping sharp corners where blocks meet.
+//
+// A sharp corner of a block meshed alone is one zone at its apex. Where the corner meets other
+// blocks of its group, their zones at the apex split the corner's edges, the corner then needs
+// points ever nearer its apex and gives them back to its neighbours, and refinement descends
+// towards the apex without end (down to rounding, where CGAL breaks). So such a corner is cut
+// off first: a point on each of its edges at a small distance from the apex, and a constrained
+// lid between them. The triangle cut off is a zone of its block kept out of the refinement's
+// domain: nothing refines it and its vertices encroach on no edge (a neighbour may still split
+// its edges, which divides it into a few zones). Beyond the lid the block has no sharp corner.
+
+// A sharp corner to lop: its apex, the directions of its first and last edge, its block.
+struct Lop {
+  VertexHandle apex;
+  Vec2 out, back;
+  int k = -1;         // its block in the group
+  VertexHandle a, b;  // the lid's ends on the first and the last edge, once lopped
+};
+
+// The sharp corners at vertices that several blocks of the group share.
+std::vector<Lop> corners_to_lop(const BlockSet& blocks, const Group& group,
+                                const std::vector<RingHandles>& rings) {
+  std::vector<Lop> lops;
+  for (size_t k = 0; k < group.size(); ++k)
+    for (size_t r = 0; r < rings[k].size(); ++r) {
+      const Ring& ring = ring_of(blocks.blocks[group[k]], r);
+      const size_t n = ring.points.size();
+      for (size_t i = 0; i < n; ++i) {
+        if (!rings[k][r][i]->info().shared || !(interior_angle(ring, i) < kShapeBoundAngle))
+          continue;
+        lops.push_back({rings[k][r][i], ring.points[(i + 1) % n] - ring.points[i],
+                        ring.points[(i + n - 1) % n] - ring.points[i], static_cast<int>(k),
+                        VertexHandle(), VertexHandle()});
+      }
+    }
+  return lops;
+}
+
+double segment_distance(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double length2 = dot(ab, ab);
+  const double t = length2 > 0.0 ? std::clamp(dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
+  return norm(p - (a + t * ab));
+}
+
+const auto any_edge = [](FaceHandle, int) { return true; };
+
+// The constrained edge at v closest to direction `along`, its block on either side, as (a
+// finite face, edge index), and its other end.
+std::pair<Cdt::Edge, VertexHandle> constrained_edge_towards(const Cdt& cdt, VertexHandle v,
+                                                            Vec2 along) {
+  std::pair<Cdt::Edge, VertexHandle> best;
+  double best_deviation = std::numeric_limits<double>::infinity();
+  auto edge = cdt.incident_edges(v);
+  const auto first = edge;
+  do {
+    if (cdt.is_infinite(*edge) || !cdt.is_constrained(*edge)) continue;
+    const Cdt::Edge e = cdt.is_infinite(edge->first) ? cdt.mirror_edge(*edge) : *edge;
+    const VertexHandle a = e.first->vertex(Cdt::cw(e.second));
+    const VertexHandle w = a == v ? e.first->vertex(Cdt::ccw(e.second)) : a;
+    const Vec2 step = to_vec(w->point()) - to_vec(v->point());
+    if (!(dot(step, along) > 0.0)) continue;
+    const double deviation = std::abs(cross(along, step)) / norm(step);
+    if (deviation < best_deviation) {
+      best_deviation = deviation;
+      best = {e, w};
+    }
+  } while (++edge != first);
+  return best;
+}
+
+// Moves p by units in the last place until it is on the edge from v to w or on its `side`.
+// Rounded, a point meant for the edge may fall beside it; on the far side, outside the corner,
+// the triangulation may hold a sliver (a straight cut through v, outside the group) that the
+// point would turn over.
+Point onto_edge_or_side(Point p, const Point& v, const Point& w, CGAL::Orientation side) {
+  const Vec2 normal = side == CGAL::LEFT_TURN ? Vec2{v.y() - w.y(), w.x() - v.x()}
+                                              : Vec2{w.y() - v.y(), v.x() - w.x()};
+  const double inf = std::numeric_limits<double>::infinity();
+  for (int step = 0; step < 64 && CGAL::orientation(v, w, p) == -side; ++step)
+    p = Point(normal.x == 0.0 ? p.x() : std::nextafter(p.x(), normal.x > 0.0 ? inf : -inf),
+              normal.y == 0.0 ? p.y() : std::nextafter(p.y(), normal.y > 0.0 ? inf : -inf));
+  return p;
+}
+
+// The point at distance `radius` from v on its constrained edge in direction `along`, inserted
+// into that edge; the one already there when the lop on the other side of the edge made it.
+// `side`: the corner's side of that edge.
+VertexHandle lop_point(Cdt& cdt, VertexHandle v, Vec2 along, double radius,
+                       CGAL::Orientation side) {
+  const auto [edge, far] = constrained_edge_towards(cdt, v, along);
+  const Vec2 a = to_vec(v->point()), b = to_vec(far->point());
+  const double length = norm(b - a);
+  if (length < 1.5 * radius) return far;  // the ring's own vertices are 4 radii away or more
+  const Vec2 p = a + (radius / length) * (b - a);
+  const Point point = onto_edge_or_side(Point(p.x, p.y), v->point(), far->point(), side);
+  return cdt.insert(point, Cdt::EDGE, edge.first, edge.second);
+}
+
+// Distance from the apex to the nearest edge across it in the faces of its corner [m]: a
+// ball that wide holds no other vertex or edge of the corner.
+double corner_clearance(const Cdt& cdt, const Lop& lop) {
+  const Vec2 c = to_vec(lop.apex->point());
+  double nearest = std::numeric_limits<double>::infinity();
+  FaceHandle face = edge_leaving(cdt, lop.apex, lop.out, any_edge).first;
+  for (;;) {  // counter-clockwise from the corner's first edge to its last
+    const int i = face->index(lop.apex);
+    nearest = std::min(nearest, segment_distance(c, to_vec(face->vertex(Cdt::ccw(i))->point()),
+                                                 to_vec(face->vertex(Cdt::cw(i))->point())));
+    if (face->is_constrained(Cdt::ccw(i))) return nearest;
+    face = face->neighbor(Cdt::ccw(i));
+  }
+}
+
+// Distance from each apex to its lids' ends [m], the same for all corners at one apex: a
+// quarter of their clearance, so that a lid crosses nothing and the lids at the two ends of an
+// edge stay apart; and small enough that the zone cut off (edges that long at most) meets the
+// size field anywhere in it, which half the size at the apex does after the field's change.
+std::vector<double> lop_radii(const Cdt& cdt, const std::vector<Lop>& lops,
+                              const GroupSize& size) {
+  std::vector<double> radius;
+  for (const Lop& lop : lops) {
+    const Vec2 c = to_vec(lop.apex->point());
+    radius.push_back(std::min(0.25 * corner_clearance(cdt, lop), size.at(c) / (2.0 + size.growth())));
+  }
+  for (size_t l = 0; l < lops.size(); ++l)
+    for (size_t m = 0; m < lops.size(); ++m)
+      if (lops[m].apex == lops[l].apex) radius[l] = std::min(radius[l], radius[m]);
+  return radius;
+}
+
+// Lops every sharp corner at a vertex several blocks of the group share; returns the lops.
+std::vector<Lop> lop_sharp_corners(Cdt& cdt, const BlockSet& blocks, const Group& group,
+                                   const std::vector<RingHandles>& rings, const GroupSize& size) {
+  std::vector<Lop> lops = corners_to_lop(blocks, group, rings);
+  const std::vector<double> radius = lop_radii(cdt, lops, size);  // before any lop
+  for (size_t l = 0; l < lops.size(); ++l) {
+    Lop& lop = lops[l];
+    lop.a = lop_point(cdt, lop.apex, lop.out, radius[l], CGAL::LEFT_TURN);
+    lop.b = lop_point(cdt, lop.apex, lop.back, radius[l], CGAL::RIGHT_TURN);
+    cdt.insert_constraint(lop.a, lop.b);
+  }
+  return lops;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Labelling the faces with their blocks.
+
+// Enters `seed` and every face reachable from it without crossing a constrained edge;
+// enter(face) marks the face and says whether it was new.
+template <typename Enter>
+void flood(FaceHandle seed, Enter enter) {
+  if (!enter(seed)) return;
+  std::vector<FaceHandle> stack{seed};
+  while (!stack.empty()) {
+    const FaceHandle face = stack.back();
+    stack.pop_back();
+    for (int i = 0; i < 3; ++i)
+      if (!face->is_constrained(i) && enter(face->neighbor(i))) stack.push_back(face->neighbor(i));
+  }
+}
+
+// Gives the cell of `seed` the block k.
+void flood_block(const Cdt& cdt, FaceHandle seed, int k, const Group& group) {
+  flood(seed, [&](FaceHandle face) {
+    const int block = face->info().block;
+    if (block == k) return false;
+    if (block >= 0) fail("blocks {} and {} overlap and cannot be zoned", group[block], group[k]);
+    if (cdt.is_infinite(face))
+      fail("block {}: its rings do not enclose it (is a hole outside its outer boundary?)",
+           group[k]);
+    face->info().block = k;
+    return true;
+  });
+}
+
+// Labels every face with its block in the group (-1 outside them all) and marks the lopped
+// corners frozen: flood fills over unconstrained edges from the face left of each ring edge's
+// first piece, from both sides of each lid, and from each lopped corner. Refinement splits
+// constrained edges but never crosses them, so labelling again after it finds the same cells.
+void label_blocks(Cdt& cdt, const BlockSet& blocks, const Group& group,
+                  const std::vector<RingHandles>& rings, const std::vector<Lop>& lops) {
+  for (auto face = cdt.all_faces_begin(); face != cdt.all_faces_end(); ++face)
+    face->info() = FaceInfo{};
+  for (size_t k = 0; k < group.size(); ++k) {
+    const Block& block = blocks.blocks[group[k]];
+    for (size_t r = 0; r < rings[k].size(); ++r) {
+      const Ring& ring = ring_of(block, r);
+      const size_t n = ring.points.size();
+      for (size_t i = 0; i < n; ++i) {
+        const Vec2 along = ring.points[(i + 1) % n] - ring.points[i];
+        const Cdt::Edge edge = edge_leaving(cdt, rings[k][r][i], along, any_edge);
+        if (edge.first != FaceHandle()) flood_block(cdt, edge.first, static_cast<int>(k), group);
+      }
+    }
+  }
+  for (const Lop& lop : lops) {
+    const Vec2 lid = to_vec(lop.b->point()) - to_vec(lop.a->point());
+    const Cdt::Edge edge = edge_leaving(cdt, lop.a, lid, any_edge);
+    flood_block(cdt, edge.first, lop.k, group);
+    flood_block(cdt, edge.first->neighbor(edge.second), lop.k, group);
+    flood(edge_leaving(cdt, lop.apex, lop.out, any_edge).first, [](FaceHandle face) {
+      if (face->info().frozen) return false;
+      face->info().frozen = true;
+      return true;
+    });
+  }
+}
+
+// Refinement works on the faces in its domain: those of the group's blocks, lopped corners
+// aside.
+bool refinable(const Cdt& cdt, FaceHandle face) {
+  return !cdt.is_infinite(face) && face->info().block >= 0 && !face->info().frozen;
+}
+
+void mark_domain(Cdt& cdt) {
+  for (auto face = cdt.all_faces_begin(); face != cdt.all_faces_end(); ++face)
+    face->set_in_domain(refinable(cdt, face));
 }
 
 // Refines until no face is bad (true), or until the mesh would pass max_zones (false). The
@@ -385,7 +851,7 @@ bool in_domain(const Cdt& cdt, FaceHandle face) {
 // face except those whose smallest angle is at a sharp block corner. It usually adds nothing or
 // a handful of vertices (at most 116 over some 12000 random blocks); should it ever run away,
 // it stops insisting and CGAL's rule, which always terminates, finishes the mesh.
-bool refine(Cdt& cdt, const SizeEvaluator& size, int max_zones) {
+bool refine(Cdt& cdt, const GroupSize& size, int max_zones) {
   SizeShapeCriteria criteria(size);
   CGAL::Null_mesher_level null_level;
   CGAL::Null_mesh_visitor null_visitor;
@@ -398,7 +864,7 @@ bool refine(Cdt& cdt, const SizeEvaluator& size, int max_zones) {
   faces.scan_triangulation();
   // Every step inserts one vertex (refinement never removes any), so a bound on the number of
   // triangles bounds the loop. The count is all triangles (O(1) to read), so it allows for
-  // those outside the block at the start.
+  // those outside the blocks at the start.
   const std::size_t max_faces = static_cast<std::size_t>(max_zones) + cdt.tds().number_of_faces();
   // Inserts points until done (true), max_vertices or the budget (false).
   auto run = [&](std::size_t max_vertices) {
@@ -419,54 +885,49 @@ bool refine(Cdt& cdt, const SizeEvaluator& size, int max_zones) {
   return run(unlimited);
 }
 
+// ---------------------------------------------------------------------------------------------
+// Reading one block out of its group's CDT.
+
+// One block's share of the mesh, its gridpoints numbered from 0; appended in block order once
+// every group is meshed.
+struct BlockZones {
+  std::vector<Vec2> gp_position;
+  std::vector<std::array<int, 3>> zone_gp;
+  std::vector<BoundaryLoop> loops;
+};
+
 class GridpointNumbering {
  public:
-  GridpointNumbering(Mesh& mesh, int block) : mesh_(mesh), block_(block) {}
+  explicit GridpointNumbering(BlockZones& out) : out_(out) {}
   int operator()(VertexHandle v) {
     if (v->info().gp < 0) {
-      v->info().gp = mesh_.gp_count();
-      mesh_.gp_position.push_back(to_vec(v->point()));
-      mesh_.gp_block.push_back(block_);
+      v->info().gp = static_cast<int>(out_.gp_position.size());
+      out_.gp_position.push_back(to_vec(v->point()));
     }
     return v->info().gp;
   }
 
  private:
-  Mesh& mesh_;
-  int block_;
+  BlockZones& out_;
 };
 
-// The next vertex along the domain boundary from v towards `target` (domain on the left).
-// Usually one boundary edge leaves v; where rings touch there are more, and the one along
-// the ring edge (direction `along`) is taken.
-VertexHandle next_boundary_vertex(const Cdt& cdt, VertexHandle v, Vec2 along) {
-  VertexHandle best;
-  double best_deviation = std::numeric_limits<double>::infinity();
-  auto face = cdt.incident_faces(v);
-  const auto first = face;
-  do {
-    if (in_domain(cdt, face)) {
-      const int i = face->index(v);
-      const int e = Cdt::cw(i);  // edge v -> vertex(ccw(i)), face on its left
-      if (face->is_constrained(e) && !in_domain(cdt, face->neighbor(e))) {
-        const VertexHandle w = face->vertex(Cdt::ccw(i));
-        const Vec2 step = to_vec(w->point()) - to_vec(v->point());
-        const double deviation = dot(step, along) > 0.0 ? std::abs(cross(along, step)) / norm(step)
-                                                        : std::numeric_limits<double>::max();
-        if (deviation < best_deviation) {
-          best_deviation = deviation;
-          best = w;
-        }
-      }
-    }
-  } while (++face != first);
-  return best;
+// The next vertex along the boundary of block k from v (block on the left): the other end of
+// a constrained edge whose face on the left is in the block and whose face on the right is not
+// (on a glued edge that one is in the neighbouring block). Usually one such edge leaves v;
+// where rings touch there are more, and the one along the ring edge (direction `along`) is
+// taken.
+VertexHandle next_boundary_vertex(const Cdt& cdt, VertexHandle v, Vec2 along, int k) {
+  const Cdt::Edge edge = edge_leaving(cdt, v, along, [k](FaceHandle face, int e) {
+    return face->info().block == k && face->neighbor(e)->info().block != k;
+  });
+  if (edge.first == FaceHandle()) return VertexHandle();
+  return edge.first->vertex(Cdt::cw(edge.second));
 }
 
-// Walks one ring along the refined boundary, copying each ring edge's origin onto the
-// segments it was split into.
+// Walks one ring of block k along the refined boundary, copying each ring edge's origin onto
+// the segments it was split into.
 BoundaryLoop walk_ring(const Cdt& cdt, const Ring& ring, const std::vector<VertexHandle>& handles,
-                       GridpointNumbering& number, int block) {
+                       int k, GridpointNumbering& number, int block) {
   BoundaryLoop loop;
   const size_t n = handles.size();
   const size_t max_steps = cdt.number_of_vertices();
@@ -475,7 +936,7 @@ BoundaryLoop walk_ring(const Cdt& cdt, const Ring& ring, const std::vector<Verte
     const Vec2 along = ring.points[(i + 1) % n] - ring.points[i];
     VertexHandle v = handles[i];
     for (size_t step = 0; v != target; ++step) {
-      const VertexHandle w = next_boundary_vertex(cdt, v, along);
+      const VertexHandle w = next_boundary_vertex(cdt, v, along, k);
       if (w == VertexHandle() || step > max_steps)
         fail("block {}: lost the boundary after ({}, {}); the block outline is not simple", block,
              v->point().x(), v->point().y());
@@ -515,69 +976,21 @@ void sort_by_morton(std::vector<Handle>& items, const Box& box, Position positio
   items = std::move(sorted);
 }
 
-[[noreturn]] void fail_budget(const Block& block, const SizeField& field, int index,
-                              int max_zones) {
-  double sharpest = 360.0;
-  auto visit = [&](const Ring& ring) {
-    for (size_t i = 0; i < ring.points.size(); ++i)
-      sharpest = std::min(sharpest, interior_angle(ring, i));
-  };
-  visit(block.outer);
-  for (const Ring& hole : block.holes) visit(hole);
-  if (sharpest < kShapeBoundAngle)
-    fail(
-        "block {}: zoning it would make more than {} zones (zone edge {} m, sharpest corner "
-        "{:.3g} deg, which needs ever smaller zones); make the edge larger or the block less "
-        "slender",
-        index, max_zones, field.edge, sharpest);
-  fail("block {}: zoning it would make more than {} zones (zone edge {} m); make the edge larger",
-       index, max_zones, field.edge);
-}
-
-void mesh_block(const Block& block, const SizeField& field, int index, int max_zones, Mesh& mesh) {
-  check_size_field(field, index);
-  check_ring(block.outer, index, "outer boundary");
-  for (const Ring& hole : block.holes) check_ring(hole, index, "hole");
-  // The boundary walk relies on the block lying left of every ring.
-  if (!(ring_area(block.outer) > 0.0))
-    fail("block {}: its outer boundary must be counter-clockwise", index);
-  for (const Ring& hole : block.holes)
-    if (!(ring_area(hole) < 0.0)) fail("block {}: its holes must be clockwise", index);
-
-  // A cheap lower bound first: even with equilateral zones of the `far` size the block may
-  // need too many.
-  double area = ring_area(block.outer);
-  for (const Ring& hole : block.holes) area += ring_area(hole);  // holes: negative
-  const double fewest = area / (0.25 * std::sqrt(3.0) * field.far * field.far);
-  if (fewest > max_zones) fail_budget(block, field, index, max_zones);
-
-  Cdt cdt;
-  std::vector<std::vector<VertexHandle>> rings;
-  try {
-    rings.push_back(insert_ring(cdt, block.outer));
-    for (const Ring& hole : block.holes) rings.push_back(insert_ring(cdt, hole));
-  } catch (const Cdt::Intersection_of_constraints_exception&) {
-    fail("block {}: its boundary crosses itself and cannot be zoned", index);
-  }
-  mark_domain(cdt);
-  const SizeEvaluator size(field);
-  if (!refine(cdt, size, max_zones)) fail_budget(block, field, index, max_zones);
-
-  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) v->info().gp = -1;
-  GridpointNumbering number(mesh, index);
-
-  // Boundary gridpoints first, in loop order; then the interior ones in Z-order.
-  auto& loops = mesh.block_boundary[index];
-  loops.push_back(walk_ring(cdt, block.outer, rings[0], number, index));
-  for (size_t h = 0; h < block.holes.size(); ++h)
-    loops.push_back(walk_ring(cdt, block.holes[h], rings[h + 1], number, index));
+// Block k of its group (`faces`: its faces, labelled k): boundary gridpoints first, in loop
+// order; then the interior ones and the zones in Z-order.
+BlockZones read_block(const Cdt& cdt, const Block& block, int k, int index,
+                      const RingHandles& rings, const std::vector<FaceHandle>& faces) {
+  // Vertices on a shared edge still hold the numbers of the block read before: start afresh.
+  for (const FaceHandle face : faces)
+    for (int i = 0; i < 3; ++i) face->vertex(i)->info().gp = -1;
+  BlockZones out;
+  GridpointNumbering number(out);
+  for (size_t r = 0; r < rings.size(); ++r)
+    out.loops.push_back(walk_ring(cdt, ring_of(block, r), rings[r], k, number, index));
 
   const Box box = bounding_box(block.outer.points);
   std::vector<VertexHandle> interior;
-  std::vector<FaceHandle> faces;
-  for (auto face = cdt.finite_faces_begin(); face != cdt.finite_faces_end(); ++face) {
-    if (!face->is_in_domain()) continue;
-    faces.push_back(face);
+  for (const FaceHandle face : faces) {
     for (int i = 0; i < 3; ++i) {
       const VertexHandle v = face->vertex(i);
       if (v->info().gp == -1) {
@@ -591,16 +1004,139 @@ void mesh_block(const Block& block, const SizeField& field, int index, int max_z
     v->info().gp = -1;
     number(v);
   }
-  sort_by_morton(faces, box, [](FaceHandle f) {
+  std::vector<FaceHandle> ordered = faces;
+  sort_by_morton(ordered, box, [](FaceHandle f) {
     const Vec2 a = to_vec(f->vertex(0)->point()), b = to_vec(f->vertex(1)->point()),
                c = to_vec(f->vertex(2)->point());
     return Vec2{(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0};
   });
-  for (const FaceHandle face : faces) {
-    mesh.zone_gp.push_back({face->vertex(0)->info().gp, face->vertex(1)->info().gp,
-                            face->vertex(2)->info().gp});  // CGAL faces are counter-clockwise
-    mesh.zone_block.push_back(index);
+  for (const FaceHandle face : ordered)
+    out.zone_gp.push_back({face->vertex(0)->info().gp, face->vertex(1)->info().gp,
+                           face->vertex(2)->info().gp});  // CGAL faces are counter-clockwise
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------
+// One group.
+
+// Names the group by its block with the sharpest corner (the first block if none is sharp),
+// which is what usually makes the count explode.
+[[noreturn]] void fail_budget(const BlockSet& blocks, const Group& group,
+                              const std::vector<const SizeField*>& fields, int max_zones) {
+  double sharpest = 360.0, edge = std::numeric_limits<double>::infinity();
+  int named = group.front();
+  for (size_t k = 0; k < group.size(); ++k) {
+    const Block& block = blocks.blocks[group[k]];
+    edge = std::min(edge, fields[k]->edge);
+    for (size_t r = 0; r <= block.holes.size(); ++r) {
+      const Ring& ring = ring_of(block, r);
+      for (size_t i = 0; i < ring.points.size(); ++i) {
+        const double angle = interior_angle(ring, i);
+        if (angle < sharpest) {
+          sharpest = angle;
+          named = group[k];
+        }
+      }
+    }
   }
+  if (sharpest >= kShapeBoundAngle) named = group.front();
+  const std::string what =
+      group.size() == 1
+          ? fmt::format("block {}: zoning it", named)
+          : fmt::format("block {} and {} more blocks glued to it: zoning them", named,
+                        group.size() - 1);
+  if (sharpest < kShapeBoundAngle)
+    fail(
+        "{} would make more than {} zones (zone edge {} m, sharpest corner {:.3g} deg, which "
+        "needs ever smaller zones); make the edge larger or the block less slender",
+        what, max_zones, edge, sharpest);
+  fail("{} would make more than {} zones (zone edge {} m); make the edge larger", what, max_zones,
+       edge);
+}
+
+// Meshes the blocks of one group in one CDT and reads each block out into zones[block].
+void mesh_group(const BlockSet& blocks, const Group& group,
+                const std::vector<const SizeField*>& size_of_block,
+                const BlocksAtVertex& blocks_at, int max_zones, std::vector<BlockZones>& zones) {
+  std::vector<const SizeField*> fields;
+  for (int b : group) fields.push_back(size_of_block[b]);
+
+  // A cheap lower bound first: even with equilateral zones of their `far` size the blocks may
+  // need too many.
+  double fewest = 0.0;
+  for (size_t k = 0; k < group.size(); ++k) {
+    const Block& block = blocks.blocks[group[k]];
+    double area = ring_area(block.outer);
+    for (const Ring& hole : block.holes) area += ring_area(hole);  // holes: negative
+    fewest += area / (0.25 * std::sqrt(3.0) * fields[k]->far * fields[k]->far);
+  }
+  if (fewest > max_zones) fail_budget(blocks, group, fields, max_zones);
+
+  Cdt cdt;
+  std::vector<RingHandles> rings(group.size());
+  for (size_t k = 0; k < group.size(); ++k) {
+    const Block& block = blocks.blocks[group[k]];
+    try {
+      for (size_t r = 0; r <= block.holes.size(); ++r)
+        rings[k].push_back(insert_ring(cdt, ring_of(block, r), static_cast<int>(k)));
+    } catch (const Cdt::Intersection_of_constraints_exception&) {
+      if (group.size() == 1)
+        fail("block {}: its boundary crosses itself and cannot be zoned", group[k]);
+      fail("block {}: its boundary crosses itself or a block glued to it and cannot be zoned",
+           group[k]);
+    }
+  }
+  const GroupSize size(fields);
+  std::vector<Lop> lops;
+  if (group.size() > 1) {
+    mark_vertices_on_other_rings(cdt);
+    insert_neighbours(cdt, blocks, group, blocks_at);
+    lops = lop_sharp_corners(cdt, blocks, group, rings, size);
+  }
+  label_blocks(cdt, blocks, group, rings, lops);
+  mark_domain(cdt);
+  if (!refine(cdt, size, max_zones)) fail_budget(blocks, group, fields, max_zones);
+
+  label_blocks(cdt, blocks, group, rings, lops);
+  std::vector<std::vector<FaceHandle>> faces(group.size());
+  for (auto face = cdt.finite_faces_begin(); face != cdt.finite_faces_end(); ++face) {
+    // The mesher kept its own domain marks while refining; they must agree with the labels.
+    if (refinable(cdt, face) != face->is_in_domain())
+      fail("block {}: zoning lost track of the block's faces (an internal error)", group.front());
+    if (face->info().block >= 0) faces[face->info().block].push_back(face);
+  }
+  for (size_t k = 0; k < group.size(); ++k)
+    zones[group[k]] = read_block(cdt, blocks.blocks[group[k]], static_cast<int>(k),
+                                 group[k], rings[k], faces[k]);
+}
+
+// Appends the blocks' shares in block order, renumbering their gridpoints.
+Mesh assemble(std::vector<BlockZones>& zones) {
+  const size_t count = zones.size();
+  Mesh mesh;
+  mesh.block_first_gp.reserve(count + 1);
+  mesh.block_first_zone.reserve(count + 1);
+  mesh.block_boundary.resize(count);
+  mesh.block_first_gp.push_back(0);
+  mesh.block_first_zone.push_back(0);
+  for (size_t b = 0; b < count; ++b) {
+    BlockZones& block = zones[b];
+    const int offset = mesh.gp_count();
+    mesh.gp_position.insert(mesh.gp_position.end(), block.gp_position.begin(),
+                            block.gp_position.end());
+    mesh.gp_block.insert(mesh.gp_block.end(), block.gp_position.size(), static_cast<int>(b));
+    for (const auto& zone : block.zone_gp) {
+      mesh.zone_gp.push_back({zone[0] + offset, zone[1] + offset, zone[2] + offset});
+      mesh.zone_block.push_back(static_cast<int>(b));
+    }
+    for (BoundaryLoop& loop : block.loops)
+      for (int& gp : loop.gridpoints) gp += offset;
+    mesh.block_boundary[b] = std::move(block.loops);
+    block = BlockZones{};  // release it as the mesh grows
+    mesh.block_first_gp.push_back(mesh.gp_count());
+    mesh.block_first_zone.push_back(mesh.zone_count());
+  }
+  return mesh;
 }
 
 }  // namespace
@@ -614,20 +1150,17 @@ Mesh zone_blocks(const BlockSet& blocks, const std::vector<const SizeField*>& si
   const size_t count = blocks.blocks.size();
   if (size_of_block.size() != count)
     fail("zoning: {} size fields given for {} blocks", size_of_block.size(), count);
-  Mesh mesh;
-  mesh.block_first_gp.reserve(count + 1);
-  mesh.block_first_zone.reserve(count + 1);
-  mesh.block_boundary.resize(count);
-  mesh.block_first_gp.push_back(0);
-  mesh.block_first_zone.push_back(0);
-  for (size_t b = 0; b < count; ++b) {
+  for (size_t b = 0; b < count; ++b)
     if (size_of_block[b] != nullptr)
-      mesh_block(blocks.blocks[b], *size_of_block[b], static_cast<int>(b), max_zones_per_block,
-                 mesh);
-    mesh.block_first_gp.push_back(mesh.gp_count());
-    mesh.block_first_zone.push_back(mesh.zone_count());
-  }
-  return mesh;
+      check_block(blocks.blocks[b], *size_of_block[b], static_cast<int>(b));
+  std::vector<BlockZones> zones(count);
+  const std::vector<Group> groups = glued_groups(blocks, size_of_block);
+  BlocksAtVertex blocks_at;
+  if (std::any_of(groups.begin(), groups.end(), [](const Group& g) { return g.size() > 1; }))
+    blocks_at = blocks_at_vertices(blocks);
+  for (const Group& group : groups)
+    mesh_group(blocks, group, size_of_block, blocks_at, max_zones_per_block, zones);
+  return assemble(zones);
 }
 
 Mesh zone_blocks(const BlockSet& blocks, const std::vector<const SizeField*>& size_of_block) {
