@@ -28,8 +28,6 @@
 namespace edem {
 namespace {
 
-constexpr int kChunk = 1024;  // as in prepare.cpp: the unit of partial sums
-
 struct Partials {
   std::vector<double> zone_applied;  // per zone chunk
   std::vector<int> zone_inverted;

@@ -37,6 +37,10 @@ struct BoundarySegment {
   Stress at_a, at_b;    // the stress whose traction it carries, at each end [Pa]
 };
 
+// Zones and nodes are split among threads in blocks of this many; partial sums are taken over
+// the same blocks, so that reductions give the same bits for any thread count.
+inline constexpr int kChunk = 1024;
+
 // How zones and nodes are split among threads, and where each zone corner's contribution
 // goes. Contributions to a node are always summed in active-zone order, so the result is the
 // same bits for any thread count: a node whose zones all belong to one thread's range is

@@ -13,10 +13,6 @@
 namespace edem {
 namespace {
 
-// Size of the blocks of zones and nodes that thread ranges are made of; also the unit of the
-// partial sums, so that reductions give the same bits for any thread count.
-constexpr int kChunk = 1024;
-
 int find_root(std::vector<int>& parent, int i) {
   while (parent[static_cast<size_t>(i)] != i) {
     parent[static_cast<size_t>(i)] = parent[static_cast<size_t>(parent[static_cast<size_t>(i)])];
