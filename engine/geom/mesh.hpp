@@ -1,7 +1,8 @@
 // Zones and gridpoints of the model: each block meshed into triangles on its own.
 //
 // Flat arrays indexed by integers. Gridpoints of one block are contiguous, and so are its
-// zones; gridpoints on a joint are distinct on its two sides (blocks mesh independently).
+// zones; gridpoints on a joint are distinct on its two sides. Along a glued edge both blocks
+// have gridpoints at the same places (zoning.hpp), which the solver merges into one node.
 // Zones are counter-clockwise. A block's boundary is kept as ordered gridpoint loops so that
 // contacts can walk it.
 #pragma once

@@ -9,7 +9,9 @@
 // field and the shape bound, splitting a shared edge for both blocks at once. A zone budget
 // stops runaway meshes. The refined CDT is labelled again and read out block by block:
 // boundary gridpoints in loop order first, then interior gridpoints and zones in Z-order. A
-// block with no glued edge is a group of one, meshed exactly as it would be alone.
+// block with no glued edge is a group of one, meshed exactly as it would be alone; a group of
+// several also gets its neighbours' rings as bare constraints and its shared sharp corners
+// lopped (see insert_neighbours() and lop_sharp_corners()).
 #include "geom/zoning.hpp"
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -576,7 +578,8 @@ BlocksAtVertex blocks_at_vertices(const BlockSet& blocks) {
       for (Vec2 p : ring_of(blocks.blocks[b], r).points)
         if (is_finite(p)) {
           std::vector<int>& list = at[{p.x, p.y}];
-          if (list.empty() || list.back() != static_cast<int>(b)) list.push_back(static_cast<int>(b));
+          if (list.empty() || list.back() != static_cast<int>(b))
+            list.push_back(static_cast<int>(b));
         }
   return at;
 }
@@ -614,7 +617,7 @@ void insert_neighbours(Cdt& cdt, const BlockSet& blocks, const Group& group,
         for (size_t i = 0; i < handles.size(); ++i)
           cdt.insert_constraint(handles[i], handles[(i + 1) % handles.size()]);
       } catch (const Cdt::Intersection_of_constraints_exception&) {
-        fail("block {}: its boundary crosses that of block {} and cannot be zoned", b,
+        fail("block {}: its boundary crosses a block glued to block {} and cannot be zoned", b,
              group.front());
       }
     }
@@ -692,32 +695,15 @@ std::pair<Cdt::Edge, VertexHandle> constrained_edge_towards(const Cdt& cdt, Vert
   return best;
 }
 
-// Moves p by units in the last place until it is on the edge from v to w or on its `side`.
-// Rounded, a point meant for the edge may fall beside it; on the far side, outside the corner,
-// the triangulation may hold a sliver (a straight cut through v, outside the group) that the
-// point would turn over.
-Point onto_edge_or_side(Point p, const Point& v, const Point& w, CGAL::Orientation side) {
-  const Vec2 normal = side == CGAL::LEFT_TURN ? Vec2{v.y() - w.y(), w.x() - v.x()}
-                                              : Vec2{w.y() - v.y(), v.x() - w.x()};
-  const double inf = std::numeric_limits<double>::infinity();
-  for (int step = 0; step < 64 && CGAL::orientation(v, w, p) == -side; ++step)
-    p = Point(normal.x == 0.0 ? p.x() : std::nextafter(p.x(), normal.x > 0.0 ? inf : -inf),
-              normal.y == 0.0 ? p.y() : std::nextafter(p.y(), normal.y > 0.0 ? inf : -inf));
-  return p;
-}
-
 // The point at distance `radius` from v on its constrained edge in direction `along`, inserted
 // into that edge; the one already there when the lop on the other side of the edge made it.
-// `side`: the corner's side of that edge.
-VertexHandle lop_point(Cdt& cdt, VertexHandle v, Vec2 along, double radius,
-                       CGAL::Orientation side) {
+VertexHandle lop_point(Cdt& cdt, VertexHandle v, Vec2 along, double radius) {
   const auto [edge, far] = constrained_edge_towards(cdt, v, along);
   const Vec2 a = to_vec(v->point()), b = to_vec(far->point());
   const double length = norm(b - a);
   if (length < 1.5 * radius) return far;  // the ring's own vertices are 4 radii away or more
   const Vec2 p = a + (radius / length) * (b - a);
-  const Point point = onto_edge_or_side(Point(p.x, p.y), v->point(), far->point(), side);
-  return cdt.insert(point, Cdt::EDGE, edge.first, edge.second);
+  return cdt.insert(Point(p.x, p.y), Cdt::EDGE, edge.first, edge.second);
 }
 
 // Distance from the apex to the nearest edge across it in the faces of its corner [m]: a
@@ -744,12 +730,28 @@ std::vector<double> lop_radii(const Cdt& cdt, const std::vector<Lop>& lops,
   std::vector<double> radius;
   for (const Lop& lop : lops) {
     const Vec2 c = to_vec(lop.apex->point());
-    radius.push_back(std::min(0.25 * corner_clearance(cdt, lop), size.at(c) / (2.0 + size.growth())));
+    radius.push_back(
+        std::min(0.25 * corner_clearance(cdt, lop), size.at(c) / (2.0 + size.growth())));
   }
   for (size_t l = 0; l < lops.size(); ++l)
     for (size_t m = 0; m < lops.size(); ++m)
       if (lops[m].apex == lops[l].apex) radius[l] = std::min(radius[l], radius[m]);
   return radius;
+}
+
+// Whether the faces around v are all counter-clockwise. A lop point is rounded off its edge by
+// a unit in the last place; next to a sliver that could turn a face over, which would leave
+// CGAL working on a broken triangulation.
+bool star_turns_left(const Cdt& cdt, VertexHandle v) {
+  auto face = cdt.incident_faces(v);
+  const auto first = face;
+  do {
+    if (!cdt.is_infinite(face) &&
+        CGAL::orientation(face->vertex(0)->point(), face->vertex(1)->point(),
+                          face->vertex(2)->point()) != CGAL::LEFT_TURN)
+      return false;
+  } while (++face != first);
+  return true;
 }
 
 // Lops every sharp corner at a vertex several blocks of the group share; returns the lops.
@@ -759,8 +761,11 @@ std::vector<Lop> lop_sharp_corners(Cdt& cdt, const BlockSet& blocks, const Group
   const std::vector<double> radius = lop_radii(cdt, lops, size);  // before any lop
   for (size_t l = 0; l < lops.size(); ++l) {
     Lop& lop = lops[l];
-    lop.a = lop_point(cdt, lop.apex, lop.out, radius[l], CGAL::LEFT_TURN);
-    lop.b = lop_point(cdt, lop.apex, lop.back, radius[l], CGAL::RIGHT_TURN);
+    lop.a = lop_point(cdt, lop.apex, lop.out, radius[l]);
+    lop.b = lop_point(cdt, lop.apex, lop.back, radius[l]);
+    if (!star_turns_left(cdt, lop.a) || !star_turns_left(cdt, lop.b))
+      fail("block {}: zoning could not cut off its sharp corner at ({}, {}) (an internal error)",
+           group[lop.k], lop.apex->point().x(), lop.apex->point().y());
     cdt.insert_constraint(lop.a, lop.b);
   }
   return lops;
@@ -1043,8 +1048,8 @@ BlockZones read_block(const Cdt& cdt, const Block& block, int k, int index,
   const std::string what =
       group.size() == 1
           ? fmt::format("block {}: zoning it", named)
-          : fmt::format("block {} and {} more blocks glued to it: zoning them", named,
-                        group.size() - 1);
+          : fmt::format("block {} and the {} {} glued to it: zoning them together", named,
+                        group.size() - 1, group.size() == 2 ? "block" : "blocks");
   if (sharpest < kShapeBoundAngle)
     fail(
         "{} would make more than {} zones (zone edge {} m, sharpest corner {:.3g} deg, which "
@@ -1052,6 +1057,24 @@ BlockZones read_block(const Cdt& cdt, const Block& block, int k, int index,
         what, max_zones, edge, sharpest);
   fail("{} would make more than {} zones (zone edge {} m); make the edge larger", what, max_zones,
        edge);
+}
+
+// Inserts the rings of the group's blocks; returns their vertex handles, per block.
+std::vector<RingHandles> insert_rings(Cdt& cdt, const BlockSet& blocks, const Group& group) {
+  std::vector<RingHandles> rings(group.size());
+  for (size_t k = 0; k < group.size(); ++k) {
+    const Block& block = blocks.blocks[group[k]];
+    try {
+      for (size_t r = 0; r <= block.holes.size(); ++r)
+        rings[k].push_back(insert_ring(cdt, ring_of(block, r), static_cast<int>(k)));
+    } catch (const Cdt::Intersection_of_constraints_exception&) {
+      if (group.size() == 1)
+        fail("block {}: its boundary crosses itself and cannot be zoned", group[k]);
+      fail("block {}: its boundary crosses itself or a block glued to it and cannot be zoned",
+           group[k]);
+    }
+  }
+  return rings;
 }
 
 // Meshes the blocks of one group in one CDT and reads each block out into zones[block].
@@ -1073,19 +1096,7 @@ void mesh_group(const BlockSet& blocks, const Group& group,
   if (fewest > max_zones) fail_budget(blocks, group, fields, max_zones);
 
   Cdt cdt;
-  std::vector<RingHandles> rings(group.size());
-  for (size_t k = 0; k < group.size(); ++k) {
-    const Block& block = blocks.blocks[group[k]];
-    try {
-      for (size_t r = 0; r <= block.holes.size(); ++r)
-        rings[k].push_back(insert_ring(cdt, ring_of(block, r), static_cast<int>(k)));
-    } catch (const Cdt::Intersection_of_constraints_exception&) {
-      if (group.size() == 1)
-        fail("block {}: its boundary crosses itself and cannot be zoned", group[k]);
-      fail("block {}: its boundary crosses itself or a block glued to it and cannot be zoned",
-           group[k]);
-    }
-  }
+  const std::vector<RingHandles> rings = insert_rings(cdt, blocks, group);
   const GroupSize size(fields);
   std::vector<Lop> lops;
   if (group.size() > 1) {

@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 #include <numbers>
 
 #include "scenes.hpp"
@@ -129,6 +131,57 @@ TEST(ExampleGeometry, GeometryAfterZoningIsRezoned) {
   double sum = 0;
   for (int z = 0; z < model.mesh().zone_count(); ++z) sum += model.mesh().zone_area(z);
   EXPECT_NEAR(sum, 36000.0, 1e-9 * 36000.0);
+}
+
+
+// Both faces along an arrangement edge have it with the same end points, so zoning finds the
+// blocks joined by a glued region outline by exact coordinates.
+TEST(ExampleGeometry, GluedEdgesHaveTwinsWithTheSameEndPoints) {
+  Model model = scenes::jointed_cavern();
+  std::multimap<std::array<double, 4>, std::pair<int, bool>> edges;  // -> block, glued
+  const auto& blocks = model.blocks().blocks;
+  for (size_t b = 0; b < blocks.size(); ++b) {
+    auto add = [&](const Ring& ring) {
+      for (size_t i = 0; i < ring.points.size(); ++i) {
+        const Vec2 p = ring.points[i], q = ring.points[(i + 1) % ring.points.size()];
+        edges.insert({{p.x, p.y, q.x, q.y}, {static_cast<int>(b), ring.edges[i].glued}});
+      }
+    };
+    add(blocks[b].outer);
+    for (const Ring& hole : blocks[b].holes) add(hole);
+  }
+  int glued = 0;
+  for (const auto& [key, value] : edges) {
+    if (!value.second) continue;
+    ++glued;
+    const auto twin = edges.find({key[2], key[3], key[0], key[1]});
+    ASSERT_NE(twin, edges.end()) << "glued edge of block " << value.first << " has no twin";
+    EXPECT_NE(twin->second.first, value.first);
+    EXPECT_TRUE(twin->second.second) << "glued on one side only";
+  }
+  EXPECT_GT(glued, 16);  // the warhead outline, cut by the joints
+}
+
+// The blocks on the two sides of the cavern outline have the same gridpoints along it.
+TEST(ExampleGeometry, ZonesConformAlongTheGluedOutline) {
+  Model model = scenes::jointed_cavern();
+  model.zone(example_zoning());
+  const Mesh& mesh = model.mesh();
+  std::multimap<std::array<double, 4>, int> segments;  // glued boundary segments -> block
+  for (size_t b = 0; b < mesh.block_boundary.size(); ++b)
+    for (const BoundaryLoop& loop : mesh.block_boundary[b])
+      for (size_t k = 0; k < loop.gridpoints.size(); ++k) {
+        if (!loop.edges[k].glued) continue;
+        const Vec2 p = mesh.gp_position[loop.gridpoints[k]];
+        const Vec2 q = mesh.gp_position[loop.gridpoints[(k + 1) % loop.gridpoints.size()]];
+        segments.insert({{p.x, p.y, q.x, q.y}, static_cast<int>(b)});
+      }
+  EXPECT_GT(segments.size(), 2u * 100);  // ~130 m of outline at ~1 m zones, both sides
+  for (const auto& [key, block] : segments) {
+    const auto twin = segments.find({key[2], key[3], key[0], key[1]});
+    ASSERT_NE(twin, segments.end()) << "block " << block << " has a gridpoint its neighbour lacks";
+    EXPECT_NE(twin->second, block);
+  }
 }
 
 }  // namespace
