@@ -1,7 +1,9 @@
 // Scenes shared by unit tests and benchmarks, built through the engine API.
 #pragma once
 
+#include <array>
 #include <cmath>
+#include <map>
 #include <numbers>
 
 #include "model/model.hpp"
@@ -38,6 +40,21 @@ inline Model jointed_cavern() {
   model.add_joint_set(cross_set);
   model.add_region({"cavern", warhead(24, 48, 8, 16), true});
   return model;
+}
+
+// Boundary segments of zoned blocks on glued ring edges, directed with their block on the left,
+// by exact end-point coordinates: (x0, y0, x1, y1) -> block.
+inline std::multimap<std::array<double, 4>, int> glued_segments(const Mesh& mesh) {
+  std::multimap<std::array<double, 4>, int> segments;
+  for (size_t b = 0; b < mesh.block_boundary.size(); ++b)
+    for (const BoundaryLoop& loop : mesh.block_boundary[b])
+      for (size_t k = 0; k < loop.gridpoints.size(); ++k) {
+        if (!loop.edges[k].glued) continue;
+        const Vec2 p = mesh.gp_position[static_cast<size_t>(loop.gridpoints[k])];
+        const Vec2 q = mesh.gp_position[static_cast<size_t>(loop.gridpoints[(k + 1) % loop.gridpoints.size()])];
+        segments.insert({{p.x, p.y, q.x, q.y}, static_cast<int>(b)});
+      }
+  return segments;
 }
 
 }  // namespace edem::scenes

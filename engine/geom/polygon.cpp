@@ -24,14 +24,14 @@ std::vector<Point> to_points(const Polygon& polygon) {
   return points;
 }
 
+}  // namespace
+
 double segment_distance(Vec2 p, Vec2 a, Vec2 b) {
   const Vec2 ab = b - a;
   const double length2 = dot(ab, ab);
   const double t = length2 > 0.0 ? std::clamp(dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
   return norm(p - (a + t * ab));
 }
-
-}  // namespace
 
 double signed_area(const Polygon& polygon) {
   // Relative to the first vertex, so that a small polygon far from the origin keeps its digits.

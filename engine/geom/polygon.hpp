@@ -23,6 +23,9 @@ bool contains(const Polygon& polygon, Vec2 point);
 // Distance from a point to the polygon: 0 inside or on it, else to the nearest edge [m].
 double distance(const Polygon& polygon, Vec2 point);
 
+// Distance from p to the segment a-b [m].
+double segment_distance(Vec2 p, Vec2 a, Vec2 b);
+
 struct Box {
   double x0, x1, y0, y1;  // [m]
   double diagonal() const;

@@ -662,13 +662,6 @@ std::vector<Lop> corners_to_lop(const BlockSet& blocks, const Group& group,
   return lops;
 }
 
-double segment_distance(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 ab = b - a;
-  const double length2 = dot(ab, ab);
-  const double t = length2 > 0.0 ? std::clamp(dot(p - a, ab) / length2, 0.0, 1.0) : 0.0;
-  return norm(p - (a + t * ab));
-}
-
 const auto any_edge = [](FaceHandle, int) { return true; };
 
 // The constrained edge at v closest to direction `along`, its block on either side, as (a

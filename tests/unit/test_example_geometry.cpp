@@ -167,15 +167,7 @@ TEST(ExampleGeometry, ZonesConformAlongTheGluedOutline) {
   Model model = scenes::jointed_cavern();
   model.zone(example_zoning());
   const Mesh& mesh = model.mesh();
-  std::multimap<std::array<double, 4>, int> segments;  // glued boundary segments -> block
-  for (size_t b = 0; b < mesh.block_boundary.size(); ++b)
-    for (const BoundaryLoop& loop : mesh.block_boundary[b])
-      for (size_t k = 0; k < loop.gridpoints.size(); ++k) {
-        if (!loop.edges[k].glued) continue;
-        const Vec2 p = mesh.gp_position[loop.gridpoints[k]];
-        const Vec2 q = mesh.gp_position[loop.gridpoints[(k + 1) % loop.gridpoints.size()]];
-        segments.insert({{p.x, p.y, q.x, q.y}, static_cast<int>(b)});
-      }
+  const auto segments = scenes::glued_segments(mesh);  // glued boundary segments -> block
   EXPECT_GT(segments.size(), 2u * 100);  // ~130 m of outline at ~1 m zones, both sides
   for (const auto& [key, block] : segments) {
     const auto twin = segments.find({key[2], key[3], key[0], key[1]});

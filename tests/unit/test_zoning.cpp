@@ -17,6 +17,7 @@
 #include "core/error.hpp"
 #include "geom/cutter.hpp"
 #include "geom/zoning.hpp"
+#include "scenes.hpp"
 
 namespace edem {
 namespace {
@@ -111,13 +112,6 @@ double longest_edge(const Mesh& mesh, int zone) {
 
 bool same_origin(const EdgeOrigin& a, const EdgeOrigin& b) {
   return a.kind == b.kind && a.set == b.set && a.source == b.source && a.glued == b.glued;
-}
-
-// Distance from p to the segment [a, b].
-double segment_distance(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 ab = b - a;
-  const double t = std::clamp(dot(p - a, ab) / dot(ab, ab), 0.0, 1.0);
-  return norm(p - (a + t * ab));
 }
 
 struct Checked {
@@ -666,20 +660,7 @@ Polygon box(double x0, double x1, double y0, double y1) {
   return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
 }
 
-// Boundary segments of zoned blocks on glued ring edges, directed with their block on the left,
-// by exact end-point coordinates: (x0, y0, x1, y1) -> block.
-std::multimap<std::array<double, 4>, int> glued_segments(const Mesh& mesh) {
-  std::multimap<std::array<double, 4>, int> segments;
-  for (size_t b = 0; b < mesh.block_boundary.size(); ++b)
-    for (const BoundaryLoop& loop : mesh.block_boundary[b])
-      for (size_t k = 0; k < loop.gridpoints.size(); ++k) {
-        if (!loop.edges[k].glued) continue;
-        const Vec2 p = mesh.gp_position[loop.gridpoints[k]];
-        const Vec2 q = mesh.gp_position[loop.gridpoints[(k + 1) % loop.gridpoints.size()]];
-        segments.insert({{p.x, p.y, q.x, q.y}, static_cast<int>(b)});
-      }
-  return segments;
-}
+using scenes::glued_segments;
 
 // For scenes whose glued edges all lie between two zoned blocks: every glued boundary segment
 // has its reverse, bit for bit, in another block, so both sides of each glued edge have the same
