@@ -1,28 +1,35 @@
-// The cycle, as four passes over flat arrays inside one parallel region:
-//   1. zones: volumetric strain rate x area, to the node accumulators;
-//   2. nodes: averaged volumetric strain rate (nodal mixed discretisation);
-//   3. zones: strain rate with the averaged volumetric part, constitutive update, nodal forces;
-//   4. nodes: unbalanced force, damping, velocity and displacement.
+// The cycle, as passes over flat arrays inside one parallel region:
+//   1. mixed zones: volumetric strain rate x area, to the node accumulators;
+//   2. nodes: averaged volumetric strain rate;
+//   3. zones: strain rate (averaged volumetric part in mixed zones), constitutive update, nodal
+//      forces (mixed zones: area x mean stress change to the node accumulators instead);
+//   4. nodes: averaged mean stress change;
+//   5. mixed zones: nodal forces with the averaged mean stress change;
+//   6. nodes: unbalanced force, damping, velocity and displacement.
+// Passes 1, 2, 4 and 5 run only with set{ mixed = true }.
 //
-// Mixed discretisation (as FLAC3D's for tetrahedra), with set{ mixed = true } only, in the
-// plastic (Mohr-Coulomb) zones. Measured here: it improves the elastic Kirsch stresses (max
-// error 2.2 % -> 0.9 %) but spoils Salencon (R0 +6 %, wall u +9 % against +2 % with plain
-// triangles) and goes unstable with dilation 30 deg; plain triangles pass Salencon on the
-// verification mesh, so it is off by default. What it does: each
-// one's volumetric strain rate is replaced by the mean over its corners of the area-weighted
-// nodal average over the plastic zones, the difference added as an isotropic strain (a third
-// on each axis, out of plane too; putting it in-plane only would add a deviatoric part and
-// push szz about, which spoils the plastic answer). Constant strain triangles alone lock in
-// plastic flow, where the volume change is constrained; the averaged form does not, and it
-// keeps the stiffness symmetric (the form is vol^T A Q P vol with A Q P symmetric) and no
-// stiffer than the plain triangles. Elastic zones stay plain triangles: averaging across rows
-// of zones costs accuracy next to boundaries (an O(h) error in a gravity column) and buys
-// nothing where no plastic flow happens.
+// Mixed discretisation (nodal mixed discretisation, as FLAC3D's for tetrahedra), with
+// set{ mixed = true } only, in the Mohr-Coulomb zones. Each one's volumetric strain rate is
+// replaced by the mean over its corners of the area-weighted nodal average over those zones,
+// the difference added as an isotropic strain, a third on each axis, out of plane too
+// (B-bar in plane strain). The forces see the same average of the mean stress change since the
+// last insitu{}, so the stress does work on the strain that produced it and an initial state in
+// equilibrium stays in equilibrium. With the zone's own mean stress in the forces instead (the
+// first version), the plastic zones came out over-soft and went unstable with dilation.
+// Measured (tests/verification/incompressible_hole.lua and Salencon, edge 0.03 a):
+//   near-incompressible elasticity (nu = 0.499): wall u 0.1 % off, hoop stress 26 % off in the
+//     worst zone, against 2.9 % and 645 % (locking) with plain triangles;
+//   Salencon psi = 30: R0 +0.1 %, wall u +0.4 %, ring stresses <= 0.9 % of P0 (plain +0.3, +0.2);
+//   Salencon psi = 0: R0 +29 %, wall u +72 %: the non-dilatant plastic zones find a soft
+//     non-axisymmetric mode that keeps drifting, while plain triangles give +0.8 % and +1.5 %.
+// So it stays off by default until the psi = 0 case is understood. Elastic zones stay plain
+// triangles: rock is far from incompressible, and averaging next to boundaries costs accuracy.
 #include "solver/cycle.hpp"
 
 #include <omp.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace edem {
@@ -30,6 +37,7 @@ namespace {
 
 struct Partials {
   std::vector<double> zone_applied;  // per zone chunk
+  std::vector<double> mixed_applied; // per zone chunk, the mixed zones' part
   std::vector<int> zone_inverted;
   std::vector<double> unbalanced, kinetic, num, den, speed;  // per node chunk
   std::vector<int> fastest;
@@ -55,7 +63,8 @@ void zone_volume_pass(Mechanics& m, int begin, int end) {
   }
 }
 
-void node_volume_pass(Mechanics& m, int begin, int end) {
+// Area-weighted nodal average of what the zone passes left in acc_volume; clears them.
+void node_average_pass(Mechanics& m, int begin, int end, double* out) {
   double* acc = m.acc_volume.data();
   const int* first = m.partition.gather_first.data();
   const int* gather = m.partition.gather.data();
@@ -71,8 +80,26 @@ void node_volume_pass(Mechanics& m, int begin, int end) {
         acc[gather[s]] = 0.0;
       }
     }
-    m.node_volume[static_cast<size_t>(n)] = sum * m.inv_area[static_cast<size_t>(n)];
+    out[n] = sum * m.inv_area[static_cast<size_t>(n)];
   }
+}
+
+// Nodal forces of one zone from the stress `s`, its in-plane normal stresses shifted by `shift`.
+template <bool kMeasure>
+double add_zone_forces(Mechanics& m, const ZoneGeometry& g, const std::array<int, 3>& dest,
+                       const Stress& s, double shift) {
+  double* acc = m.acc_force.data();
+  const double a = g.area, sxx = s.xx + shift, syy = s.yy + shift;
+  double applied = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    const double fx = -a * (sxx * g.b[i] + s.xy * g.c[i]);
+    const double fy = -a * (s.xy * g.b[i] + syy * g.c[i]);
+    const size_t d = static_cast<size_t>(dest[static_cast<size_t>(i)]);
+    acc[2 * d] += fx;
+    acc[2 * d + 1] += fy;
+    if constexpr (kMeasure) applied += std::sqrt(fx * fx + fy * fy);
+  }
+  return applied;
 }
 
 bool inverted(const Mechanics& m, const ZoneGeometry& g) {
@@ -85,11 +112,13 @@ bool inverted(const Mechanics& m, const ZoneGeometry& g) {
   return (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]) <= 0.0;
 }
 
+// Strain rate, constitutive update and nodal forces. A mixed zone's forces wait for the
+// averaged mean stress (mixed_force_pass); it leaves area x its mean stress change instead.
 template <bool kMeasure>
 void zone_force_pass(Mechanics& m, int begin, int end, Partials& partials) {
   const double* v = m.v.data();
   const double* nv = m.node_volume.data();
-  double* acc = m.acc_force.data();
+  const bool mixed_on = !m.mixed.empty();
   const double dt = m.step;
   double applied = 0.0;
   int inverted_zone = -1;
@@ -100,38 +129,41 @@ void zone_force_pass(Mechanics& m, int begin, int end, Partials& partials) {
                  n2 = static_cast<size_t>(g.node[2]);
     const double vx0 = v[2 * n0], vy0 = v[2 * n0 + 1], vx1 = v[2 * n1], vy1 = v[2 * n1 + 1],
                  vx2 = v[2 * n2], vy2 = v[2 * n2 + 1];
-    double exx = g.b[0] * vx0 + g.b[1] * vx1 + g.b[2] * vx2;
-    double eyy = g.c[0] * vy0 + g.c[1] * vy1 + g.c[2] * vy2;
+    const double exx = g.b[0] * vx0 + g.b[1] * vx1 + g.b[2] * vx2;
+    const double eyy = g.c[0] * vy0 + g.c[1] * vy1 + g.c[2] * vy2;
     const double gxy = g.c[0] * vx0 + g.c[1] * vx1 + g.c[2] * vx2 + g.b[0] * vy0 +
                        g.b[1] * vy1 + g.b[2] * vy2;
     const size_t zi = static_cast<size_t>(z);
     const MaterialParams& p = m.params[static_cast<size_t>(m.zone_material[zi])];
     Stress& s = m.stress[zi];
-    if (p.model == MaterialModel::elastic) {
-      elastic_update(p, s, exx * dt, eyy * dt, gxy * dt);
+    const auto& dest = m.partition.dest[static_cast<size_t>(k)];
+    if (p.model == MaterialModel::elastic || !mixed_on) {
+      if (p.model == MaterialModel::elastic) {
+        elastic_update(p, s, exx * dt, eyy * dt, gxy * dt);
+      } else {
+        const std::uint8_t now = mohr_coulomb_update(p, s, exx * dt, eyy * dt, gxy * dt, 0.0);
+        m.zone_state[zi] = static_cast<std::uint8_t>((m.zone_state[zi] & (kShearPast | kTensionPast)) |
+                                                     now | (now << 2));
+      }
+      const double f = add_zone_forces<kMeasure>(m, g, dest, s, 0.0);
+      if constexpr (kMeasure) applied += f;
     } else {
-      // The averaged volumetric rate replaces the zone's own as an isotropic strain (as in
-      // FLAC3D): a third on each axis, the out-of-plane one included.
-      const double mixed = m.mixed.empty() ? exx + eyy : (nv[n0] + nv[n1] + nv[n2]) * (1.0 / 3.0);
+      // The averaged volumetric rate replaces the zone's own as an isotropic strain, a third on
+      // each axis, the out-of-plane one included (B-bar in plane strain).
+      const double mixed = (nv[n0] + nv[n1] + nv[n2]) * (1.0 / 3.0);
       const double shift = (mixed - (exx + eyy)) * (1.0 / 3.0);
       const std::uint8_t now =
           mohr_coulomb_update(p, s, (exx + shift) * dt, (eyy + shift) * dt, gxy * dt, shift * dt);
       m.zone_state[zi] = static_cast<std::uint8_t>((m.zone_state[zi] & (kShearPast | kTensionPast)) |
                                                    now | (now << 2));
+      const double weighted = g.area * (mean_stress(s) - m.mean_stress_ref[zi]);
+      double* acc = m.acc_volume.data();
+      acc[dest[0]] += weighted;
+      acc[dest[1]] += weighted;
+      acc[dest[2]] += weighted;
     }
-    const double a = g.area;
-    const auto& dest = m.partition.dest[static_cast<size_t>(k)];
-    for (int i = 0; i < 3; ++i) {
-      const double fx = -a * (s.xx * g.b[i] + s.xy * g.c[i]);
-      const double fy = -a * (s.xy * g.b[i] + s.yy * g.c[i]);
-      const size_t d = static_cast<size_t>(dest[static_cast<size_t>(i)]);
-      acc[2 * d] += fx;
-      acc[2 * d + 1] += fy;
-      if constexpr (kMeasure) applied += std::sqrt(fx * fx + fy * fy);
-    }
-    if constexpr (kMeasure)
-      if (inverted_zone < 0 && inverted(m, g)) inverted_zone = z;
     if constexpr (kMeasure) {
+      if (inverted_zone < 0 && inverted(m, g)) inverted_zone = z;
       if ((k + 1) % kChunk == 0 || k + 1 == end) {
         partials.zone_applied[static_cast<size_t>(k / kChunk)] = applied;
         partials.zone_inverted[static_cast<size_t>(k / kChunk)] = inverted_zone;
@@ -139,6 +171,26 @@ void zone_force_pass(Mechanics& m, int begin, int end, Partials& partials) {
         inverted_zone = -1;
       }
     }
+  }
+}
+
+// Forces of the mixed zones: the mean stress change the force sees is the same average of the
+// zones around as the volumetric strain rate the constitutive law saw, so the stress does work
+// on exactly the strain that produced it (with own-zone mean stress here, the plastic zones
+// gained energy from nowhere: over-soft and, with dilation, unstable).
+template <bool kMeasure>
+void mixed_force_pass(Mechanics& m, int begin, int end, Partials& partials) {
+  const double* np = m.node_pressure.data();
+  for (int j = begin; j < end; ++j) {
+    const int k = m.mixed[static_cast<size_t>(j)];
+    const size_t z = static_cast<size_t>(m.active[static_cast<size_t>(k)]);
+    const ZoneGeometry& g = m.geometry[z];
+    const Stress& s = m.stress[z];
+    const double averaged = (np[g.node[0]] + np[g.node[1]] + np[g.node[2]]) * (1.0 / 3.0);
+    const double shift = m.mean_stress_ref[z] + averaged - mean_stress(s);
+    const double f = add_zone_forces<kMeasure>(m, g, m.partition.dest[static_cast<size_t>(k)], s, shift);
+    // Zone ranges are whole chunks, so each chunk's sum is one thread's, in zone order.
+    if constexpr (kMeasure) partials.mixed_applied[static_cast<size_t>(k / kChunk)] += f;
   }
 }
 
@@ -267,6 +319,7 @@ Measure run_cycles(Mechanics& m, int count) {
   const size_t node_chunks = (static_cast<size_t>(m.node_count) + kChunk - 1) / kChunk;
   Partials partials;
   partials.zone_applied.assign(zone_chunks, 0.0);
+  partials.mixed_applied.assign(zone_chunks, 0.0);
   partials.zone_inverted.assign(zone_chunks, -1);
   for (auto* sums : {&partials.unbalanced, &partials.kinetic, &partials.num, &partials.den})
     sums->assign(node_chunks, 0.0);
@@ -293,7 +346,8 @@ Measure run_cycles(Mechanics& m, int count) {
           zone_volume_pass(m, part.mixed_begin[static_cast<size_t>(r)], part.mixed_begin[static_cast<size_t>(r) + 1]);
 #pragma omp barrier
         for (int r = me; r < ranges; r += team)
-          node_volume_pass(m, part.node_begin[static_cast<size_t>(r)], part.node_begin[static_cast<size_t>(r) + 1]);
+          node_average_pass(m, part.node_begin[static_cast<size_t>(r)], part.node_begin[static_cast<size_t>(r) + 1],
+                            m.node_volume.data());
 #pragma omp barrier
       }
       for (int r = me; r < ranges; r += team) {
@@ -304,6 +358,20 @@ Measure run_cycles(Mechanics& m, int count) {
           zone_force_pass<false>(m, b, e, partials);
       }
 #pragma omp barrier
+      if (any_mixed) {
+        for (int r = me; r < ranges; r += team)
+          node_average_pass(m, part.node_begin[static_cast<size_t>(r)], part.node_begin[static_cast<size_t>(r) + 1],
+                            m.node_pressure.data());
+#pragma omp barrier
+        for (int r = me; r < ranges; r += team) {
+          const int b = part.mixed_begin[static_cast<size_t>(r)], e = part.mixed_begin[static_cast<size_t>(r) + 1];
+          if (measure)
+            mixed_force_pass<true>(m, b, e, partials);
+          else
+            mixed_force_pass<false>(m, b, e, partials);
+        }
+#pragma omp barrier
+      }
       for (int r = me; r < ranges; r += team) {
         const int b = part.node_begin[static_cast<size_t>(r)], e = part.node_begin[static_cast<size_t>(r) + 1];
         const bool rec = record && cycle == 0;
@@ -320,7 +388,7 @@ Measure run_cycles(Mechanics& m, int count) {
   Measure out;
   out.applied = m.applied_magnitude;
   for (size_t c = 0; c < zone_chunks; ++c) {
-    out.applied += partials.zone_applied[c];
+    out.applied += partials.zone_applied[c] + partials.mixed_applied[c];
     if (out.inverted_zone < 0) out.inverted_zone = partials.zone_inverted[c];
   }
   double speed = -1.0;
@@ -347,12 +415,30 @@ Measure measure_state(const Mechanics& m) {
   Measure out;
   std::vector<double> f(m.u.size(), 0.0);
   out.applied = m.applied_magnitude;
-  for (const int z : m.active) {
+  // The mixed zones' forces see the averaged mean stress change, as in the cycle.
+  std::vector<double> shift(m.active.size(), 0.0), node_pressure(static_cast<size_t>(m.node_count), 0.0);
+  for (const int k : m.mixed) {
+    const size_t z = static_cast<size_t>(m.active[static_cast<size_t>(k)]);
+    const ZoneGeometry& g = m.geometry[z];
+    for (const int n : g.node)
+      node_pressure[static_cast<size_t>(n)] += g.area * (mean_stress(m.stress[z]) - m.mean_stress_ref[z]);
+  }
+  for (size_t n = 0; n < node_pressure.size(); ++n) node_pressure[n] *= m.inv_area[n];
+  for (const int k : m.mixed) {
+    const size_t z = static_cast<size_t>(m.active[static_cast<size_t>(k)]);
+    const auto& node = m.geometry[z].node;
+    const double averaged = (node_pressure[static_cast<size_t>(node[0])] + node_pressure[static_cast<size_t>(node[1])] +
+                             node_pressure[static_cast<size_t>(node[2])]) * (1.0 / 3.0);
+    shift[static_cast<size_t>(k)] = m.mean_stress_ref[z] + averaged - mean_stress(m.stress[z]);
+  }
+  for (size_t k = 0; k < m.active.size(); ++k) {
+    const int z = m.active[k];
     const ZoneGeometry& g = m.geometry[static_cast<size_t>(z)];
     const Stress& s = m.stress[static_cast<size_t>(z)];
+    const double sxx = s.xx + shift[k], syy = s.yy + shift[k];
     for (int i = 0; i < 3; ++i) {
-      const double fx = -g.area * (s.xx * g.b[i] + s.xy * g.c[i]);
-      const double fy = -g.area * (s.xy * g.b[i] + s.yy * g.c[i]);
+      const double fx = -g.area * (sxx * g.b[i] + s.xy * g.c[i]);
+      const double fy = -g.area * (s.xy * g.b[i] + syy * g.c[i]);
       const size_t n = static_cast<size_t>(g.node[static_cast<size_t>(i)]);
       f[2 * n] += fx;
       f[2 * n + 1] += fy;

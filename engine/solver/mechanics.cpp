@@ -119,6 +119,7 @@ void Model::assign(const AssignDef& def) {
     m.zone_material[static_cast<size_t>(z)] = material;
     if (null) {
       m.stress[static_cast<size_t>(z)] = Stress{};
+      m.mean_stress_ref[static_cast<size_t>(z)] = 0.0;
       m.zone_state[static_cast<size_t>(z)] = 0;
     }
   }
@@ -147,7 +148,9 @@ void Model::insitu(const InsituDef& def) {
     if (!region.empty() && !contains(region, centroid)) continue;
     const int material = m.zone_material[static_cast<size_t>(z)];
     if (material >= 0 && m.params[static_cast<size_t>(material)].model == MaterialModel::null) continue;
-    m.stress[static_cast<size_t>(z)] = insitu_stress(def, centroid, g);
+    const Stress s = insitu_stress(def, centroid, g);
+    m.stress[static_cast<size_t>(z)] = s;
+    m.mean_stress_ref[static_cast<size_t>(z)] = mean_stress(s);
   }
   m.insitu.push_back(def);
   m.insitu_regions.push_back(region);

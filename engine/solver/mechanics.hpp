@@ -89,6 +89,9 @@ struct Mechanics {
   // ---- state per mesh zone
   std::vector<int> zone_material;  // -1: none assigned
   std::vector<Stress> stress;
+  // Per zone, the mean stress (sxx + syy + szz) / 3 as last initialised (insitu, or zero): the
+  // mixed discretisation averages the change from it, so an initial state in equilibrium stays so.
+  std::vector<double> mean_stress_ref;
   std::vector<std::uint8_t> zone_state;
 
   // ---- state per node
@@ -116,8 +119,10 @@ struct Mechanics {
   double applied_magnitude = 0.0;      // sum of |weight| + |load| over nodes [N/m]
   Partition partition;
   std::vector<double> acc_force;       // accumulators, 2 per entry
-  std::vector<double> acc_volume;      // accumulators (area x volumetric strain rate)
+  std::vector<double> acc_volume;      // accumulators (area x volumetric strain rate, then
+                                       // area x mean stress change)
   std::vector<double> node_volume;     // per node: averaged volumetric strain rate [1/s]
+  std::vector<double> node_pressure;   // per node: averaged mean stress change [Pa]
 
   // ---- solver progress
   SolverInfo info;

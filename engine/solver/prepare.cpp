@@ -168,6 +168,7 @@ void reset_for_mesh(Mechanics& m, const Mesh& mesh) {
   const size_t zones = static_cast<size_t>(mesh.zone_count());
   m.zone_material.assign(zones, -1);
   m.stress.assign(zones, Stress{});
+  m.mean_stress_ref.assign(zones, 0.0);
   m.zone_state.assign(zones, 0);
   m.gp_node = merge_glued(mesh, m.node_count);
   const size_t dofs = 2 * static_cast<size_t>(m.node_count);
@@ -277,6 +278,7 @@ void prepare(Mechanics& m, const Mesh& mesh) {
   m.acc_force.assign(2 * static_cast<size_t>(m.partition.accumulators), 0.0);
   m.acc_volume.assign(static_cast<size_t>(m.partition.accumulators), 0.0);
   m.node_volume.assign(nodes, 0.0);
+  m.node_pressure.assign(nodes, 0.0);
   m.info.step = m.step;
   m.dirty = false;
 }
