@@ -130,6 +130,7 @@ struct Mechanics {
   AdaptiveDamping adaptive;
   double last_kinetic = 0.0;
   int growth_checks = 0;  // consecutive checks with fast kinetic energy growth
+  int growth_span = 0;    // cycles since last_kinetic was taken
   std::vector<Callback> callbacks;
   int next_handle = 1;
   std::vector<History> histories;

@@ -21,6 +21,7 @@ constexpr int kMeasureInterval = 10;
 // instability (a stable run from rest grows as t^2, far slower).
 constexpr double kGrowthPerCycle = 1.585;  // 100x over 10 cycles
 constexpr int kGrowthChecks = 3;
+constexpr int kGrowthSpan = 10;  // cycles, at least, per check
 
 // Clears Mechanics::cycling_now however cycling ends.
 struct CyclingFlag {
@@ -55,11 +56,18 @@ void watch(Mechanics& m, const Mesh& mesh, const Measure& measure, int batch) {
     return fmt::format(" near ({:.6g}, {:.6g}) in block {}", p.x, p.y,
                        m.node_block[static_cast<size_t>(node)] + 1);
   };
-  const double per_cycle = m.last_kinetic > 0.0
-                               ? std::pow(measure.kinetic / m.last_kinetic, 1.0 / batch)
-                               : 0.0;
-  m.growth_checks = per_cycle > kGrowthPerCycle ? m.growth_checks + 1 : 0;
-  m.last_kinetic = measure.kinetic;
+  // Growth is judged over spans of at least kGrowthSpan cycles: a run measured every cycle
+  // (a callback every cycle) grows from rest by ((n + 1) / n)^2 per cycle, fast for a few.
+  m.growth_span += batch;
+  double per_cycle = 0.0;
+  if (m.growth_span >= kGrowthSpan) {
+    per_cycle = m.last_kinetic > 0.0 ? std::pow(measure.kinetic / m.last_kinetic, 1.0 / m.growth_span) : 0.0;
+    m.growth_checks = per_cycle > kGrowthPerCycle ? m.growth_checks + 1 : 0;
+    m.last_kinetic = measure.kinetic;
+    m.growth_span = 0;
+  } else if (m.last_kinetic > 0.0) {
+    per_cycle = std::pow(measure.kinetic / m.last_kinetic, 1.0 / m.growth_span);
+  }
   std::string inverted;
   if (measure.inverted_zone >= 0) {
     const Vec2 c = mesh.zone_centroid(measure.inverted_zone);
@@ -125,6 +133,7 @@ void start_adaptive(Mechanics& m) {
   m.adaptive.have_r_start = false;
   m.adaptive.c = 0.0;
   m.last_kinetic = 0.0;
+  m.growth_span = 0;
   m.growth_checks = 0;
 }
 
