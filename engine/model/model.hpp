@@ -57,7 +57,8 @@ class Model {
   // on the new zones when a geometry command re-zones the model; geometry commands after the
   // first cycle are an error. Each call validates everything before it changes anything.
 
-  void add_material(const MaterialDef& def);          // a name may be redefined before use
+  void add_material(const MaterialDef& def);          // redefining a name changes its zones too
+                                                       // (but not to or from "null")
   void assign(const AssignDef& def);                   // needs zones
   void set_gravity(Vec2 g);                            // [m/s^2]
   void insitu(const InsituDef& def);                   // sets zone stresses (needs zones)

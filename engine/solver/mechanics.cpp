@@ -357,6 +357,15 @@ std::function<double()> Model::history_sampler(std::string_view quantity,
 
 const std::vector<History>& Model::histories() const { return mechanics_->histories; }
 
+namespace {
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + '"';
+}
+}  // namespace
+
 void Model::write_histories(const std::string& path) const {
   const auto& histories = mechanics_->histories;
   if (histories.empty()) fail("there are no histories to write: history{{...}} first");
@@ -372,7 +381,8 @@ void Model::write_histories(const std::string& path) const {
     std::ofstream out(temporary);
     if (!out) fail("cannot write '{}'", path);
     out << "cycle";
-    for (const History& h : histories) out << ',' << h.name << " [" << h.unit << ']';
+    // RFC 4180: a header field with a comma, quote or line break is quoted, quotes doubled.
+    for (const History& h : histories) out << ',' << csv_field(fmt::format("{} [{}]", h.name, h.unit));
     out << '\n';
     for (const auto& [cycle, row] : rows) {
       out << cycle;
