@@ -16,11 +16,13 @@
 // last insitu{}, so the stress does work on the strain that produced it and an initial state in
 // equilibrium stays in equilibrium. With the zone's own mean stress in the forces instead (the
 // first version), the plastic zones came out over-soft and went unstable with dilation.
-// Measured (tests/verification/incompressible_hole.lua and Salencon, edge 0.03 a):
-//   near-incompressible elasticity (nu = 0.499): wall u 0.1 % off, hoop stress 26 % off in the
-//     worst zone, against 2.9 % and 645 % (locking) with plain triangles;
-//   Salencon psi = 30: R0 +0.1 %, wall u +0.4 %, ring stresses <= 0.9 % of P0 (plain +0.3, +0.2);
-//   Salencon psi = 0: R0 +29 %, wall u +72 %: the non-dilatant plastic zones find a soft
+// Measured:
+//   near-incompressible elasticity (tests/verification/incompressible_hole.lua, nu = 0.499):
+//     wall u 0.08 % off, ring-averaged stresses within 0.4 % of P0, against -3.1 % and up to
+//     11 % with plain triangles (whose single zones are off by several P0: locking);
+//   Salencon (the verification script with edge 0.03 a and set{ mixed = true }):
+//   psi = 30: R0 +0.1 %, wall u +0.4 %, ring stresses <= 0.9 % of P0 (plain, edge 0.02 a: +0.3, +0.2);
+//   psi = 0: R0 +29 %, wall u +72 %: the non-dilatant plastic zones find a soft
 //     non-axisymmetric mode that keeps drifting, while plain triangles give +0.8 % and +1.5 %;
 //     wall u against dilation: +29 % at psi = 1, +10 % at 5, +1.5 % at 15, +0.7 % at 25, so
 //     the closer the plastic flow is to isochoric, the softer (in-plane-only averaging, which
