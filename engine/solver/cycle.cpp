@@ -89,6 +89,14 @@ void node_average_pass(Mechanics& m, int begin, int end, double* out) {
   }
 }
 
+// What a mixed zone's in-plane normal stresses are shifted by in its forces: its mean stress
+// becomes the reference plus the average over its corners of the nodal mean stress change.
+double mixed_shift(const Mechanics& m, size_t z, const double* node_pressure) {
+  const auto& node = m.geometry[z].node;
+  const double averaged = (node_pressure[node[0]] + node_pressure[node[1]] + node_pressure[node[2]]) * (1.0 / 3.0);
+  return m.mean_stress_ref[z] + averaged - mean_stress(m.stress[z]);
+}
+
 // Nodal forces of one zone from the stress `s`, its in-plane normal stresses shifted by `shift`.
 template <bool kMeasure>
 double add_zone_forces(Mechanics& m, const ZoneGeometry& g, const std::array<int, 3>& dest,
@@ -191,8 +199,7 @@ void mixed_force_pass(Mechanics& m, int begin, int end, Partials& partials) {
     const size_t z = static_cast<size_t>(m.active[static_cast<size_t>(k)]);
     const ZoneGeometry& g = m.geometry[z];
     const Stress& s = m.stress[z];
-    const double averaged = (np[g.node[0]] + np[g.node[1]] + np[g.node[2]]) * (1.0 / 3.0);
-    const double shift = m.mean_stress_ref[z] + averaged - mean_stress(s);
+    const double shift = mixed_shift(m, z, np);
     const double f = add_zone_forces<kMeasure>(m, g, m.partition.dest[static_cast<size_t>(k)], s, shift);
     // Zone ranges are whole chunks, so each chunk's sum is one thread's, in zone order.
     if constexpr (kMeasure) partials.mixed_applied[static_cast<size_t>(k / kChunk)] += f;
@@ -431,10 +438,7 @@ Measure measure_state(const Mechanics& m) {
   for (size_t n = 0; n < node_pressure.size(); ++n) node_pressure[n] *= m.inv_area[n];
   for (const int k : m.mixed) {
     const size_t z = static_cast<size_t>(m.active[static_cast<size_t>(k)]);
-    const auto& node = m.geometry[z].node;
-    const double averaged = (node_pressure[static_cast<size_t>(node[0])] + node_pressure[static_cast<size_t>(node[1])] +
-                             node_pressure[static_cast<size_t>(node[2])]) * (1.0 / 3.0);
-    shift[static_cast<size_t>(k)] = m.mean_stress_ref[z] + averaged - mean_stress(m.stress[z]);
+    shift[static_cast<size_t>(k)] = mixed_shift(m, z, node_pressure.data());
   }
   for (size_t k = 0; k < m.active.size(); ++k) {
     const int z = m.active[k];
