@@ -149,8 +149,9 @@ const Command& set_command() {
                "automatic time step as a fraction of the critical one",
                "unchanged (initially 0.9)"},
               {"mixed", Type::boolean, "", any_value, kOptional,
-               "nodal mixed discretisation in Mohr-Coulomb zones (experimental: better "
-               "elastic stresses, worse plastic answers; see solver/cycle.cpp)",
+               "mixed discretisation: the volumetric strain of pairs of neighbouring zones "
+               "averaged, as FLAC's quadrilaterals (no volumetric locking; see "
+               "solver/cycle.cpp for when it is not the default)",
                "unchanged (initially false)"},
           },
       .run = run_set,

@@ -83,9 +83,8 @@ struct SolverSettings {
   double local_damping = 0.8;           // coefficient of local damping [-]
   double step = 0.0;                    // forced time step [s] (dynamic); 0: automatic
   double step_fraction = 0.9;           // automatic step over the critical estimate [-]
-  // Nodal mixed discretisation in Mohr-Coulomb zones (see solver/cycle.cpp). Off: it makes
-  // the elastic field better but the plastic answer worse (Salencon) and can go unstable
-  // with dilation; kept for study until that is understood.
+  // Mixed discretisation over pairs of zones (see solver/cycle.cpp): no volumetric locking.
+  // Off by default: with non-associated flow its zones localise more readily (Salencon psi = 0).
   bool mixed = false;
 };
 

@@ -1,34 +1,31 @@
-// The cycle, as passes over flat arrays inside one parallel region:
-//   1. mixed zones: volumetric strain rate x area, to the node accumulators;
-//   2. nodes: averaged volumetric strain rate;
-//   3. zones: strain rate (averaged volumetric part in mixed zones), constitutive update, nodal
-//      forces (mixed zones: area x mean stress change to the node accumulators instead);
-//   4. nodes: averaged mean stress change;
-//   5. mixed zones: nodal forces with the averaged mean stress change;
-//   6. nodes: unbalanced force, damping, velocity and displacement.
-// Passes 1, 2, 4 and 5 run only with set{ mixed = true }.
+// The cycle, as two passes over flat arrays inside one parallel region:
+//   1. zones: strain rate, constitutive update, nodal forces to the accumulators;
+//   2. nodes: unbalanced force, damping, velocity and displacement.
 //
-// Mixed discretisation (nodal mixed discretisation, as FLAC3D's for tetrahedra), with
-// set{ mixed = true } only, in the Mohr-Coulomb zones. Each one's volumetric strain rate is
-// replaced by the mean over its corners of the area-weighted nodal average over those zones,
-// the difference added as an isotropic strain, a third on each axis, out of plane too
-// (B-bar in plane strain). The forces see the same average of the mean stress change since the
-// last insitu{}, so the stress does work on the strain that produced it and an initial state in
-// equilibrium stays in equilibrium. With the zone's own mean stress in the forces instead (the
-// first version), the plastic zones came out over-soft and went unstable with dilation.
-// Measured:
-//   near-incompressible elasticity (tests/verification/incompressible_hole.lua, nu = 0.499):
-//     wall u 0.08 % off, ring-averaged stresses within 0.4 % of P0, against -3.1 % and up to
-//     11 % with plain triangles (whose single zones are off by several P0: locking);
-//   Salencon (the verification script with edge 0.03 a and set{ mixed = true }):
-//   psi = 30: R0 +0.1 %, wall u +0.4 %, ring stresses <= 0.9 % of P0 (plain, edge 0.02 a: +0.3, +0.2);
-//   psi = 0: R0 +29 %, wall u +72 %: the non-dilatant plastic zones find a soft
-//     non-axisymmetric mode that keeps drifting, while plain triangles give +0.8 % and +1.5 %;
-//     wall u against dilation: +29 % at psi = 1, +10 % at 5, +1.5 % at 15, +0.7 % at 25, so
-//     the closer the plastic flow is to isochoric, the softer (in-plane-only averaging, which
-//     keeps ezz = 0, is worse still: +234 % at psi = 0).
-// So it stays off by default until the psi = 0 case is understood. Elastic zones stay plain
-// triangles: rock is far from incompressible, and averaging next to boundaries costs accuracy.
+// Mixed discretisation (set{ mixed = true }), FLAC's for its quadrilaterals made of triangles:
+// zones are grouped in pairs that share an edge (a left-over zone joins a neighbouring pair;
+// solver/zone_groups.cpp), each member's volumetric strain rate is replaced by the group's
+// area-weighted mean, the difference added as an isotropic strain, a third on each axis, the
+// out-of-plane one included (B-bar in plane strain), and each member's forces see the group's
+// mean stress change since the last insitu{} in place of its own, so the stress does work on
+// exactly the strain that produced it and an initial state in equilibrium stays in equilibrium.
+// One volumetric constraint per pair instead of per zone: about one per node, as Q1P0.
+// Measured (tests/verification/prandtl_footing.lua, incompressible_hole.lua):
+//   smooth strip footing on Tresca (associated): q_u +4.3 % of (2 + pi) c, plain +10.7 %;
+//   near-incompressible elastic hole (nu = 0.499): wall u 0.13 %, rings <= 0.14 % of P0,
+//     plain -3.1 % and up to 11 %.
+// Why it is not the default: Salencon with psi = 0 (non-associated, phi = 30). At equilibrium
+// (ratio 1e-10) the wall displacement is, against the closed form, plain / mixed:
+//   zone edge 0.04 a: +1.0 / +2.4 %; 0.03 a: +2.2 / +4.1 %; 0.02 a: +3.3 / +8.2 %;
+//   0.015 a: +3.9 / +6.4 %  (R0: +1.1 / +1.2 % ... +3.8 / +6.6 %),
+// and u_r along the wall varies by +-1.3 % (plain) and +-5 % (mixed) at 0.02 a: neither
+// converges to the axisymmetric closed form, both move away from it as zones get smaller.
+// Non-associated perfect plasticity admits shear bands (the critical hardening modulus is
+// positive when psi < phi), and the less locked the zones, the more freely bands form; so the
+// closed form is one solution of the discrete problem among softer ones, and the plain
+// triangles' lock keeps them nearer to it. With psi = 30 (associated) both stay near it: wall
+// +1.4 / +1.8 % at 0.04 a, +2.3 / +2.1 % at 0.02 a, R0 within 1.7 %. The first version (nodal averaging,
+// FLAC3D's NMD for tetrahedra) was worse: +72 % at psi = 0 from a drifting soft mode.
 #include "solver/cycle.hpp"
 
 #include <omp.h>
@@ -42,59 +39,43 @@ namespace {
 
 struct Partials {
   std::vector<double> zone_applied;  // per zone chunk
-  std::vector<double> mixed_applied; // per zone chunk, the mixed zones' part
   std::vector<int> zone_inverted;
   std::vector<double> unbalanced, kinetic, num, den, speed;  // per node chunk
   std::vector<int> fastest;
   std::vector<char> finite;
 };
 
-void zone_volume_pass(Mechanics& m, int begin, int end) {
-  const double* v = m.v.data();
-  double* acc = m.acc_volume.data();
-  for (int j = begin; j < end; ++j) {
-    const int k = m.mixed[static_cast<size_t>(j)];
-    const ZoneGeometry& g = m.geometry[static_cast<size_t>(m.active[static_cast<size_t>(k)])];
-    double rate = 0.0;
-    for (int i = 0; i < 3; ++i) {
-      const size_t n = static_cast<size_t>(g.node[static_cast<size_t>(i)]);
-      rate += g.b[i] * v[2 * n] + g.c[i] * v[2 * n + 1];
-    }
-    const double weighted = g.area * rate;
-    const auto& dest = m.partition.dest[static_cast<size_t>(k)];
-    acc[dest[0]] += weighted;
-    acc[dest[1]] += weighted;
-    acc[dest[2]] += weighted;
-  }
+struct StrainRate {
+  double xx, yy, xy;  // xy engineering [1/s]
+};
+
+[[gnu::always_inline]] inline StrainRate strain_rate(const double* v, const ZoneGeometry& g) {
+  const size_t n0 = static_cast<size_t>(g.node[0]), n1 = static_cast<size_t>(g.node[1]),
+               n2 = static_cast<size_t>(g.node[2]);
+  const double vx0 = v[2 * n0], vy0 = v[2 * n0 + 1], vx1 = v[2 * n1], vy1 = v[2 * n1 + 1],
+               vx2 = v[2 * n2], vy2 = v[2 * n2 + 1];
+  return {g.b[0] * vx0 + g.b[1] * vx1 + g.b[2] * vx2, g.c[0] * vy0 + g.c[1] * vy1 + g.c[2] * vy2,
+          g.c[0] * vx0 + g.c[1] * vx1 + g.c[2] * vx2 + g.b[0] * vy0 + g.b[1] * vy1 + g.b[2] * vy2};
 }
 
-// Area-weighted nodal average of what the zone passes left in acc_volume; clears them.
-void node_average_pass(Mechanics& m, int begin, int end, double* out) {
-  double* acc = m.acc_volume.data();
-  const int* first = m.partition.gather_first.data();
-  const int* gather = m.partition.gather.data();
-  for (int n = begin; n < end; ++n) {
-    double sum;
-    if (first[n] == first[n + 1]) {
-      sum = acc[n];
-      acc[n] = 0.0;
-    } else {
-      sum = 0.0;
-      for (int s = first[n]; s < first[n + 1]; ++s) {
-        sum += acc[gather[s]];
-        acc[gather[s]] = 0.0;
-      }
-    }
-    out[n] = sum * m.inv_area[static_cast<size_t>(n)];
+// Constitutive update of mesh zone z over one step; `iso` is the isotropic strain rate the
+// mixed discretisation adds, on all three axes (kIso false: none, and no flops spent on it;
+// with them the plain cycle was 10 % slower).
+template <bool kIso>
+[[gnu::always_inline]] inline void update_zone(Mechanics& m, size_t z, const StrainRate& r, double iso, double dt) {
+  const MaterialParams& p = m.params[static_cast<size_t>(m.zone_material[z])];
+  Stress& s = m.stress[z];
+  const double dxx = (kIso ? r.xx + iso : r.xx) * dt, dyy = (kIso ? r.yy + iso : r.yy) * dt;
+  const double dzz = kIso ? iso * dt : 0.0;
+  if (p.model == MaterialModel::elastic) {
+    if constexpr (kIso)
+      elastic_update(p, s, dxx, dyy, r.xy * dt, dzz);
+    else
+      elastic_update(p, s, dxx, dyy, r.xy * dt);
+  } else {
+    const std::uint8_t now = mohr_coulomb_update(p, s, dxx, dyy, r.xy * dt, dzz);
+    m.zone_state[z] = static_cast<std::uint8_t>((m.zone_state[z] & (kShearPast | kTensionPast)) | now | (now << 2));
   }
-}
-
-// What a mixed zone's in-plane normal stresses are shifted by in its forces: its mean stress
-// becomes the reference plus the average over its corners of the nodal mean stress change.
-double mixed_shift(const Mechanics& m, size_t z, const double* node_pressure) {
-  const auto& node = m.geometry[z].node;
-  const double averaged = (node_pressure[node[0]] + node_pressure[node[1]] + node_pressure[node[2]]) * (1.0 / 3.0);
-  return m.mean_stress_ref[z] + averaged - mean_stress(m.stress[z]);
 }
 
 // Nodal forces of one zone from the stress `s`, its in-plane normal stresses shifted by `shift`.
@@ -125,58 +106,72 @@ bool inverted(const Mechanics& m, const ZoneGeometry& g) {
   return (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]) <= 0.0;
 }
 
-// Strain rate, constitutive update and nodal forces. A mixed zone's forces wait for the
-// averaged mean stress (mixed_force_pass); it leaves area x its mean stress change instead.
-template <bool kMeasure>
+// Area-weighted mean over a group (active positions) of each member's mean stress change since
+// the last insitu{}: what the forces of every member see in place of its own.
+double group_mean_stress_change(const Mechanics& m, const int* members, int count) {
+  double area = 0.0, sum = 0.0;
+  for (int i = 0; i < count; ++i) {
+    const size_t z = static_cast<size_t>(m.active[static_cast<size_t>(members[i])]);
+    const double a = m.geometry[z].area;
+    area += a;
+    sum += a * (mean_stress(m.stress[z]) - m.mean_stress_ref[z]);
+  }
+  return sum / area;
+}
+
+// Strain rate, constitutive update and nodal forces of every zone; a group of the mixed
+// discretisation is done whole by the thread of its first member, so that no other thread
+// needs its members' rates or stresses.
+template <bool kMeasure, bool kGrouped>
 void zone_force_pass(Mechanics& m, int begin, int end, Partials& partials) {
   const double* v = m.v.data();
-  const double* nv = m.node_volume.data();
-  const bool mixed_on = !m.mixed.empty();
   const double dt = m.step;
   double applied = 0.0;
   int inverted_zone = -1;
   for (int k = begin; k < end; ++k) {
-    const int z = m.active[static_cast<size_t>(k)];
-    const ZoneGeometry& g = m.geometry[static_cast<size_t>(z)];
-    const size_t n0 = static_cast<size_t>(g.node[0]), n1 = static_cast<size_t>(g.node[1]),
-                 n2 = static_cast<size_t>(g.node[2]);
-    const double vx0 = v[2 * n0], vy0 = v[2 * n0 + 1], vx1 = v[2 * n1], vy1 = v[2 * n1 + 1],
-                 vx2 = v[2 * n2], vy2 = v[2 * n2 + 1];
-    const double exx = g.b[0] * vx0 + g.b[1] * vx1 + g.b[2] * vx2;
-    const double eyy = g.c[0] * vy0 + g.c[1] * vy1 + g.c[2] * vy2;
-    const double gxy = g.c[0] * vx0 + g.c[1] * vx1 + g.c[2] * vx2 + g.b[0] * vy0 +
-                       g.b[1] * vy1 + g.b[2] * vy2;
-    const size_t zi = static_cast<size_t>(z);
-    const MaterialParams& p = m.params[static_cast<size_t>(m.zone_material[zi])];
-    Stress& s = m.stress[zi];
-    const auto& dest = m.partition.dest[static_cast<size_t>(k)];
-    if (p.model == MaterialModel::elastic || !mixed_on) {
-      if (p.model == MaterialModel::elastic) {
-        elastic_update(p, s, exx * dt, eyy * dt, gxy * dt);
-      } else {
-        const std::uint8_t now = mohr_coulomb_update(p, s, exx * dt, eyy * dt, gxy * dt, 0.0);
-        m.zone_state[zi] = static_cast<std::uint8_t>((m.zone_state[zi] & (kShearPast | kTensionPast)) |
-                                                     now | (now << 2));
-      }
+    const std::array<int, 2> others = kGrouped ? m.mates[static_cast<size_t>(k)] : std::array<int, 2>{-1, -1};
+    if (others[0] < 0) {
+      const size_t z = static_cast<size_t>(m.active[static_cast<size_t>(k)]);
+      const ZoneGeometry& g = m.geometry[z];
+      const auto& dest = m.partition.dest[static_cast<size_t>(k)];
+      const Stress& s = m.stress[z];
+      update_zone<false>(m, z, strain_rate(v, g), 0.0, dt);
       const double f = add_zone_forces<kMeasure>(m, g, dest, s, 0.0);
-      if constexpr (kMeasure) applied += f;
-    } else {
-      // The averaged volumetric rate replaces the zone's own as an isotropic strain, a third on
-      // each axis, the out-of-plane one included (B-bar in plane strain).
-      const double mixed = (nv[n0] + nv[n1] + nv[n2]) * (1.0 / 3.0);
-      const double shift = (mixed - (exx + eyy)) * (1.0 / 3.0);
-      const std::uint8_t now =
-          mohr_coulomb_update(p, s, (exx + shift) * dt, (eyy + shift) * dt, gxy * dt, shift * dt);
-      m.zone_state[zi] = static_cast<std::uint8_t>((m.zone_state[zi] & (kShearPast | kTensionPast)) |
-                                                   now | (now << 2));
-      const double weighted = g.area * (mean_stress(s) - m.mean_stress_ref[zi]);
-      double* acc = m.acc_volume.data();
-      acc[dest[0]] += weighted;
-      acc[dest[1]] += weighted;
-      acc[dest[2]] += weighted;
+      if constexpr (kMeasure) {
+        applied += f;
+        if (inverted_zone < 0 && inverted(m, g)) inverted_zone = static_cast<int>(z);
+      }
+    } else if (others[0] > k && (others[1] < 0 || others[1] > k)) {
+      const int members[3] = {k, others[0], others[1]};
+      const int count = others[1] < 0 ? 2 : 3;
+      StrainRate rate[3];
+      double area = 0.0, volume = 0.0;
+      for (int i = 0; i < count; ++i) {
+        const ZoneGeometry& g = m.geometry[static_cast<size_t>(m.active[static_cast<size_t>(members[i])])];
+        rate[i] = strain_rate(v, g);
+        area += g.area;
+        volume += g.area * (rate[i].xx + rate[i].yy);
+      }
+      // The group's volumetric strain rate replaces each member's own as an isotropic strain,
+      // a third on each axis, the out-of-plane one included (B-bar in plane strain).
+      const double mean_rate = volume / area;
+      for (int i = 0; i < count; ++i) {
+        const size_t z = static_cast<size_t>(m.active[static_cast<size_t>(members[i])]);
+        update_zone<true>(m, z, rate[i], (mean_rate - (rate[i].xx + rate[i].yy)) * (1.0 / 3.0), dt);
+      }
+      const double group_change = group_mean_stress_change(m, members, count);
+      for (int i = 0; i < count; ++i) {
+        const size_t z = static_cast<size_t>(m.active[static_cast<size_t>(members[i])]);
+        const ZoneGeometry& g = m.geometry[z];
+        const double shift = group_change - (mean_stress(m.stress[z]) - m.mean_stress_ref[z]);
+        const double f = add_zone_forces<kMeasure>(m, g, m.partition.dest[static_cast<size_t>(members[i])], m.stress[z], shift);
+        if constexpr (kMeasure) {
+          applied += f;
+          if (inverted_zone < 0 && inverted(m, g)) inverted_zone = static_cast<int>(z);
+        }
+      }
     }
     if constexpr (kMeasure) {
-      if (inverted_zone < 0 && inverted(m, g)) inverted_zone = z;
       if ((k + 1) % kChunk == 0 || k + 1 == end) {
         partials.zone_applied[static_cast<size_t>(k / kChunk)] = applied;
         partials.zone_inverted[static_cast<size_t>(k / kChunk)] = inverted_zone;
@@ -184,25 +179,6 @@ void zone_force_pass(Mechanics& m, int begin, int end, Partials& partials) {
         inverted_zone = -1;
       }
     }
-  }
-}
-
-// Forces of the mixed zones: the mean stress change the force sees is the same average of the
-// zones around as the volumetric strain rate the constitutive law saw, so the stress does work
-// on exactly the strain that produced it (with own-zone mean stress here, the plastic zones
-// gained energy from nowhere: over-soft and, with dilation, unstable).
-template <bool kMeasure>
-void mixed_force_pass(Mechanics& m, int begin, int end, Partials& partials) {
-  const double* np = m.node_pressure.data();
-  for (int j = begin; j < end; ++j) {
-    const int k = m.mixed[static_cast<size_t>(j)];
-    const size_t z = static_cast<size_t>(m.active[static_cast<size_t>(k)]);
-    const ZoneGeometry& g = m.geometry[z];
-    const Stress& s = m.stress[z];
-    const double shift = mixed_shift(m, z, np);
-    const double f = add_zone_forces<kMeasure>(m, g, m.partition.dest[static_cast<size_t>(k)], s, shift);
-    // Zone ranges are whole chunks, so each chunk's sum is one thread's, in zone order.
-    if constexpr (kMeasure) partials.mixed_applied[static_cast<size_t>(k / kChunk)] += f;
   }
 }
 
@@ -331,7 +307,6 @@ Measure run_cycles(Mechanics& m, int count) {
   const size_t node_chunks = (static_cast<size_t>(m.node_count) + kChunk - 1) / kChunk;
   Partials partials;
   partials.zone_applied.assign(zone_chunks, 0.0);
-  partials.mixed_applied.assign(zone_chunks, 0.0);
   partials.zone_inverted.assign(zone_chunks, -1);
   for (auto* sums : {&partials.unbalanced, &partials.kinetic, &partials.num, &partials.den})
     sums->assign(node_chunks, 0.0);
@@ -345,7 +320,7 @@ Measure run_cycles(Mechanics& m, int count) {
   }
   const Motion motion = motion_of(m);
   const bool record = !m.adaptive.have_r_start;
-  const bool any_mixed = !m.mixed.empty();
+  const bool grouped = !m.mates.empty();
 
 #pragma omp parallel num_threads(ranges)
   {
@@ -353,37 +328,14 @@ Measure run_cycles(Mechanics& m, int count) {
     const int team = omp_get_num_threads(), me = omp_get_thread_num();
     for (int cycle = 0; cycle < count; ++cycle) {
       const bool measure = cycle == count - 1;
-      if (any_mixed) {
-        for (int r = me; r < ranges; r += team)
-          zone_volume_pass(m, part.mixed_begin[static_cast<size_t>(r)], part.mixed_begin[static_cast<size_t>(r) + 1]);
-#pragma omp barrier
-        for (int r = me; r < ranges; r += team)
-          node_average_pass(m, part.node_begin[static_cast<size_t>(r)], part.node_begin[static_cast<size_t>(r) + 1],
-                            m.node_volume.data());
-#pragma omp barrier
-      }
       for (int r = me; r < ranges; r += team) {
         const int b = part.zone_begin[static_cast<size_t>(r)], e = part.zone_begin[static_cast<size_t>(r) + 1];
         if (measure)
-          zone_force_pass<true>(m, b, e, partials);
+          grouped ? zone_force_pass<true, true>(m, b, e, partials) : zone_force_pass<true, false>(m, b, e, partials);
         else
-          zone_force_pass<false>(m, b, e, partials);
+          grouped ? zone_force_pass<false, true>(m, b, e, partials) : zone_force_pass<false, false>(m, b, e, partials);
       }
 #pragma omp barrier
-      if (any_mixed) {
-        for (int r = me; r < ranges; r += team)
-          node_average_pass(m, part.node_begin[static_cast<size_t>(r)], part.node_begin[static_cast<size_t>(r) + 1],
-                            m.node_pressure.data());
-#pragma omp barrier
-        for (int r = me; r < ranges; r += team) {
-          const int b = part.mixed_begin[static_cast<size_t>(r)], e = part.mixed_begin[static_cast<size_t>(r) + 1];
-          if (measure)
-            mixed_force_pass<true>(m, b, e, partials);
-          else
-            mixed_force_pass<false>(m, b, e, partials);
-        }
-#pragma omp barrier
-      }
       for (int r = me; r < ranges; r += team) {
         const int b = part.node_begin[static_cast<size_t>(r)], e = part.node_begin[static_cast<size_t>(r) + 1];
         const bool rec = record && cycle == 0;
@@ -400,7 +352,7 @@ Measure run_cycles(Mechanics& m, int count) {
   Measure out;
   out.applied = m.applied_magnitude;
   for (size_t c = 0; c < zone_chunks; ++c) {
-    out.applied += partials.zone_applied[c] + partials.mixed_applied[c];
+    out.applied += partials.zone_applied[c];
     if (out.inverted_zone < 0) out.inverted_zone = partials.zone_inverted[c];
   }
   double speed = -1.0;
@@ -427,18 +379,15 @@ Measure measure_state(const Mechanics& m) {
   Measure out;
   std::vector<double> f(m.u.size(), 0.0);
   out.applied = m.applied_magnitude;
-  // The mixed zones' forces see the averaged mean stress change, as in the cycle.
-  std::vector<double> shift(m.active.size(), 0.0), node_pressure(static_cast<size_t>(m.node_count), 0.0);
-  for (const int k : m.mixed) {
-    const size_t z = static_cast<size_t>(m.active[static_cast<size_t>(k)]);
-    const ZoneGeometry& g = m.geometry[z];
-    for (const int n : g.node)
-      node_pressure[static_cast<size_t>(n)] += g.area * (mean_stress(m.stress[z]) - m.mean_stress_ref[z]);
-  }
-  for (size_t n = 0; n < node_pressure.size(); ++n) node_pressure[n] *= m.inv_area[n];
-  for (const int k : m.mixed) {
-    const size_t z = static_cast<size_t>(m.active[static_cast<size_t>(k)]);
-    shift[static_cast<size_t>(k)] = mixed_shift(m, z, node_pressure.data());
+  // The grouped zones' forces see their group's mean stress change, as in the cycle.
+  std::vector<double> shift(m.active.size(), 0.0);
+  for (size_t k = 0; k < m.mates.size(); ++k) {
+    const auto& others = m.mates[k];
+    if (others[0] < 0) continue;
+    const int members[3] = {static_cast<int>(k), others[0], others[1]};
+    const size_t z = static_cast<size_t>(m.active[k]);
+    shift[k] = group_mean_stress_change(m, members, others[1] < 0 ? 2 : 3) -
+               (mean_stress(m.stress[z]) - m.mean_stress_ref[z]);
   }
   for (size_t k = 0; k < m.active.size(); ++k) {
     const int z = m.active[k];

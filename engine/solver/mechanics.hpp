@@ -42,13 +42,13 @@ struct BoundarySegment {
 inline constexpr int kChunk = 1024;
 
 // How zones and nodes are split among threads, and where each zone corner's contribution
-// goes. Contributions to a node are always summed in active-zone order, so the result is the
-// same bits for any thread count: a node whose zones all belong to one thread's range is
-// accumulated in place; a node shared by ranges gathers its per-corner slots in order.
+// goes. Contributions to a node are always summed in the order zones are done (active order,
+// the other members of a mixed group right after its first), so the result is the same bits
+// for any thread count: a node whose zones are all done by one thread's range is accumulated
+// in place; a node shared by ranges gathers its per-corner slots in that order.
 struct Partition {
   int threads = 0;
   std::vector<int> zone_begin;          // thread t: active positions [zone_begin[t], [t+1])
-  std::vector<int> mixed_begin;         // thread t: its entries of Mechanics::mixed
   std::vector<int> node_begin;          // thread t: nodes [node_begin[t], [t+1])
   std::vector<std::array<int, 3>> dest; // per active zone corner: accumulator index
   std::vector<int> gather_first;        // per node + 1: its slots in `gather` (empty: owned)
@@ -109,20 +109,17 @@ struct Mechanics {
   bool dirty = true;
   std::vector<ZoneGeometry> geometry;  // per mesh zone
   std::vector<int> active;             // mesh zones that are cycled (material not null)
-  std::vector<int> mixed;              // active positions of the plastic zones (ascending)
+  // Mixed discretisation: per active position, the other members of its zone group (-1
+  // padded; {-1, -1}: alone). Empty when the mixed discretisation is off.
+  std::vector<std::array<int, 2>> mates;
   std::vector<double> mass;            // per node, inertial (scaled in static mode) [kg/m]
   std::vector<double> stiffness;       // per node, Gershgorin row sum of the zone stiffness [N/m^2]
   std::vector<double> weight;          // gravity force, 2 per node [N/m]
-  std::vector<double> inv_area;        // per node, 1 / area of its active zones [1/m^2]
   double step = 1.0;                   // time step [s]
   double critical_step = 0.0;          // estimate: 2 min sqrt(m / k) with real masses [s]
   double applied_magnitude = 0.0;      // sum of |weight| + |load| over nodes [N/m]
   Partition partition;
   std::vector<double> acc_force;       // accumulators, 2 per entry
-  std::vector<double> acc_volume;      // accumulators (area x volumetric strain rate, then
-                                       // area x mean stress change)
-  std::vector<double> node_volume;     // per node: averaged volumetric strain rate [1/s]
-  std::vector<double> node_pressure;   // per node: averaged mean stress change [Pa]
 
   // ---- solver progress
   SolverInfo info;

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "core/error.hpp"
+#include "solver/zone_groups.hpp"
 
 namespace edem {
 namespace {
@@ -112,11 +113,22 @@ Partition make_partition(const Mechanics& m, int threads) {
   const int zones = static_cast<int>(m.active.size());
   part.zone_begin = chunked_split(zones, threads);
   part.node_begin = chunked_split(m.node_count, threads);
-  part.mixed_begin.resize(static_cast<size_t>(threads) + 1);
-  for (int t = 0; t <= threads; ++t)
-    part.mixed_begin[static_cast<size_t>(t)] = static_cast<int>(
-        std::lower_bound(m.mixed.begin(), m.mixed.end(), part.zone_begin[static_cast<size_t>(t)]) - m.mixed.begin());
-  // Corners of each node, in active order, and the range each belongs to.
+  // The order zones are done in: active order, except that the other members of a mixed
+  // group follow its first member, whose thread does the whole group. Contributions to a node
+  // are summed in this order whatever the thread count.
+  std::vector<int> order, range_of(static_cast<size_t>(zones));
+  order.reserve(static_cast<size_t>(zones));
+  for (int t = 0; t < threads; ++t)
+    for (int k = part.zone_begin[static_cast<size_t>(t)]; k < part.zone_begin[static_cast<size_t>(t) + 1]; ++k) {
+      const std::array<int, 2> others = m.mates.empty() ? std::array<int, 2>{-1, -1} : m.mates[static_cast<size_t>(k)];
+      if (others[0] >= 0 && (others[0] < k || (others[1] >= 0 && others[1] < k))) continue;
+      for (const int member : {k, others[0], others[1]}) {
+        if (member < 0) continue;
+        order.push_back(member);
+        range_of[static_cast<size_t>(member)] = t;
+      }
+    }
+  // Corners of each node, in that order.
   std::vector<int> first(static_cast<size_t>(m.node_count) + 1, 0);
   for (int k = 0; k < zones; ++k)
     for (int node : m.geometry[static_cast<size_t>(m.active[static_cast<size_t>(k)])].node)
@@ -124,15 +136,11 @@ Partition make_partition(const Mechanics& m, int threads) {
   for (size_t n = 0; n < static_cast<size_t>(m.node_count); ++n) first[n + 1] += first[n];
   std::vector<int> corners(static_cast<size_t>(first.back()));
   std::vector<int> fill(first.begin(), first.end() - 1);
-  for (int k = 0; k < zones; ++k) {
+  for (const int k : order) {
     const auto& node = m.geometry[static_cast<size_t>(m.active[static_cast<size_t>(k)])].node;
     for (int i = 0; i < 3; ++i)
       corners[static_cast<size_t>(fill[static_cast<size_t>(node[static_cast<size_t>(i)])]++)] = 3 * k + i;
   }
-  std::vector<int> range_of(static_cast<size_t>(zones));
-  for (int t = 0; t < threads; ++t)
-    for (int k = part.zone_begin[static_cast<size_t>(t)]; k < part.zone_begin[static_cast<size_t>(t) + 1]; ++k)
-      range_of[static_cast<size_t>(k)] = t;
   part.dest.resize(static_cast<size_t>(zones));
   part.gather_first.assign(static_cast<size_t>(m.node_count) + 1, 0);
   int slot = m.node_count;
@@ -205,7 +213,6 @@ void prepare(Mechanics& m, const Mesh& mesh) {
   if (mesh.zone_count() == 0) fail("the model has no zones: zone{{...}} the blocks first");
 
   m.active.clear();
-  m.mixed.clear();
   for (int z = 0; z < mesh.zone_count(); ++z) {
     const int material = m.zone_material[static_cast<size_t>(z)];
     if (material < 0) {
@@ -215,13 +222,11 @@ void prepare(Mechanics& m, const Mesh& mesh) {
     }
     const MaterialModel model = m.params[static_cast<size_t>(material)].model;
     if (model == MaterialModel::null) continue;
-    if (model == MaterialModel::mohr && m.settings.mixed)
-      m.mixed.push_back(static_cast<int>(m.active.size()));
     m.active.push_back(z);
   }
 
   const size_t nodes = static_cast<size_t>(m.node_count);
-  std::vector<double> rows(2 * nodes, 0.0), real_mass(nodes, 0.0), area(nodes, 0.0);
+  std::vector<double> rows(2 * nodes, 0.0), real_mass(nodes, 0.0);
   m.weight.assign(2 * nodes, 0.0);
   for (const int z : m.active) {
     const ZoneGeometry& g = m.geometry[static_cast<size_t>(z)];
@@ -230,17 +235,14 @@ void prepare(Mechanics& m, const Mesh& mesh) {
     for (const int node : g.node) {
       const size_t n = static_cast<size_t>(node);
       real_mass[n] += p.density * g.area / 3.0;
-      if (p.model == MaterialModel::mohr && m.settings.mixed) area[n] += g.area;
       m.weight[2 * n] += p.density * g.area / 3.0 * m.gravity.x;
       m.weight[2 * n + 1] += p.density * g.area / 3.0 * m.gravity.y;
     }
   }
   m.stiffness.assign(nodes, 0.0);
-  m.inv_area.assign(nodes, 0.0);
   double critical = INFINITY;
   for (size_t n = 0; n < nodes; ++n) {
     m.stiffness[n] = std::max(rows[2 * n], rows[2 * n + 1]);
-    m.inv_area[n] = area[n] > 0.0 ? 1.0 / area[n] : 0.0;
     if (m.stiffness[n] > 0.0 && real_mass[n] > 0.0)
       critical = std::min(critical, 2.0 * std::sqrt(real_mass[n] / m.stiffness[n]));
   }
@@ -274,11 +276,10 @@ void prepare(Mechanics& m, const Mesh& mesh) {
     m.applied_magnitude += std::hypot(m.weight[2 * n], m.weight[2 * n + 1]) +
                            std::hypot(m.load[2 * n], m.load[2 * n + 1]);
 
+  m.mates.clear();
+  if (m.settings.mixed) m.mates = group_zones(m.geometry, m.active, m.position);
   m.partition = make_partition(m, threads);
   m.acc_force.assign(2 * static_cast<size_t>(m.partition.accumulators), 0.0);
-  m.acc_volume.assign(static_cast<size_t>(m.partition.accumulators), 0.0);
-  m.node_volume.assign(nodes, 0.0);
-  m.node_pressure.assign(nodes, 0.0);
   m.info.step = m.step;
   m.dirty = false;
 }

@@ -1,7 +1,8 @@
 // The explicit solver's speed (issue 3). Results go to tests/bench/RESULTS.md.
 //
 // B1: elastic square of n x n cells (2 triangles each), bottom fixed, top moving down slowly,
-//     2000 cycles: zone-cycles per second for 1 and 2 threads.
+//     2000 cycles: zone-cycles per second for 1 and 2 threads, plain triangles and (third
+//     argument 1) the mixed discretisation.
 // B3: elastic square under gravity (bottom fixed, roller sides), n_side cells a side, solved
 //     to ratio 1e-5 from rest: cycles and seconds, adaptive against local damping.
 #include <benchmark/benchmark.h>
@@ -13,9 +14,10 @@ namespace {
 
 using namespace edem;
 
-Mechanics b1_model(const Mesh& mesh, int n, int threads) {
+Mechanics b1_model(const Mesh& mesh, int n, int threads, bool mixed) {
   Mechanics m = scenes::mechanics_for(mesh, scenes::rock());
   m.threads = threads;
+  m.settings.mixed = mixed;
   for (int node = 0; node < m.node_count; ++node) {
     const int row = node / (n + 1);
     if (row == 0) m.fix[static_cast<size_t>(node)] = 3;
@@ -30,7 +32,7 @@ Mechanics b1_model(const Mesh& mesh, int n, int threads) {
 void BM_B1_ElasticSquare(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0)), threads = static_cast<int>(state.range(1));
   const Mesh mesh = scenes::square_mesh(n, 1.0);
-  Mechanics m = b1_model(mesh, n, threads);
+  Mechanics m = b1_model(mesh, n, threads, state.range(2) != 0);
   run_solver(m, mesh, 10, 0.0);  // prepare and warm up
   constexpr long kCycles = 2000;
   for (auto _ : state) run_solver(m, mesh, kCycles, 0.0);
@@ -40,7 +42,7 @@ void BM_B1_ElasticSquare(benchmark::State& state) {
       benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_B1_ElasticSquare)
-    ->ArgsProduct({{50, 200, 700}, {1, 2}})
+    ->ArgsProduct({{50, 200, 700}, {1, 2}, {0, 1}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 

@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "solver/cycle.hpp"
 #include "solver/run.hpp"
+#include "solver/zone_groups.hpp"
 #include "solver_scenes.hpp"
 
 namespace edem {
@@ -101,6 +102,76 @@ TEST(PatchTest, BoundaryStrainRelaxesToUniformStress) {
     EXPECT_LE(std::fabs(s.yy - expected.yy), 1e-10 * scale);
     EXPECT_LE(std::fabs(s.xy - expected.xy), 1e-10 * scale);
   }
+}
+
+TEST(PatchTest, MixedDiscretisationKeepsAUniformStrainUniform) {
+  // The group average of a uniform volumetric strain rate is that rate: B-bar passes the patch test.
+  const double side = 3.0, exx = 1e-4, eyy = -2e-4, gxy = 3e-4;
+  const Mesh mesh = jittered_square(8, side, 11);
+  Mechanics m = mechanics_for(mesh, rock());
+  m.settings.mixed = true;
+  for (int n = 0; n < m.node_count; ++n) {
+    const size_t k = static_cast<size_t>(n);
+    m.v[2 * k] = exx * m.position[2 * k] + gxy * m.position[2 * k + 1];
+    m.v[2 * k + 1] = eyy * m.position[2 * k + 1];
+    m.fix[k] = 3;
+  }
+  prepare(m, mesh);
+  ASSERT_FALSE(m.mates.empty());
+  run_cycles(m, 1);
+  const Stress expected = hooke(m.params[0], exx, eyy, gxy);
+  const double scale = std::fabs(expected.yy);
+  for (const Stress& s : m.stress) {
+    EXPECT_LE(std::fabs(s.xx - expected.xx), 1e-12 * scale);
+    EXPECT_LE(std::fabs(s.yy - expected.yy), 1e-12 * scale);
+    EXPECT_LE(std::fabs(s.xy - expected.xy), 1e-12 * scale);
+    EXPECT_LE(std::fabs(s.zz - expected.zz), 1e-12 * scale);
+  }
+  const double typical = scale * side / 8;
+  for (int n = 0; n < m.node_count; ++n)
+    if (!on_boundary(m, n, side)) {
+      EXPECT_LE(std::fabs(m.force[2 * static_cast<size_t>(n)]), 1e-10 * typical);
+      EXPECT_LE(std::fabs(m.force[2 * static_cast<size_t>(n) + 1]), 1e-10 * typical);
+    }
+}
+
+TEST(ZoneGroups, NeighbouringPairsAndTriplesCoverNearlyEveryZone) {
+  const Mesh mesh = jittered_square(30, 10.0, 5);  // 1800 zones
+  Mechanics m = mechanics_for(mesh, rock());
+  m.settings.mixed = true;
+  prepare(m, mesh);
+  const auto& mates = m.mates;
+  ASSERT_EQ(mates.size(), m.active.size());
+  auto shares_edge = [&](int a, int b) {
+    int common = 0;
+    for (int p : m.geometry[static_cast<size_t>(m.active[static_cast<size_t>(a)])].node)
+      for (int q : m.geometry[static_cast<size_t>(m.active[static_cast<size_t>(b)])].node) common += p == q;
+    return common == 2;
+  };
+  int alone = 0, triples = 0;
+  for (int k = 0; k < static_cast<int>(mates.size()); ++k) {
+    const auto& o = mates[static_cast<size_t>(k)];
+    if (o[0] < 0) {
+      EXPECT_LT(o[1], 0);
+      ++alone;
+      continue;
+    }
+    triples += o[1] >= 0;
+    for (int j = 0; j < 2; ++j) {
+      const int other = o[static_cast<size_t>(j)];
+      if (other < 0) continue;
+      EXPECT_NE(other, k);
+      // Membership is symmetric: the other member lists k.
+      const auto& back = mates[static_cast<size_t>(other)];
+      EXPECT_TRUE(back[0] == k || back[1] == k) << k << " " << other;
+    }
+    // Every member touches another member along an edge.
+    EXPECT_TRUE(shares_edge(k, o[0]) || (o[1] >= 0 && shares_edge(k, o[1])));
+  }
+  std::printf("%zu zones: %d alone, %d in triples\n", mates.size(), alone, triples / 3);
+  EXPECT_LE(alone, static_cast<int>(mates.size()) / 100);
+  // The same input gives the same groups.
+  EXPECT_EQ(group_zones(m.geometry, m.active, m.position), mates);
 }
 
 // One triangle whose third corner moves in y only: a mass on a spring.
@@ -271,6 +342,22 @@ TEST(Threads, TwoThreadsGiveTheSameBitsAsOne) {
   bool yielded = false;
   for (auto state : one.zone_state) yielded |= state != 0;
   EXPECT_TRUE(yielded) << "the test should exercise plasticity too";
+}
+
+TEST(Threads, MixedDiscretisationGivesTheSameBitsOnTwoThreads) {
+  const Mesh mesh = jittered_square(60, 30.0, 13);  // groups straddle the threads' ranges
+  Mechanics one = mechanics_for(mesh, rock()), two = mechanics_for(mesh, rock());
+  for (Mechanics* m : {&one, &two}) {
+    fill_gravity_model(*m, true);
+    m->settings.mixed = true;
+  }
+  one.threads = 1;
+  two.threads = 2;
+  run_solver(one, mesh, 300, 0.0);
+  run_solver(two, mesh, 300, 0.0);
+  EXPECT_EQ(std::memcmp(one.u.data(), two.u.data(), one.u.size() * sizeof(double)), 0);
+  EXPECT_EQ(std::memcmp(one.stress.data(), two.stress.data(), one.stress.size() * sizeof(Stress)), 0);
+  EXPECT_EQ(one.info.ratio, two.info.ratio);
 }
 
 TEST(Static, GravityColumnMatchesRhoGDepth) {

@@ -1,6 +1,6 @@
 -- The mixed discretisation against volumetric locking: a circular hole under hydrostatic P0 in
--- a nearly incompressible elastic medium (nu = 0.499; Mohr-Coulomb zones that never yield, as
--- set{ mixed = true } treats only those). The closed form does not depend on nu:
+-- a nearly incompressible elastic medium (nu = 0.499; Mohr-Coulomb zones that never yield). The
+-- closed form does not depend on nu:
 -- u_r = P0 a^2 / (2 G r), sr = P0 (1 - a^2/r^2), st = P0 (1 + a^2/r^2) (compression +), here
 -- with the outer boundary at R = 20 a loaded by P0 (the finite-R correction is included).
 -- Checks with the mixed discretisation: wall displacement within 1 %, hoop and radial stress
