@@ -49,19 +49,20 @@ Stress hooke(const MaterialParams& p, double exx, double eyy, double gxy) {
   return s;
 }
 
-TEST(PatchTest, LinearVelocityFieldGivesUniformStressAndBalancedInteriorNodes) {
-  const double side = 3.0, exx = 1e-4, eyy = -2e-4, gxy = 3e-4;
-  const Mesh mesh = jittered_square(8, side, 7);
-  Mechanics m = mechanics_for(mesh, rock());
+// Every node held on the linear velocity field u = (exx x + gxy y, eyy y) (engineering gxy).
+void hold_linear_field(Mechanics& m, double exx, double eyy, double gxy) {
   for (int n = 0; n < m.node_count; ++n) {
     const size_t k = static_cast<size_t>(n);
-    const double x = m.position[2 * k], y = m.position[2 * k + 1];
-    m.v[2 * k] = exx * x + gxy * y;  // u = (exx x + gxy y, eyy y): engineering shear gxy
-    m.v[2 * k + 1] = eyy * y;
+    m.v[2 * k] = exx * m.position[2 * k] + gxy * m.position[2 * k + 1];
+    m.v[2 * k + 1] = eyy * m.position[2 * k + 1];
     m.fix[k] = 3;  // held, so the field stays linear
   }
-  prepare(m, mesh);
-  run_cycles(m, 1);  // static mode: step 1
+}
+
+// After one step of a held linear field: every zone has the stress of that strain, and every
+// interior node is balanced.
+void expect_uniform_stress_and_balance(const Mechanics& m, double exx, double eyy, double gxy,
+                                       double side, int cells) {
   const Stress expected = hooke(m.params[0], exx, eyy, gxy);
   const double scale = std::fabs(expected.yy);
   for (const Stress& s : m.stress) {
@@ -70,12 +71,22 @@ TEST(PatchTest, LinearVelocityFieldGivesUniformStressAndBalancedInteriorNodes) {
     EXPECT_LE(std::fabs(s.xy - expected.xy), 1e-12 * scale);
     EXPECT_LE(std::fabs(s.zz - expected.zz), 1e-12 * scale);
   }
-  const double typical = scale * side / 8;  // stress x zone size [N/m]
+  const double typical = scale * side / cells;  // stress x zone size [N/m]
   for (int n = 0; n < m.node_count; ++n)
     if (!on_boundary(m, n, side)) {
       EXPECT_LE(std::fabs(m.force[2 * static_cast<size_t>(n)]), 1e-10 * typical);
       EXPECT_LE(std::fabs(m.force[2 * static_cast<size_t>(n) + 1]), 1e-10 * typical);
     }
+}
+
+TEST(PatchTest, LinearVelocityFieldGivesUniformStressAndBalancedInteriorNodes) {
+  const double side = 3.0, exx = 1e-4, eyy = -2e-4, gxy = 3e-4;
+  const Mesh mesh = jittered_square(8, side, 7);
+  Mechanics m = mechanics_for(mesh, rock());
+  hold_linear_field(m, exx, eyy, gxy);
+  prepare(m, mesh);
+  run_cycles(m, 1);  // static mode: step 1
+  expect_uniform_stress_and_balance(m, exx, eyy, gxy, side, 8);
 }
 
 TEST(PatchTest, BoundaryStrainRelaxesToUniformStress) {
@@ -110,29 +121,11 @@ TEST(PatchTest, MixedDiscretisationKeepsAUniformStrainUniform) {
   const Mesh mesh = jittered_square(8, side, 11);
   Mechanics m = mechanics_for(mesh, rock());
   m.settings.mixed = true;
-  for (int n = 0; n < m.node_count; ++n) {
-    const size_t k = static_cast<size_t>(n);
-    m.v[2 * k] = exx * m.position[2 * k] + gxy * m.position[2 * k + 1];
-    m.v[2 * k + 1] = eyy * m.position[2 * k + 1];
-    m.fix[k] = 3;
-  }
+  hold_linear_field(m, exx, eyy, gxy);
   prepare(m, mesh);
   ASSERT_FALSE(m.mates.empty());
   run_cycles(m, 1);
-  const Stress expected = hooke(m.params[0], exx, eyy, gxy);
-  const double scale = std::fabs(expected.yy);
-  for (const Stress& s : m.stress) {
-    EXPECT_LE(std::fabs(s.xx - expected.xx), 1e-12 * scale);
-    EXPECT_LE(std::fabs(s.yy - expected.yy), 1e-12 * scale);
-    EXPECT_LE(std::fabs(s.xy - expected.xy), 1e-12 * scale);
-    EXPECT_LE(std::fabs(s.zz - expected.zz), 1e-12 * scale);
-  }
-  const double typical = scale * side / 8;
-  for (int n = 0; n < m.node_count; ++n)
-    if (!on_boundary(m, n, side)) {
-      EXPECT_LE(std::fabs(m.force[2 * static_cast<size_t>(n)]), 1e-10 * typical);
-      EXPECT_LE(std::fabs(m.force[2 * static_cast<size_t>(n) + 1]), 1e-10 * typical);
-    }
+  expect_uniform_stress_and_balance(m, exx, eyy, gxy, side, 8);
 }
 
 TEST(ZoneGroups, NeighbouringPairsAndTriplesCoverNearlyEveryZone) {
