@@ -119,6 +119,12 @@ double group_mean_stress_change(const Mechanics& m, const int* members, int coun
   return sum / area;
 }
 
+// What a group member's in-plane normal stresses are shifted by in its forces: its own mean
+// stress change replaced by the group's.
+double member_shift(const Mechanics& m, size_t z, double group_change) {
+  return group_change - (mean_stress(m.stress[z]) - m.mean_stress_ref[z]);
+}
+
 // Strain rate, constitutive update and nodal forces of every zone; a group of the mixed
 // discretisation is done whole by the thread of its first member, so that no other thread
 // needs its members' rates or stresses.
@@ -163,8 +169,8 @@ void zone_force_pass(Mechanics& m, int begin, int end, Partials& partials) {
       for (int i = 0; i < count; ++i) {
         const size_t z = static_cast<size_t>(m.active[static_cast<size_t>(members[i])]);
         const ZoneGeometry& g = m.geometry[z];
-        const double shift = group_change - (mean_stress(m.stress[z]) - m.mean_stress_ref[z]);
-        const double f = add_zone_forces<kMeasure>(m, g, m.partition.dest[static_cast<size_t>(members[i])], m.stress[z], shift);
+        const double f = add_zone_forces<kMeasure>(m, g, m.partition.dest[static_cast<size_t>(members[i])], m.stress[z],
+                                                   member_shift(m, z, group_change));
         if constexpr (kMeasure) {
           applied += f;
           if (inverted_zone < 0 && inverted(m, g)) inverted_zone = static_cast<int>(z);
@@ -386,8 +392,7 @@ Measure measure_state(const Mechanics& m) {
     if (others[0] < 0) continue;
     const int members[3] = {static_cast<int>(k), others[0], others[1]};
     const size_t z = static_cast<size_t>(m.active[k]);
-    shift[k] = group_mean_stress_change(m, members, others[1] < 0 ? 2 : 3) -
-               (mean_stress(m.stress[z]) - m.mean_stress_ref[z]);
+    shift[k] = member_shift(m, z, group_mean_stress_change(m, members, others[1] < 0 ? 2 : 3));
   }
   for (size_t k = 0; k < m.active.size(); ++k) {
     const int z = m.active[k];

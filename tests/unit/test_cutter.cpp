@@ -52,21 +52,27 @@ Model jointed_box(double size) {
   return model;
 }
 
-// The joint-set origin lies on a joint (UDEC's convention). Joints through y = 0, 10, ..., 100
-// and x = 0, ..., 100 cut a 100 x 100 box into 100 blocks; those at 0 and 100 lie along the
-// boundary (a degenerate case) and add nothing.
-TEST(Cutter, TwoOrthogonalSetsMakeAHundredBlocks) {
+// A 100 x 100 box cut by horizontal and vertical joints 10 apart, through y = offset and x = offset.
+Model box_with_two_sets(double offset) {
   Model model = jointed_box(100);
   JointSetDef horizontal;
   horizontal.angle = 0;
   horizontal.spacing = {10};
-  horizontal.origin = {0, 0};
+  horizontal.origin = {0, offset};
   model.add_joint_set(horizontal);
   JointSetDef vertical;
   vertical.angle = 90;
   vertical.spacing = {10};
-  vertical.origin = {0, 0};
+  vertical.origin = {offset, 0};
   model.add_joint_set(vertical);
+  return model;
+}
+
+// The joint-set origin lies on a joint (UDEC's convention). Joints through y = 0, 10, ..., 100
+// and x = 0, ..., 100 cut a 100 x 100 box into 100 blocks; those at 0 and 100 lie along the
+// boundary (a degenerate case) and add nothing.
+TEST(Cutter, TwoOrthogonalSetsMakeAHundredBlocks) {
+  Model model = box_with_two_sets(0);
   const BlockSet& set = model.blocks();
   ASSERT_EQ(set.blocks.size(), 100u);
   for (const Block& b : set.blocks) EXPECT_NEAR(b.area, 100.0, 1e-9);
@@ -79,17 +85,7 @@ TEST(Cutter, TwoOrthogonalSetsMakeAHundredBlocks) {
 // With the origins at {0, 5} and {5, 0} the ten joints of each set lie at 5, 15, ..., 95:
 // eleven rows and columns, half-width ones along the boundary.
 TEST(Cutter, OffsetOriginsMakeHalfBlocksAlongTheBoundary) {
-  Model model = jointed_box(100);
-  JointSetDef horizontal;
-  horizontal.angle = 0;
-  horizontal.spacing = {10};
-  horizontal.origin = {0, 5};
-  model.add_joint_set(horizontal);
-  JointSetDef vertical;
-  vertical.angle = 90;
-  vertical.spacing = {10};
-  vertical.origin = {5, 0};
-  model.add_joint_set(vertical);
+  Model model = box_with_two_sets(5);
   const BlockSet& set = model.blocks();
   ASSERT_EQ(set.blocks.size(), 121u);
   int full = 0;
