@@ -150,8 +150,10 @@ const Command& set_command() {
                "unchanged (initially 0.9)"},
               {"mixed", Type::boolean, "", any_value, kOptional,
                "mixed discretisation: the volumetric strain of pairs of neighbouring zones "
-               "averaged, as FLAC's quadrilaterals (no volumetric locking; see "
-               "solver/cycle.cpp for when it is not the default)",
+               "averaged, as FLAC's quadrilaterals: no volumetric locking. Use it for "
+               "near-incompressible or associated plastic flow (footings, psi = phi); the "
+               "plain triangles stay nearer the closed form for non-associated rock "
+               "(Salencon, psi = 0), measured in engine/solver/cycle.cpp",
                "unchanged (initially false)"},
           },
       .run = run_set,
