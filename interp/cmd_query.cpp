@@ -156,6 +156,31 @@ void push_gridpoint(lua_State* L, const Model& model, size_t index) {
   set_field(L, "block", model.mesh().gp_block[index] + 1);
 }
 
+void push_contact(lua_State* L, const Model& model, size_t index) {
+  const ContactView c = model.contact(static_cast<int>(index));
+  lua_createtable(L, 0, 20);
+  set_field(L, "id", static_cast<long long>(index) + 1);
+  push_point(L, c.position);
+  lua_setfield(L, -2, "position");
+  set_field(L, "x", c.position.x);
+  set_field(L, "y", c.position.y);
+  push_point(L, c.normal);
+  lua_setfield(L, -2, "normal");
+  set_field(L, "length", c.length);
+  set_field(L, "fn", c.fn);
+  set_field(L, "fs", c.fs);
+  set_field(L, "sn", c.length > 0.0 ? c.fn / c.length : 0.0);
+  set_field(L, "tau", c.length > 0.0 ? c.fs / c.length : 0.0);
+  set_field(L, "un", c.un);
+  set_field(L, "us", c.us);
+  set_field(L, "slip", c.slip);
+  set_field(L, "state", c.state);
+  set_field(L, "kind", c.kind);
+  set_field(L, "material", c.material);
+  set_field(L, "block", c.block + 1);
+  set_field(L, "other", c.other + 1);
+}
+
 // One step of an iterator: upvalue 1 is the 0-based position of the next item.
 template <typename Count, typename Push>
 int step(lua_State* L, const char* name, Count&& count, Push&& push) {
@@ -183,6 +208,28 @@ int next_zone(lua_State* L) {
 int next_gridpoint(lua_State* L) {
   return step(
       L, "gridpoints", [](const Model& m) { return m.mesh().gp_position.size(); }, push_gridpoint);
+}
+
+int next_contact(lua_State* L) {
+  return step(
+      L, "contacts", [](const Model& m) { return static_cast<size_t>(m.contact_count()); }, push_contact);
+}
+
+int run_contacts(lua_State* L, Context&, const Args&) {
+  lua_pushinteger(L, 0);
+  lua_pushcclosure(L, next_contact, 1);
+  return 1;
+}
+
+int run_contact_near(lua_State* L, Context& context, const Args& args) {
+  const Model& model = context.model();
+  const int contact = model.contact_near({args.number("x"), args.number("y")});
+  if (contact < 0) {
+    lua_pushnil(L);
+    return 1;
+  }
+  push_contact(L, model, static_cast<size_t>(contact));
+  return 1;
 }
 
 int run_gp_near(lua_State* L, Context& context, const Args& args) {
@@ -322,6 +369,47 @@ const Command& zone_at_command() {
       .run = run_zone_at,
       .returns = "a zone table as `zones()` gives, or nil when no zone contains the point",
       .usage = "local z = zone_at(0, -30)",
+  };
+  return command;
+}
+
+const Command& contacts_command() {
+  static const Command command{
+      .name = "contacts",
+      .help =
+          "Iterates over the contacts: each gridpoint of a block boundary against the nearest "
+          "edge of another block within reach, as found at the last detection (found now "
+          "if cycling has not begun). Both faces of a joint have their gridpoints in contact, "
+          "each with half the length, so the lengths along a joint add up to it.",
+      .form = Form::call,
+      .run = run_contacts,
+      .returns =
+          "an iterator; each contact is a table: id, position {x =, y =}, x, y (the "
+          "gridpoint, where it is now [m]), normal {x =, y =} (unit, out of the edge's block), "
+          "length [m], fn, fs (normal force, compression negative, and shear force [N/m]), sn, "
+          "tau (the same per length [Pa]), un (normal displacement, opening positive, "
+          "including the closure the in-situ stress gives [m]), us (shear displacement since it "
+          "formed [m]), slip (plastic shear, accumulated [m]), state (\"bonded\", "
+          "\"elastic\", \"slip\", \"open\"), kind (\"joint\", \"crack\"), material, "
+          "block and other (the gridpoint's and the edge's block ids)",
+      .usage = "for c in contacts() do if c.state == \"slip\" then n = n + 1 end end",
+  };
+  return command;
+}
+
+const Command& contact_near_command() {
+  static const Command command{
+      .name = "contact_near",
+      .help = "The contact whose gridpoint is nearest to a point.",
+      .form = Form::call,
+      .positional =
+          {
+              {"x", Type::number, "m", any_value, kRequired, "x of the point"},
+              {"y", Type::number, "m", any_value, kRequired, "y of the point"},
+          },
+      .run = run_contact_near,
+      .returns = "a contact table as `contacts()` gives, or nil when there are no contacts",
+      .usage = "local c = contact_near(0, 0.5)",
   };
   return command;
 }

@@ -20,6 +20,8 @@ const std::vector<const Command*>& commands() {
       &zone_command(),           //
       &material_command(),       // cmd_material.cpp
       &assign_command(),         //
+      &joint_material_command(), // cmd_joints.cpp
+      &jassign_command(),        //
       &gravity_command(),        // cmd_loads.cpp
       &insitu_command(),         //
       &boundary_command(),       //
@@ -37,6 +39,8 @@ const std::vector<const Command*>& commands() {
       &gridpoints_command(),     //
       &gp_near_command(),        //
       &zone_at_command(),        //
+      &contacts_command(),       //
+      &contact_near_command(),   //
       &plot_command(),           // cmd_plot.cpp
   };
   return table;

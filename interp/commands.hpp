@@ -23,6 +23,8 @@ const Command& region_command();
 const Command& zone_command();
 const Command& material_command();
 const Command& assign_command();
+const Command& joint_material_command();
+const Command& jassign_command();
 const Command& gravity_command();
 const Command& insitu_command();
 const Command& boundary_command();
@@ -40,6 +42,8 @@ const Command& zones_command();
 const Command& gridpoints_command();
 const Command& gp_near_command();
 const Command& zone_at_command();
+const Command& contacts_command();
+const Command& contact_near_command();
 const Command& plot_command();
 
 // Every command of the language, in reference order.

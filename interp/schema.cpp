@@ -63,6 +63,9 @@ TypeText type_text(Type type) {
               "`\"blocks\"` or `{\"blocks\", \"zones\"}`"};
     case Type::function:
       return {"function", "a function", "`function(x) ... end`"};
+    case Type::pairs:
+      return {"list of pairs", "a list of pairs of numbers {{a, b}, ...}",
+              "`{{0, 2.6e8}, {5e-5, 9.4e8}}`: one or more pairs"};
     case Type::numbers_or_name:
       return {"numbers or name", "a list of numbers or a name",
               "`{0, -1e6, 0}` or one of the names listed, `\"insitu\"`"};
@@ -354,6 +357,19 @@ Value read_value(lua_State* L, int index, const Key& key, std::string_view path)
     case Type::function:
       if (!lua_isfunction(L, index)) wrong_type(L, index, path, key.type);
       return FunctionArg{lua_absindex(L, index)};
+    case Type::pairs: {
+      const int length = list_length(L, index, path, Type::pairs);
+      if (length == 0) fail("{} must not be an empty list", path);
+      std::vector<std::array<double, 2>> pairs;
+      for (int i = 1; i <= length; ++i)
+        pairs.push_back(read_item(L, index, i, [&](int top) {
+          const std::string item = item_path(path, i);
+          return read_pair<double>(L, top, item, Type::pair, [&](int inner, const std::string& name) {
+            return read_number(L, inner, name, key.range);
+          });
+        }));
+      return pairs;
+    }
     case Type::numbers_or_name:
       if (lua_type(L, index) == LUA_TSTRING) return read_string(L, index, path, key.choices);
       if (!lua_istable(L, index)) wrong_type(L, index, path, key.type);

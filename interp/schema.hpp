@@ -42,12 +42,13 @@ enum class Type {
   strings,          // a string or a list of strings
   function,         // a Lua function
   numbers_or_name,  // a list of numbers, or one of the key's choices: {0, -1e6, 0} or "insitu"
+  pairs,            // a non-empty list of pairs of numbers: {{a, b}, {a, b}, ...}
 };
 
 inline constexpr Type kAllTypes[] = {
     Type::number,  Type::integer,  Type::string,   Type::boolean,        Type::point,
     Type::pair,    Type::int_pair, Type::numbers,  Type::polygon,        Type::region,
-    Type::regions, Type::strings,  Type::function, Type::numbers_or_name};
+    Type::regions, Type::strings,  Type::function, Type::numbers_or_name, Type::pairs};
 
 // A type's name in the reference ("point"), and how a script writes it ("`{x, y}` or ...").
 std::string_view type_name(Type type);
@@ -135,7 +136,8 @@ struct FunctionArg {
 
 using Value = std::variant<double, std::int64_t, std::string, bool, Vec2, std::array<double, 2>,
                            std::array<std::int64_t, 2>, std::vector<double>, Polygon, RegionRef,
-                           std::vector<RegionRef>, std::vector<std::string>, FunctionArg>;
+                           std::vector<RegionRef>, std::vector<std::string>, FunctionArg,
+                           std::vector<std::array<double, 2>>>;
 
 // The checked arguments of one call, by key (positional items under their declared names).
 // Getters throw std::logic_error when a command asks for what its schema does not give.

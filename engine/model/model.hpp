@@ -60,6 +60,8 @@ class Model {
   void add_material(const MaterialDef& def);          // redefining a name changes its zones too
                                                        // (but not to or from "null")
   void assign(const AssignDef& def);                   // needs zones
+  void add_joint_material(const JointMaterialDef& def);  // redefining a name changes its contacts
+  void jassign(const JassignDef& def);                 // needs zones
   void set_gravity(Vec2 g);                            // [m/s^2]
   void insitu(const InsituDef& def);                   // sets zone stresses (needs zones)
   void boundary(const BoundaryDef& def);               // needs zones
@@ -97,6 +99,11 @@ class Model {
   int zone_at(Vec2 point) const;         // -1 when no zone contains the point
   GridpointView gridpoint(int id) const;
   ZoneView zone_view(int id) const;
+  // Contacts as last found (found now if cycling has not begun); ids are 0-based positions.
+  int contact_count() const;
+  ContactView contact(int id) const;
+  int contact_near(Vec2 point) const;  // -1 when there are none
+  std::vector<std::string> joint_material_names() const;
   std::vector<std::string> material_names() const;
 
  private:

@@ -37,6 +37,37 @@ struct MaterialDef {
   double tension = 0.0;     // tensile strength [Pa] (mohr); capped at cohesion / tan(friction)
 };
 
+// How a joint's normal stress grows with closure.
+enum class NormalLaw : std::uint8_t {
+  linear,      // sn = kn * closure
+  table,       // kn by stages of closure (kn_table)
+  seed_cubic,  // the seed paper's lab curve, clamped (contact/joint_law.hpp)
+};
+
+// A joint material: the law of the contacts along joints and cracks (contact/joint_law.hpp).
+struct JointMaterialDef {
+  std::string name;
+  double kn = kUnset;      // normal stiffness [Pa/m] (linear law; optional with a table)
+  double ks = kUnset;      // shear stiffness [Pa/m]
+  double friction = 0.0;   // [deg]
+  double cohesion = 0.0;   // [Pa], lost once the contact slips or opens
+  double tension = 0.0;    // tensile strength [Pa], lost likewise
+  double dilation = 0.0;   // [deg], at most friction
+  NormalLaw law = NormalLaw::linear;
+  // Stages {closure from [m], kn [Pa/m]}: closures increasing from 0.
+  std::vector<std::array<double, 2>> kn_table;
+};
+
+// Gives contacts a joint material by what made their edge: a joint set (set >= 0, 0-based),
+// a kind ("joint", "crack"), a region (edges whose midpoint is inside); all that are given
+// must hold. Later assignments win.
+struct JassignDef {
+  std::string material;
+  int set = -1;
+  std::string kind;
+  RegionRef region;
+};
+
 // Gives the zones inside `region` (all zones when empty) the material `material`.
 struct AssignDef {
   std::string material;
@@ -116,6 +147,22 @@ struct GridpointView {
   Vec2 v;          // velocity [m/s]
   Vec2 f;          // unbalanced force of the last cycle [N/m]
   bool fixed_x = false, fixed_y = false;
+};
+
+// A contact between a gridpoint and the edge of another block (contact/contacts.hpp).
+struct ContactView {
+  int id = -1;            // 0-based
+  Vec2 position;          // the gridpoint's current position [m]
+  Vec2 normal;            // unit normal of the contact plane, out of the edge's block [-]
+  double length = 0.0;    // contact length [m]
+  double fn = 0.0, fs = 0.0;  // normal (compression negative) and shear force [N/m]
+  double un = 0.0;        // normal displacement, opening positive [m]
+  double us = 0.0;        // shear displacement since the contact formed [m]
+  double slip = 0.0;      // plastic part of it, accumulated as a length [m]
+  std::string state;      // "bonded", "elastic", "slip", "open"
+  std::string kind;       // "joint", "crack"
+  std::string material;
+  int block = -1, other = -1;  // the gridpoint's block and the edge's block, 0-based
 };
 
 struct ZoneView {

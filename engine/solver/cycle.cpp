@@ -34,12 +34,16 @@
 #include <array>
 #include <cmath>
 
+#include "contact/contact_force.hpp"
+
 namespace edem {
 namespace {
 
 struct Partials {
   std::vector<double> zone_applied;  // per zone chunk
   std::vector<int> zone_inverted;
+  std::vector<double> contact_applied;  // per contact chunk
+  std::vector<int> contact_overlapping;
   std::vector<double> unbalanced, kinetic, num, den, speed;  // per node chunk
   std::vector<int> fastest;
   std::vector<char> finite;
@@ -100,8 +104,8 @@ bool inverted(const Mechanics& m, const ZoneGeometry& g) {
   double x[3], y[3];
   for (int i = 0; i < 3; ++i) {
     const size_t n = static_cast<size_t>(g.node[static_cast<size_t>(i)]);
-    x[i] = m.position[2 * n] + m.u[2 * n];
-    y[i] = m.position[2 * n + 1] + m.u[2 * n + 1];
+    x[i] = m.current[2 * n];
+    y[i] = m.current[2 * n + 1];
   }
   return (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]) <= 0.0;
 }
@@ -188,6 +192,30 @@ void zone_force_pass(Mechanics& m, int begin, int end, Partials& partials) {
   }
 }
 
+// Forces of contacts [begin, end); the nodes gather them in their own pass.
+template <bool kMeasure>
+void contact_pass(Mechanics& m, int begin, int end, Partials& partials) {
+  Contact* list = m.contacts.list.data();
+  const ContactEdge* edges = m.faces.edges.data();
+  const JointParams* params = m.joint_params.data();
+  double applied = 0.0;
+  int overlapping = -1;
+  for (int i = begin; i < end; ++i) {
+    Contact& c = list[i];
+    const double overlap = contact_force(c, edges[c.edge], params[c.material], m.current.data(), m.v.data(), m.step);
+    if constexpr (kMeasure) {
+      applied += 2.0 * std::sqrt(c.fx * c.fx + c.fy * c.fy);
+      if (overlapping < 0 && overlap > c.limit) overlapping = i;
+      if ((i + 1) % kChunk == 0 || i + 1 == end) {
+        partials.contact_applied[static_cast<size_t>(i / kChunk)] = applied;
+        partials.contact_overlapping[static_cast<size_t>(i / kChunk)] = overlapping;
+        applied = 0.0;
+        overlapping = -1;
+      }
+    }
+  }
+}
+
 // Velocity update coefficients of one cycle.
 struct Motion {
   double dt = 1.0;
@@ -203,6 +231,10 @@ void node_motion_pass(Mechanics& m, int begin, int end, const Motion& motion, bo
   double* acc = m.acc_force.data();
   const int* first = m.partition.gather_first.data();
   const int* gather = m.partition.gather.data();
+  const bool with_contacts = !m.contacts.list.empty();
+  const int* contact_first = m.contacts.gather_first.data();
+  const int* contact_gather = m.contacts.gather.data();
+  const Contact* contacts = m.contacts.list.data();
   double unbalanced = 0.0, kinetic = 0.0, num = 0.0, den = 0.0, speed = -1.0;
   int fastest = -1;
   bool finite = true;
@@ -222,6 +254,15 @@ void node_motion_pass(Mechanics& m, int begin, int end, const Motion& motion, bo
         f[1] += acc[2 * d + 1];
         acc[2 * d] = 0.0;
         acc[2 * d + 1] = 0.0;
+      }
+    }
+    if (with_contacts) {
+      for (int s = contact_first[n]; s < contact_first[n + 1]; ++s) {
+        const Contact& c = contacts[contact_gather[s] / 3];
+        const int role = contact_gather[s] % 3;
+        const double w = role == 0 ? 1.0 : role == 1 ? -(1.0 - c.t) : -c.t;
+        f[0] += w * c.fx;
+        f[1] += w * c.fy;
       }
     }
     const double mass = m.mass[nn];
@@ -249,13 +290,17 @@ void node_motion_pass(Mechanics& m, int begin, int end, const Motion& motion, bo
           }
         }
         m.u[dof] += motion.dt * m.v[dof];
+        m.current[dof] += motion.dt * m.v[dof];
       }
     } else {
       // No stiffness to move against: held components still follow their velocity.
       for (int c = 0; c < 2; ++c) {
         const size_t dof = 2 * nn + static_cast<size_t>(c);
         m.force[dof] = f[c] + m.weight[dof] + m.load[dof];
-        if ((m.fix[nn] >> c) & 1) m.u[dof] += motion.dt * m.v[dof];
+        if ((m.fix[nn] >> c) & 1) {
+          m.u[dof] += motion.dt * m.v[dof];
+          m.current[dof] += motion.dt * m.v[dof];
+        }
       }
     }
     if (mass > 0.0) {
@@ -319,6 +364,17 @@ Measure run_cycles(Mechanics& m, int count) {
   partials.speed.assign(node_chunks, -1.0);
   partials.fastest.assign(node_chunks, -1);
   partials.finite.assign(node_chunks, 1);
+  const int contact_count = static_cast<int>(m.contacts.list.size());
+  const size_t contact_chunks = (static_cast<size_t>(contact_count) + kChunk - 1) / kChunk;
+  partials.contact_applied.assign(contact_chunks, 0.0);
+  partials.contact_overlapping.assign(contact_chunks, -1);
+  std::vector<int> contact_begin(static_cast<size_t>(ranges) + 1);
+  {
+    const int chunks = static_cast<int>(contact_chunks);
+    for (int t = 0; t <= ranges; ++t)
+      contact_begin[static_cast<size_t>(t)] =
+          std::min(contact_count, static_cast<int>(static_cast<long>(chunks) * t / ranges) * kChunk);
+  }
   if (m.adaptive.u_start.size() != m.u.size()) {
     m.adaptive.u_start = m.u;
     m.adaptive.r_start.assign(m.u.size(), 0.0);
@@ -340,6 +396,8 @@ Measure run_cycles(Mechanics& m, int count) {
           grouped ? zone_force_pass<true, true>(m, b, e, partials) : zone_force_pass<true, false>(m, b, e, partials);
         else
           grouped ? zone_force_pass<false, true>(m, b, e, partials) : zone_force_pass<false, false>(m, b, e, partials);
+        const int cb = contact_begin[static_cast<size_t>(r)], ce = contact_begin[static_cast<size_t>(r) + 1];
+        if (cb < ce) measure ? contact_pass<true>(m, cb, ce, partials) : contact_pass<false>(m, cb, ce, partials);
       }
 #pragma omp barrier
       for (int r = me; r < ranges; r += team) {
@@ -361,6 +419,14 @@ Measure run_cycles(Mechanics& m, int count) {
     out.applied += partials.zone_applied[c];
     if (out.inverted_zone < 0) out.inverted_zone = partials.zone_inverted[c];
   }
+  for (size_t c = 0; c < contact_chunks; ++c) {
+    out.applied += partials.contact_applied[c];
+    if (out.overlapping < 0 && partials.contact_overlapping[c] >= 0) {
+      out.overlapping = partials.contact_overlapping[c];
+      const Contact& contact = m.contacts.list[static_cast<size_t>(out.overlapping)];
+      out.overlap = contact.closure - contact.closure0 + contact.dilation;  // -gap
+    }
+  }
   double speed = -1.0;
   for (size_t c = 0; c < node_chunks; ++c) {
     out.unbalanced += partials.unbalanced[c];
@@ -373,6 +439,7 @@ Measure run_cycles(Mechanics& m, int count) {
       out.fastest_node = partials.fastest[c];
     }
   }
+  out.max_speed = speed > 0.0 ? std::sqrt(speed) : 0.0;
   if (!std::isfinite(out.unbalanced) || !std::isfinite(out.kinetic)) out.finite = false;
   return out;
 }
@@ -407,6 +474,20 @@ Measure measure_state(const Mechanics& m) {
       f[2 * n + 1] += fy;
       out.applied += std::sqrt(fx * fx + fy * fy);
     }
+  }
+  // Contact forces at the current positions, without a step.
+  for (const Contact& c : m.contacts.list) {
+    Contact now = c;
+    const ContactEdge& e = m.faces.edges[static_cast<size_t>(c.edge)];
+    contact_force(now, e, m.joint_params[static_cast<size_t>(c.material)], m.current.data(), m.v.data(), 0.0);
+    const size_t n = static_cast<size_t>(c.node), a = static_cast<size_t>(e.a), b = static_cast<size_t>(e.b);
+    f[2 * n] += now.fx;
+    f[2 * n + 1] += now.fy;
+    f[2 * a] -= (1.0 - now.t) * now.fx;
+    f[2 * a + 1] -= (1.0 - now.t) * now.fy;
+    f[2 * b] -= now.t * now.fx;
+    f[2 * b + 1] -= now.t * now.fy;
+    out.applied += 2.0 * std::hypot(now.fx, now.fy);
   }
   for (size_t n = 0; n < static_cast<size_t>(m.node_count); ++n) {
     if (!(m.mass[n] > 0.0)) continue;

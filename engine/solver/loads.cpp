@@ -43,12 +43,17 @@ Stress insitu_stress(const InsituDef& def, Vec2 point, double g) {
   return s;
 }
 
-Stress insitu_stress_at(const Mechanics& m, Vec2 point) {
+std::optional<Stress> insitu_stress_if_any(const Mechanics& m, Vec2 point) {
   const auto& regions = m.insitu_regions;
   const double g = m.gravity_set ? norm(m.gravity) : 9.81;
   for (size_t i = m.insitu.size(); i-- > 0;)
     if (regions[i].empty() || contains(regions[i], point))
       return insitu_stress(m.insitu[i], point, g);
+  return std::nullopt;
+}
+
+Stress insitu_stress_at(const Mechanics& m, Vec2 point) {
+  if (const auto s = insitu_stress_if_any(m, point)) return *s;
   fail("stress = \"insitu\" needs an insitu{{...}} covering ({:.6g}, {:.6g}) first", point.x,
        point.y);
 }

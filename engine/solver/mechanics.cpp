@@ -154,6 +154,7 @@ void Model::insitu(const InsituDef& def) {
   }
   m.insitu.push_back(def);
   m.insitu_regions.push_back(region);
+  m.contacts.from_insitu = true;  // contacts take the in-situ tractions when next found
   m.dirty = true;
   if (!cycling_started() && !m.replaying)
     m.replay.push_back([def](Model& model) { model.insitu(def); });

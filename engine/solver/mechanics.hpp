@@ -17,6 +17,8 @@
 
 #include "constitutive/material.hpp"
 #include "constitutive/mohr_coulomb.hpp"
+#include "contact/contacts.hpp"
+#include "contact/joint_law.hpp"
 #include "geom/mesh.hpp"
 #include "model/physics_defs.hpp"
 
@@ -81,6 +83,11 @@ struct Mechanics {
   int threads = 0;  // 0: OpenMP's default
   std::vector<InsituDef> insitu;         // in order; boundary stress="insitu" uses them
   std::vector<Polygon> insitu_regions;   // their regions resolved (empty: everywhere)
+  std::vector<JointMaterialDef> joint_materials;
+  std::vector<JointParams> joint_params;  // same order
+  std::vector<JassignDef> jassign;        // in order; later ones win
+  std::vector<Polygon> jassign_regions;   // their regions resolved (empty: everywhere)
+  std::vector<int> jassign_material;      // their joint materials
   // Commands given before the first cycle, replayed after a re-zone.
   std::vector<std::function<void(class Model&)>> replay;
   bool replaying = false;
@@ -99,21 +106,29 @@ struct Mechanics {
   std::vector<int> gp_node;         // mesh gridpoint -> node
   std::vector<double> position;     // reference [m], 2 per node
   std::vector<double> u, v;         // displacement [m], velocity [m/s]
+  std::vector<double> current;      // where the node is now [m]: position + u, unless u was reset
   std::vector<double> force;        // unbalanced force of the last cycle [N/m]
   std::vector<double> load;         // boundary tractions lumped to nodes [N/m]
   std::vector<std::uint8_t> fix;    // bit 0: x held, bit 1: y held
   std::vector<int> node_block;      // a block of the node (for messages)
   std::vector<BoundarySegment> boundary;
 
+  // ---- contacts
+  ContactBoundary faces;   // the touchable block boundaries (per mesh)
+  ContactSet contacts;
+
   // ---- derived by prepare()
   bool dirty = true;
   std::vector<ZoneGeometry> geometry;  // per mesh zone
   std::vector<int> active;             // mesh zones that are cycled (material not null)
+  std::vector<char> block_live;        // per mesh block: has an active zone
   // Mixed discretisation: per active position, the other members of its zone group (-1
   // padded; {-1, -1}: alone). Empty when the mixed discretisation is off.
   std::vector<std::array<int, 2>> mates;
   std::vector<double> mass;            // per node, inertial (scaled in static mode) [kg/m]
-  std::vector<double> stiffness;       // per node, Gershgorin row sum of the zone stiffness [N/m^2]
+  std::vector<double> zone_rows;       // per node, Gershgorin row sum of the zone stiffness [N/m^2]
+  std::vector<double> real_mass;       // per node [kg/m]
+  std::vector<double> stiffness;       // per node, zone_rows + contact rows [N/m^2]
   std::vector<double> weight;          // gravity force, 2 per node [N/m]
   double step = 1.0;                   // time step [s]
   double critical_step = 0.0;          // estimate: 2 min sqrt(m / k) with real masses [s]

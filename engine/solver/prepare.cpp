@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "core/error.hpp"
+#include "contact/detect.hpp"
 #include "solver/zone_groups.hpp"
 
 namespace edem {
@@ -168,6 +169,35 @@ Partition make_partition(const Mechanics& m, int threads) {
 
 }  // namespace
 
+void update_masses(Mechanics& m) {
+  const size_t nodes = static_cast<size_t>(m.node_count);
+  const bool contacts = m.contacts.rows.size() == nodes;
+  m.stiffness.assign(nodes, 0.0);
+  double critical = INFINITY;
+  for (size_t n = 0; n < nodes; ++n) {
+    m.stiffness[n] = m.zone_rows[n] + (contacts ? m.contacts.rows[n] : 0.0);
+    if (m.stiffness[n] > 0.0 && m.real_mass[n] > 0.0)
+      critical = std::min(critical, 2.0 * std::sqrt(m.real_mass[n] / m.stiffness[n]));
+  }
+  m.critical_step = std::isfinite(critical) ? critical : 0.0;
+  const double fraction = m.settings.step_fraction;
+  if (m.settings.mode == SolverMode::dynamic) {
+    m.mass = m.real_mass;
+    m.step = m.settings.step > 0.0 ? m.settings.step : fraction * m.critical_step;
+  } else {
+    // Density scaling: with a step of 1, masses that make every node's own bound equal.
+    // Local damping can add up to alpha |F| to a force (when F opposes the velocity), which
+    // acts like a stiffness (1 + alpha) times larger: the masses grow with it.
+    m.step = 1.0;
+    const double amplification =
+        m.settings.damping == Damping::local ? 1.0 + m.settings.local_damping : 1.0;
+    m.mass.resize(nodes);
+    for (size_t n = 0; n < nodes; ++n)
+      m.mass[n] = amplification * m.stiffness[n] / (4.0 * fraction * fraction);
+  }
+  m.info.step = m.step;
+}
+
 int thread_count(const Mechanics& m) {
   return m.threads > 0 ? m.threads : std::max(1, omp_get_max_threads());
 }
@@ -189,6 +219,7 @@ void reset_for_mesh(Mechanics& m, const Mesh& mesh) {
     if (m.node_block[n] < 0) m.node_block[n] = mesh.gp_block[gp];
   }
   m.u.assign(dofs, 0.0);
+  m.current = m.position;
   m.v.assign(dofs, 0.0);
   m.force.assign(dofs, 0.0);
   m.load.assign(dofs, 0.0);
@@ -201,6 +232,8 @@ void reset_for_mesh(Mechanics& m, const Mesh& mesh) {
           m.boundary.push_back({m.gp_node[static_cast<size_t>(loop.gridpoints[i])],
                                 m.gp_node[static_cast<size_t>(loop.gridpoints[(i + 1) % loop.gridpoints.size()])],
                                 false, {}, {}});
+  m.faces = contact_boundary(mesh, m.gp_node, m.position);
+  m.contacts = ContactSet{};
   m.geometry.resize(zones);
   for (size_t z = 0; z < zones; ++z) m.geometry[z] = zone_geometry(m, mesh, static_cast<int>(z));
   m.insitu.clear();
@@ -225,8 +258,14 @@ void prepare(Mechanics& m, const Mesh& mesh) {
     m.active.push_back(z);
   }
 
+  m.block_live.assign(mesh.block_boundary.size(), 0);
+  for (const int z : m.active) m.block_live[static_cast<size_t>(mesh.zone_block[static_cast<size_t>(z)])] = 1;
+  assign_joint_materials(m);
+  m.contacts.detected = false;  // materials or zones may have changed
+
   const size_t nodes = static_cast<size_t>(m.node_count);
-  std::vector<double> rows(2 * nodes, 0.0), real_mass(nodes, 0.0);
+  std::vector<double> rows(2 * nodes, 0.0);
+  m.real_mass.assign(nodes, 0.0);
   m.weight.assign(2 * nodes, 0.0);
   for (const int z : m.active) {
     const ZoneGeometry& g = m.geometry[static_cast<size_t>(z)];
@@ -234,22 +273,13 @@ void prepare(Mechanics& m, const Mesh& mesh) {
     add_row_sums(g, p, m.fix, rows);
     for (const int node : g.node) {
       const size_t n = static_cast<size_t>(node);
-      real_mass[n] += p.density * g.area / 3.0;
+      m.real_mass[n] += p.density * g.area / 3.0;
       m.weight[2 * n] += p.density * g.area / 3.0 * m.gravity.x;
       m.weight[2 * n + 1] += p.density * g.area / 3.0 * m.gravity.y;
     }
   }
-  m.stiffness.assign(nodes, 0.0);
-  double critical = INFINITY;
-  for (size_t n = 0; n < nodes; ++n) {
-    m.stiffness[n] = std::max(rows[2 * n], rows[2 * n + 1]);
-    if (m.stiffness[n] > 0.0 && real_mass[n] > 0.0)
-      critical = std::min(critical, 2.0 * std::sqrt(real_mass[n] / m.stiffness[n]));
-  }
-  m.critical_step = std::isfinite(critical) ? critical : 0.0;
-
-  const double fraction = m.settings.step_fraction;
-  m.mass.assign(nodes, 0.0);
+  m.zone_rows.assign(nodes, 0.0);
+  for (size_t n = 0; n < nodes; ++n) m.zone_rows[n] = std::max(rows[2 * n], rows[2 * n + 1]);
   if (m.settings.mode == SolverMode::dynamic) {
     for (const int z : m.active) {
       const auto& p = m.params[static_cast<size_t>(m.zone_material[static_cast<size_t>(z)])];
@@ -258,18 +288,8 @@ void prepare(Mechanics& m, const Mesh& mesh) {
              m.materials[static_cast<size_t>(m.zone_material[static_cast<size_t>(z)])].name,
              p.density);
     }
-    m.mass = real_mass;
-    m.step = m.settings.step > 0.0 ? m.settings.step : fraction * m.critical_step;
-  } else {
-    // Density scaling: with a step of 1, masses that make every node's own bound equal.
-    // Local damping can add up to alpha |F| to a force (when F opposes the velocity), which
-    // acts like a stiffness (1 + alpha) times larger: the masses grow with it.
-    m.step = 1.0;
-    const double amplification =
-        m.settings.damping == Damping::local ? 1.0 + m.settings.local_damping : 1.0;
-    for (size_t n = 0; n < nodes; ++n)
-      m.mass[n] = amplification * m.stiffness[n] / (4.0 * fraction * fraction);
   }
+  update_masses(m);
 
   m.applied_magnitude = 0.0;
   for (size_t n = 0; n < nodes; ++n)

@@ -16,6 +16,10 @@ void reset_for_mesh(Mechanics& m, const Mesh& mesh);
 // allowed but noted by the watchdog).
 void prepare(Mechanics& m, const Mesh& mesh);
 
+// Masses and time step from the zone and contact stiffness (after prepare(), and again after
+// every contact detection).
+void update_masses(Mechanics& m);
+
 // The number of threads cycling will use.
 int thread_count(const Mechanics& m);
 

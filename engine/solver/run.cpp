@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "core/error.hpp"
+#include "contact/detect.hpp"
 #include "solver/cycle.hpp"
 #include "solver/prepare.hpp"
 
@@ -67,6 +68,18 @@ void watch(Mechanics& m, const Mesh& mesh, const Measure& measure, int batch) {
     m.growth_span = 0;
   } else if (m.last_kinetic > 0.0) {
     per_cycle = std::pow(measure.kinetic / m.last_kinetic, 1.0 / m.growth_span);
+  }
+  if (measure.overlapping >= 0) {
+    const Contact& c = m.contacts.list[static_cast<size_t>(measure.overlapping)];
+    const Vec2 p{m.current[2 * static_cast<size_t>(c.node)], m.current[2 * static_cast<size_t>(c.node) + 1]};
+    const JointParams& jp = m.joint_params[static_cast<size_t>(c.material)];
+    fail("cycle {}: overlap too great: the gridpoint at ({:.6g}, {:.6g}) of block {} is {:.3g} m inside "
+         "block {}, more than half its shortest boundary edge ({:.3g} m); normal stress {:.4g} Pa "
+         "there; likely cause: joint material '{}' too soft for this stress (a closure of {:.3g} m "
+         "at its largest stiffness {:.4g} Pa/m), or blocks driven into each other faster than the "
+         "contacts can push back (a boundary velocity or a time step too large)",
+         cycle, p.x, p.y, c.block + 1, measure.overlap, c.other + 1, c.limit, c.sn,
+         m.joint_materials[static_cast<size_t>(c.material)].name, c.sn / jp.kn_max, jp.kn_max);
   }
   std::string inverted;
   if (measure.inverted_zone >= 0) {
@@ -147,8 +160,13 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
   } else {
     prepare(m, mesh);  // the thread count may have changed
   }
+  if (contacts_due(m, 0.0)) {
+    detect_contacts(m);
+    update_masses(m);
+  }
   CyclingFlag flag(m.cycling_now);
   SolveResult result;
+  double speed = 0.0;  // fastest gridpoint at the last measurement [m/s]
   if (target_ratio > 0.0) {
     const Measure now = measure_state(m);
     m.info.ratio = now.applied > 0.0 ? now.unbalanced / now.applied : 0.0;
@@ -165,7 +183,14 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
     }
     const long cycle = m.info.cycle;
     const long batch = std::min(max_cycles - result.cycles, next_due(m, cycle) - cycle);
+    // Contacts are found again before anything can move a quarter of a reach from where they
+    // were found (allowing twice the last speed over the batch).
+    if (contacts_due(m, 2.0 * speed * m.step * static_cast<double>(batch))) {
+      detect_contacts(m);
+      update_masses(m);
+    }
     const Measure measure = run_cycles(m, static_cast<int>(batch));
+    speed = measure.max_speed;
     result.cycles += batch;
     m.cycles_run += batch;
     m.info.cycle += batch;

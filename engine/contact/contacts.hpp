@@ -1,0 +1,89 @@
+// Contacts between blocks: a gridpoint of one block against an edge of another, as UDEC's
+// sub-contacts of deformable blocks.
+//
+// Every gridpoint on a block boundary that is not glued looks for the nearest edge of each
+// other block within its reach; both sides of a joint do so, each with half the contact length,
+// so that the two faces carry the joint's stiffness together whatever their zoning. A contact's
+// length is the part of its gridpoint's boundary that faces that block: half of each adjacent
+// edge, projected on the contact plane, and given to the block its quarter point is nearest to
+// (so a gridpoint facing the end of one block and the start of the next shares between them).
+//
+// The list is rebuilt by detect_contacts() when anything has moved a quarter of the smallest
+// reach since the last time (the state of a contact that persists is carried over, by its
+// gridpoint and the other block). Between rebuilds the edge of a contact is fixed; a gridpoint
+// that slides past the edge's end is held at the end, at most an eighth of an edge away.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "geom/block_set.hpp"
+
+namespace edem {
+
+// A block boundary edge as the contacts see it. The block is on its left (outer loops run
+// counter-clockwise, holes clockwise), so its outward normal is the edge direction turned
+// clockwise.
+struct ContactEdge {
+  int a = -1, b = -1;        // solver nodes, in loop order
+  int block = -1;            // mesh block
+  int prev = -1, next = -1;  // the neighbouring edges of its loop
+  // At a convex corner of its block (turning by more than 10 degrees), the node at the far end
+  // of the neighbouring edge there; -1 where the boundary goes on (nearly) straight.
+  int beyond_a = -1, beyond_b = -1;
+  bool touchable = false;    // not glued
+  EdgeOrigin origin;
+  int material = -1;         // joint material (jassign), -1: none
+};
+
+// The boundaries of the blocks, built once per mesh.
+struct ContactBoundary {
+  std::vector<ContactEdge> edges;
+  std::vector<int> block_first_edge;  // per mesh block, + 1
+  // Gridpoints (solver nodes) on at least one touchable edge, ascending; per such node (CSR):
+  // its touchable edges and the blocks it belongs to.
+  std::vector<int> nodes;
+  std::vector<int> edge_first, node_edges;
+  std::vector<int> block_first, node_blocks;
+  std::vector<double> reach;  // per node: half its shortest touchable edge [m]
+  double min_reach = 0.0;     // [m]
+};
+
+enum class ContactState : std::uint8_t { bonded, elastic, slip, open };
+
+struct Contact {
+  int node = -1;       // the gridpoint
+  int block = -1;      // a block it belongs to
+  int other = -1;      // the block of the edge
+  int edge = -1;       // index into ContactBoundary::edges
+  int material = -1;   // joint material
+  double length = 0.0; // [m]
+  double limit = 0.0;  // overlap beyond which the watchdog stops the run: the gridpoint's reach [m]
+  double t = 0.0;      // where the gridpoint projects on the edge, 0 at a, 1 at b
+  double closure0 = 0.0;  // closure at zero gap: the in-situ prestress [m]
+  double dilation = 0.0;  // opening from dilation [m]
+  double closure = 0.0;   // last closure, positive pressing [m]
+  double sn = 0.0;        // last normal stress, compression positive [Pa]
+  double fs = 0.0;        // shear force on the gridpoint along the edge direction [N/m]
+  double us = 0.0;        // shear displacement since it formed [m]
+  double slip = 0.0;      // plastic shear displacement, accumulated as a length [m]
+  double fx = 0.0, fy = 0.0;  // force on the gridpoint this cycle [N/m]
+  ContactState state = ContactState::elastic;
+  bool intact = false;    // still has its cohesion and tensile strength
+};
+
+struct ContactSet {
+  std::vector<Contact> list;  // ordered by gridpoint, then other block
+  // Per node (CSR over all nodes): the contact forces it takes, as contact * 3 + role (0: the
+  // gridpoint's own, 1: edge end a, 2: edge end b), in a fixed order.
+  std::vector<int> gather_first, gather;
+  std::vector<double> rows;          // per node: Gershgorin row sum of contact stiffness [N/m^2]
+  std::vector<double> x_detected;    // node positions at the last detection [m]
+  bool detected = false;             // the list is current (materials, zones, positions)
+  bool as_built = true;              // the next detection is the first on this mesh
+  bool from_insitu = false;          // the next detection sets contact forces from insitu{}
+};
+
+std::string_view to_string(ContactState state);
+
+}  // namespace edem

@@ -1,0 +1,469 @@
+// Contact detection: a cell grid over the blocks' boxes (broad phase), then each boundary
+// gridpoint against the edges of the blocks whose box it is in (narrow phase). Gridpoints are
+// done independently (in parallel) and the results joined in gridpoint order, so the list is
+// the same for any thread count.
+#include "contact/detect.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "core/error.hpp"
+#include "geom/polygon.hpp"
+#include "solver/loads.hpp"
+
+namespace edem {
+namespace {
+
+// Stiffness rows count each direction with this bound on |n_x| (|n_x| + |n_y|).
+constexpr double kRowBound = 1.21;
+
+struct Box {
+  double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+  void add(Vec2 p) {
+    x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+  }
+  bool contains(Vec2 p, double slack) const {
+    return p.x >= x0 - slack && p.x <= x1 + slack && p.y >= y0 - slack && p.y <= y1 + slack;
+  }
+};
+
+Vec2 at(const Mechanics& m, int node) {
+  const size_t n = static_cast<size_t>(node);
+  return {m.current[2 * n], m.current[2 * n + 1]};
+}
+
+Vec2 outward(Vec2 a, Vec2 b) {
+  const Vec2 d = b - a;
+  const double len = norm(d);
+  return {d.y / len, -d.x / len};
+}
+
+double distance_to_segment(Vec2 p, Vec2 a, Vec2 b, double* t_out = nullptr) {
+  const Vec2 d = b - a;
+  const double t = std::clamp(dot(p - a, d) / dot(d, d), 0.0, 1.0);
+  if (t_out) *t_out = t;
+  return norm(p - (a + t * d));
+}
+
+// Blocks in a uniform grid of cells by their boxes, grown by the largest reach.
+struct BlockGrid {
+  double x0 = 0, y0 = 0, cell = 1;
+  int nx = 1, ny = 1;
+  std::vector<std::vector<int>> cells;
+  std::vector<Box> boxes;
+
+  const std::vector<int>& near(Vec2 p) const {
+    const int i = std::clamp(static_cast<int>((p.x - x0) / cell), 0, nx - 1);
+    const int j = std::clamp(static_cast<int>((p.y - y0) / cell), 0, ny - 1);
+    return cells[static_cast<size_t>(j) * static_cast<size_t>(nx) + static_cast<size_t>(i)];
+  }
+};
+
+BlockGrid block_grid(const Mechanics& m, double slack) {
+  const ContactBoundary& cb = m.faces;
+  const int blocks = static_cast<int>(cb.block_first_edge.size()) - 1;
+  BlockGrid grid;
+  grid.boxes.assign(static_cast<size_t>(blocks), Box{});
+  Box all;
+  int live = 0;
+  double size_sum = 0.0;
+  for (int blk = 0; blk < blocks; ++blk) {
+    if (!m.block_live[static_cast<size_t>(blk)]) continue;
+    Box& box = grid.boxes[static_cast<size_t>(blk)];
+    for (int e = cb.block_first_edge[static_cast<size_t>(blk)]; e < cb.block_first_edge[static_cast<size_t>(blk) + 1]; ++e) {
+      const ContactEdge& edge = cb.edges[static_cast<size_t>(e)];
+      if (!edge.touchable) continue;
+      box.add(at(m, edge.a));
+      box.add(at(m, edge.b));
+    }
+    if (box.x0 > box.x1) continue;
+    all.add({box.x0, box.y0});
+    all.add({box.x1, box.y1});
+    size_sum += std::max(box.x1 - box.x0, box.y1 - box.y0);
+    ++live;
+  }
+  if (live == 0) return grid;
+  grid.cell = std::max(size_sum / live, 1e-12) + 2.0 * slack;
+  grid.x0 = all.x0 - slack;
+  grid.y0 = all.y0 - slack;
+  grid.nx = std::clamp(static_cast<int>((all.x1 - all.x0 + 2 * slack) / grid.cell) + 1, 1, 4096);
+  grid.ny = std::clamp(static_cast<int>((all.y1 - all.y0 + 2 * slack) / grid.cell) + 1, 1, 4096);
+  grid.cell = std::max((all.x1 - all.x0 + 2 * slack) / grid.nx, (all.y1 - all.y0 + 2 * slack) / grid.ny) * (1 + 1e-12);
+  grid.cells.assign(static_cast<size_t>(grid.nx) * static_cast<size_t>(grid.ny), {});
+  for (int blk = 0; blk < blocks; ++blk) {
+    const Box& box = grid.boxes[static_cast<size_t>(blk)];
+    if (box.x0 > box.x1) continue;
+    const int i0 = std::clamp(static_cast<int>((box.x0 - slack - grid.x0) / grid.cell), 0, grid.nx - 1);
+    const int i1 = std::clamp(static_cast<int>((box.x1 + slack - grid.x0) / grid.cell), 0, grid.nx - 1);
+    const int j0 = std::clamp(static_cast<int>((box.y0 - slack - grid.y0) / grid.cell), 0, grid.ny - 1);
+    const int j1 = std::clamp(static_cast<int>((box.y1 + slack - grid.y0) / grid.cell), 0, grid.ny - 1);
+    for (int j = j0; j <= j1; ++j)
+      for (int i = i0; i <= i1; ++i)
+        grid.cells[static_cast<size_t>(j) * static_cast<size_t>(grid.nx) + static_cast<size_t>(i)].push_back(blk);
+  }
+  return grid;
+}
+
+// A contact found for one gridpoint.
+struct Found {
+  int other = -1, edge = -1;
+  double length = 0.0;
+  double t = 0.0, gap = 0.0;
+  Vec2 normal;
+  Vec2 insitu_force;   // consistent nodal force of the in-situ traction, this side's half [N/m]
+  bool insitu = false;
+};
+
+// The nearest touchable edge of `block` within `reach` of node k's gridpoint, or nothing.
+std::optional<Found> nearest_edge(const Mechanics& m, int node, Vec2 p, Vec2 own_normal, int block, double reach) {
+  const ContactBoundary& cb = m.faces;
+  double best = reach, best_opposition = INFINITY;
+  int best_edge = -1;
+  for (int e = cb.block_first_edge[static_cast<size_t>(block)]; e < cb.block_first_edge[static_cast<size_t>(block) + 1]; ++e) {
+    const ContactEdge& edge = cb.edges[static_cast<size_t>(e)];
+    if (!edge.touchable || edge.a == node || edge.b == node) continue;
+    const Vec2 a = at(m, edge.a), b = at(m, edge.b);
+    const double d = distance_to_segment(p, a, b);
+    if (d > best + 1e-9 * reach) continue;
+    // Equally near edges (a gridpoint on the corner of the other block): the one that faces
+    // the gridpoint's own boundary most squarely.
+    const double opposition = dot(outward(a, b), own_normal);
+    if (d < best - 1e-9 * reach || opposition < best_opposition) {
+      best = std::min(best, d);
+      best_opposition = opposition;
+      best_edge = e;
+    }
+  }
+  if (best_edge < 0) return std::nullopt;
+  const ContactEdge& edge = cb.edges[static_cast<size_t>(best_edge)];
+  Found f;
+  f.other = block;
+  f.edge = best_edge;
+  const Vec2 a = at(m, edge.a), b = at(m, edge.b);
+  f.normal = outward(a, b);
+  distance_to_segment(p, a, b, &f.t);
+  f.gap = dot(p - (a + f.t * (b - a)), f.normal);
+  return f;
+}
+
+std::optional<Stress> insitu_here(const Mechanics& m, Vec2 point) {
+  if (m.insitu.empty()) return std::nullopt;
+  return insitu_stress_if_any(m, point);
+}
+
+// How much of the segment p-q lies over the touchable edges `edge` and its loop neighbours,
+// measured along them (their projections, clipped to each edge's ends) [m].
+double covered_length(const Mechanics& m, Vec2 p, Vec2 q, int edge) {
+  const ContactBoundary& cb = m.faces;
+  const ContactEdge& target = cb.edges[static_cast<size_t>(edge)];
+  double covered = 0.0;
+  for (const int e : {target.prev, edge, target.next}) {
+    const ContactEdge& ce = cb.edges[static_cast<size_t>(e)];
+    if (!ce.touchable) continue;
+    const Vec2 a = at(m, ce.a), d = at(m, ce.b) - a;
+    const double len2 = dot(d, d);
+    const double tp = dot(p - a, d) / len2, tq = dot(q - a, d) / len2;
+    const double lo = std::max(0.0, std::min(tp, tq)), hi = std::min(1.0, std::max(tp, tq));
+    if (hi > lo) covered += (hi - lo) * std::sqrt(len2);
+  }
+  return std::min(covered, norm(q - p));
+}
+
+// Contacts of node position k: the nearest edge of each block in reach, and their lengths.
+std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t k, bool with_insitu) {
+  const ContactBoundary& cb = m.faces;
+  const int node = cb.nodes[k];
+  const Vec2 p = at(m, node);
+  const double reach = cb.reach[k];
+  const int* own_first = cb.node_blocks.data() + cb.block_first[k];
+  const int* own_last = cb.node_blocks.data() + cb.block_first[k + 1];
+  Vec2 own_normal;
+  bool alive = false;
+  for (int i = cb.edge_first[k]; i < cb.edge_first[k + 1]; ++i) {
+    const ContactEdge& e = cb.edges[static_cast<size_t>(cb.node_edges[static_cast<size_t>(i)])];
+    if (!m.block_live[static_cast<size_t>(e.block)]) continue;
+    alive = true;
+    own_normal = own_normal + outward(at(m, e.a), at(m, e.b));
+  }
+  std::vector<Found> found;
+  if (!alive) return found;
+  for (const int block : grid.near(p)) {
+    if (std::find(own_first, own_last, block) != own_last) continue;
+    if (!grid.boxes[static_cast<size_t>(block)].contains(p, reach)) continue;
+    if (auto f = nearest_edge(m, node, p, own_normal, block, reach)) found.push_back(*f);
+  }
+  if (found.empty()) return found;
+  // Each half of an adjacent edge goes to the block its quarter point is nearest to.
+  for (int i = cb.edge_first[k]; i < cb.edge_first[k + 1]; ++i) {
+    const ContactEdge& e = cb.edges[static_cast<size_t>(cb.node_edges[static_cast<size_t>(i)])];
+    if (!m.block_live[static_cast<size_t>(e.block)]) continue;
+    const Vec2 far_end = at(m, e.a == node ? e.b : e.a);
+    const double half = 0.5 * norm(far_end - p);
+    const Vec2 quarter = p + 0.25 * (far_end - p);
+    double best = reach + 0.5 * half;
+    Found* to = nullptr;
+    for (Found& f : found) {
+      const ContactEdge& target = cb.edges[static_cast<size_t>(f.edge)];
+      const double d = distance_to_segment(quarter, at(m, target.a), at(m, target.b));
+      if (d < best) best = d, to = &f;
+    }
+    if (!to) continue;
+    const Vec2 n_e = e.a == node ? outward(p, far_end) : outward(far_end, p);
+    const Vec2 middle = p + 0.5 * (far_end - p);
+    // This side's share, half; of the half edge, the part that lies over the other block.
+    const double covered = covered_length(m, p, middle, to->edge);
+    to->length += 0.5 * covered * std::max(0.0, -dot(n_e, to->normal));
+    if (with_insitu && covered > 0.0) {
+      if (const auto s = insitu_here(m, p + (1.0 / 3.0) * (far_end - p))) {
+        // This side's share of the edge's consistent nodal force, half * sigma . n, for the
+        // part that lies over the other block.
+        to->insitu_force = to->insitu_force + 0.5 * covered * Vec2{s->xx * n_e.x + s->xy * n_e.y, s->xy * n_e.x + s->yy * n_e.y};
+        to->insitu = true;
+      }
+    }
+  }
+  std::erase_if(found, [&](const Found& f) { return !(f.length > 1e-12 * reach); });
+  return found;
+}
+
+bool kind_matches(const std::string& kind, EdgeKind edge) {
+  if (kind == "joint") return edge == EdgeKind::joint || edge == EdgeKind::boundary || edge == EdgeKind::region;
+  if (kind == "crack") return edge == EdgeKind::crack;
+  return false;
+}
+
+std::string describe(const ContactEdge& e) {
+  if (e.origin.kind == EdgeKind::joint) return fmt::format("a joint of set {}", e.origin.set + 1);
+  if (e.origin.kind == EdgeKind::crack) return "a crack";
+  if (e.origin.kind == EdgeKind::boundary) return "the outline of a block{}";
+  return "a region outline";
+}
+
+}  // namespace
+
+std::string_view to_string(ContactState state) {
+  switch (state) {
+    case ContactState::bonded: return "bonded";
+    case ContactState::elastic: return "elastic";
+    case ContactState::slip: return "slip";
+    case ContactState::open: return "open";
+  }
+  return "?";
+}
+
+ContactBoundary contact_boundary(const Mesh& mesh, const std::vector<int>& gp_node,
+                                 const std::vector<double>& position) {
+  ContactBoundary cb;
+  cb.block_first_edge.push_back(0);
+  for (size_t block = 0; block < mesh.block_boundary.size(); ++block) {
+    for (const BoundaryLoop& loop : mesh.block_boundary[block]) {
+      const size_t count = loop.gridpoints.size();
+      const int loop_first = static_cast<int>(cb.edges.size()), n = static_cast<int>(count);
+      for (size_t i = 0; i < count; ++i) {
+        ContactEdge e;
+        e.prev = loop_first + (static_cast<int>(i) + n - 1) % n;
+        e.next = loop_first + (static_cast<int>(i) + 1) % n;
+        e.a = gp_node[static_cast<size_t>(loop.gridpoints[i])];
+        e.b = gp_node[static_cast<size_t>(loop.gridpoints[(i + 1) % count])];
+        e.block = static_cast<int>(block);
+        e.touchable = !loop.edges[i].glued;
+        e.origin = loop.edges[i];
+        cb.edges.push_back(e);
+      }
+    }
+    cb.block_first_edge.push_back(static_cast<int>(cb.edges.size()));
+  }
+  // Convex corners: the boundary turns left (the block is on the left) by more than 10 deg.
+  const auto ref = [&](int node) {
+    return Vec2{position[2 * static_cast<size_t>(node)], position[2 * static_cast<size_t>(node) + 1]};
+  };
+  const double sin10 = std::sin(10.0 * M_PI / 180.0);
+  for (ContactEdge& e : cb.edges) {
+    const ContactEdge& next = cb.edges[static_cast<size_t>(e.next)];
+    const ContactEdge& prev = cb.edges[static_cast<size_t>(e.prev)];
+    const Vec2 d = ref(e.b) - ref(e.a), dn = ref(next.b) - ref(next.a), dp = ref(prev.b) - ref(prev.a);
+    if (cross(d, dn) > sin10 * norm(d) * norm(dn)) e.beyond_b = next.b;
+    if (cross(dp, d) > sin10 * norm(dp) * norm(d)) e.beyond_a = prev.a;
+  }
+  // Per node: its touchable edges, and every block whose boundary it is on.
+  std::vector<std::pair<int, int>> node_edge, node_block;
+  for (size_t e = 0; e < cb.edges.size(); ++e) {
+    const ContactEdge& edge = cb.edges[e];
+    node_block.push_back({edge.a, edge.block});
+    if (!edge.touchable) continue;
+    node_edge.push_back({edge.a, static_cast<int>(e)});
+    node_edge.push_back({edge.b, static_cast<int>(e)});
+  }
+  std::sort(node_edge.begin(), node_edge.end());
+  std::sort(node_block.begin(), node_block.end());
+  node_block.erase(std::unique(node_block.begin(), node_block.end()), node_block.end());
+  cb.edge_first.push_back(0);
+  cb.block_first.push_back(0);
+  size_t nb = 0;
+  cb.min_reach = INFINITY;
+  for (size_t i = 0; i < node_edge.size();) {
+    const int node = node_edge[i].first;
+    double shortest = INFINITY;
+    for (; i < node_edge.size() && node_edge[i].first == node; ++i) {
+      const ContactEdge& e = cb.edges[static_cast<size_t>(node_edge[i].second)];
+      cb.node_edges.push_back(node_edge[i].second);
+      const double dx = position[2 * static_cast<size_t>(e.b)] - position[2 * static_cast<size_t>(e.a)];
+      const double dy = position[2 * static_cast<size_t>(e.b) + 1] - position[2 * static_cast<size_t>(e.a) + 1];
+      shortest = std::min(shortest, std::hypot(dx, dy));
+    }
+    while (nb < node_block.size() && node_block[nb].first < node) ++nb;
+    for (; nb < node_block.size() && node_block[nb].first == node; ++nb) cb.node_blocks.push_back(node_block[nb].second);
+    cb.nodes.push_back(node);
+    cb.edge_first.push_back(static_cast<int>(cb.node_edges.size()));
+    cb.block_first.push_back(static_cast<int>(cb.node_blocks.size()));
+    cb.reach.push_back(0.5 * shortest);
+    cb.min_reach = std::min(cb.min_reach, 0.5 * shortest);
+  }
+  if (cb.nodes.empty()) cb.min_reach = 0.0;
+  return cb;
+}
+
+void assign_joint_materials(Mechanics& m) {
+  for (ContactEdge& e : m.faces.edges) {
+    e.material = -1;
+    if (!e.touchable) continue;
+    const Vec2 a{m.position[2 * static_cast<size_t>(e.a)], m.position[2 * static_cast<size_t>(e.a) + 1]};
+    const Vec2 b{m.position[2 * static_cast<size_t>(e.b)], m.position[2 * static_cast<size_t>(e.b) + 1]};
+    for (size_t r = 0; r < m.jassign.size(); ++r) {
+      const JassignDef& rule = m.jassign[r];
+      if (!rule.kind.empty() && !kind_matches(rule.kind, e.origin.kind)) continue;
+      if (rule.set >= 0 && !(e.origin.kind == EdgeKind::joint && e.origin.set == rule.set)) continue;
+      const Polygon& region = m.jassign_regions[r];
+      if (!region.empty() && !contains(region, 0.5 * (a + b))) continue;
+      e.material = m.jassign_material[r];
+    }
+  }
+}
+
+bool contacts_due(const Mechanics& m, double coming_motion) {
+  if (!m.contacts.detected) return true;
+  if (m.faces.nodes.empty()) return false;
+  double moved = 0.0;
+  for (const int node : m.faces.nodes) {
+    const size_t n = static_cast<size_t>(node);
+    moved = std::max(moved, std::hypot(m.current[2 * n] - m.contacts.x_detected[2 * n],
+                                       m.current[2 * n + 1] - m.contacts.x_detected[2 * n + 1]));
+  }
+  return moved + coming_motion > 0.25 * m.faces.min_reach;
+}
+
+void detect_contacts(Mechanics& m) {
+  const ContactBoundary& cb = m.faces;
+  ContactSet& set = m.contacts;
+  const bool first = set.as_built;
+  const bool with_insitu = set.from_insitu && !m.insitu.empty();
+  double max_reach = 0.0;
+  for (const double r : cb.reach) max_reach = std::max(max_reach, r);
+  const BlockGrid grid = block_grid(m, max_reach);
+
+  std::vector<std::vector<Found>> found(cb.nodes.size());
+  if (!grid.cells.empty()) {
+#pragma omp parallel for schedule(dynamic, 256) num_threads(std::max(1, m.threads > 0 ? m.threads : omp_get_max_threads()))
+    for (size_t k = 0; k < cb.nodes.size(); ++k) found[k] = contacts_of(m, grid, k, with_insitu);
+  }
+
+  // Join in node order, carrying the state of contacts that persist (same gridpoint and block).
+  std::vector<Contact> list;
+  for (size_t k = 0; k < cb.nodes.size(); ++k) {
+    std::sort(found[k].begin(), found[k].end(), [](const Found& a, const Found& b) { return a.other < b.other; });
+    for (const Found& f : found[k]) {
+      Contact c;
+      c.node = cb.nodes[k];
+      c.block = cb.node_blocks[static_cast<size_t>(cb.block_first[k])];
+      c.other = f.other;
+      c.edge = f.edge;
+      c.length = f.length;
+      c.t = f.t;
+      c.limit = cb.reach[k];
+      const ContactEdge& edge = cb.edges[static_cast<size_t>(f.edge)];
+      c.material = edge.material;
+      if (c.material < 0)  // the gridpoint's own side may have one
+        for (int i = cb.edge_first[k]; i < cb.edge_first[k + 1] && c.material < 0; ++i)
+          c.material = cb.edges[static_cast<size_t>(cb.node_edges[static_cast<size_t>(i)])].material;
+      if (c.material < 0) {
+        const Vec2 p = at(m, c.node);
+        fail("blocks {} and {} touch at ({:.6g}, {:.6g}) along {}, which has no joint material: "
+             "define one with joint_material{{...}} and give it with jassign{{...}}",
+             c.block + 1, c.other + 1, p.x, p.y, describe(edge));
+      }
+      const JointParams& p = m.joint_params[static_cast<size_t>(c.material)];
+      const auto old = std::lower_bound(set.list.begin(), set.list.end(), c, [](const Contact& x, const Contact& y) {
+        return x.node != y.node ? x.node < y.node : x.other < y.other;
+      });
+      if (old != set.list.end() && old->node == c.node && old->other == c.other) {
+        c.closure0 = old->closure0;
+        c.dilation = old->dilation;
+        c.closure = old->closure;
+        c.sn = old->sn;
+        c.fs = old->fs;
+        c.us = old->us;
+        c.slip = old->slip;
+        c.state = old->state;
+        c.intact = old->intact;
+      } else {
+        // Joints as built keep their strength until they fail; blocks that touch later do not
+        // stick together.
+        c.intact = first && (p.cohesion > 0.0 || p.tension > 0.0);
+        c.state = c.intact ? ContactState::bonded : ContactState::elastic;
+      }
+      if (with_insitu && f.insitu) {
+        const Vec2 a = at(m, edge.a), b = at(m, edge.b);
+        const Vec2 s = (1.0 / norm(b - a)) * (b - a);
+        const double gap = f.gap;
+        // The half traction on this side, as the contact's force on its gridpoint.
+        c.sn = dot(f.insitu_force, f.normal) / c.length;
+        c.fs = dot(f.insitu_force, s);
+        c.closure0 = closure_at(p, c.sn) + gap;
+        c.closure = c.closure0 - gap;
+        c.dilation = c.us = c.slip = 0.0;
+      }
+      list.push_back(c);
+    }
+  }
+
+  // The forces each node takes, in contact order; and the stiffness rows.
+  const size_t nodes = static_cast<size_t>(m.node_count);
+  std::vector<int> first_slot(nodes + 1, 0);
+  for (const Contact& c : list) {
+    const ContactEdge& e = cb.edges[static_cast<size_t>(c.edge)];
+    ++first_slot[static_cast<size_t>(c.node) + 1];
+    ++first_slot[static_cast<size_t>(e.a) + 1];
+    ++first_slot[static_cast<size_t>(e.b) + 1];
+  }
+  for (size_t n = 0; n < nodes; ++n) first_slot[n + 1] += first_slot[n];
+  std::vector<int> gather(static_cast<size_t>(first_slot[nodes]));
+  std::vector<int> fill(first_slot.begin(), first_slot.end() - 1);
+  std::vector<double> rows(nodes, 0.0);
+  for (size_t i = 0; i < list.size(); ++i) {
+    const Contact& c = list[i];
+    const ContactEdge& e = cb.edges[static_cast<size_t>(c.edge)];
+    const int id = static_cast<int>(i);
+    gather[static_cast<size_t>(fill[static_cast<size_t>(c.node)]++)] = 3 * id;
+    gather[static_cast<size_t>(fill[static_cast<size_t>(e.a)]++)] = 3 * id + 1;
+    gather[static_cast<size_t>(fill[static_cast<size_t>(e.b)]++)] = 3 * id + 2;
+    const JointParams& p = m.joint_params[static_cast<size_t>(c.material)];
+    const double k = kRowBound * (p.kn_max + p.ks) * c.length;
+    rows[static_cast<size_t>(c.node)] += 2.0 * k;
+    rows[static_cast<size_t>(e.a)] += 2.0 * (1.0 - c.t) * k;
+    rows[static_cast<size_t>(e.b)] += 2.0 * c.t * k;
+  }
+  set.list = std::move(list);
+  set.gather_first = std::move(first_slot);
+  set.gather = std::move(gather);
+  set.rows = std::move(rows);
+  set.x_detected = m.current;
+  set.detected = true;
+  set.as_built = false;
+  if (with_insitu) set.from_insitu = false;
+}
+
+}  // namespace edem

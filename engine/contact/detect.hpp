@@ -1,0 +1,26 @@
+// Building the contact boundary of a mesh, giving edges their joint materials, and finding the
+// contacts (contacts.hpp).
+#pragma once
+
+#include "geom/mesh.hpp"
+#include "solver/mechanics.hpp"
+
+namespace edem {
+
+// The touchable boundary of every block, with solver nodes (m.gp_node must be set).
+ContactBoundary contact_boundary(const Mesh& mesh, const std::vector<int>& gp_node,
+                                 const std::vector<double>& position);
+
+// Gives every edge the joint material of the last jassign{} that selects it.
+void assign_joint_materials(Mechanics& m);
+
+// Finds the contacts at the current positions, carrying over the state of those that persist;
+// rebuilds the force gather and the stiffness rows. Throws edem::Error, changing nothing, when
+// a contact forms on an edge without a joint material.
+void detect_contacts(Mechanics& m);
+
+// Whether anything on a block boundary has moved far enough since the last detection that the
+// contacts must be found again (or none have been found yet).
+bool contacts_due(const Mechanics& m, double coming_motion);
+
+}  // namespace edem

@@ -1,0 +1,143 @@
+// The Model's joint commands and contact views: joint_material{}, jassign{}, contacts().
+#include <algorithm>
+#include <cmath>
+
+#include "contact/detect.hpp"
+#include "core/error.hpp"
+#include "core/names.hpp"
+#include "model/model.hpp"
+#include "solver/mechanics.hpp"
+#include "solver/prepare.hpp"
+
+namespace edem {
+namespace {
+
+int joint_material_index(const Mechanics& m, const std::string& name) {
+  std::vector<std::string> names;
+  for (size_t i = 0; i < m.joint_materials.size(); ++i) {
+    if (m.joint_materials[i].name == name) return static_cast<int>(i);
+    names.push_back(m.joint_materials[i].name);
+  }
+  if (names.empty()) fail("unknown joint material '{}': no joint_material{{...}} has been defined", name);
+  fail("unknown joint material '{}'{}", name, did_you_mean(name, names));
+}
+
+// Contacts are found when cycling starts; a view before that finds them now.
+void ensure_contacts(Mechanics& m, const Mesh& mesh) {
+  if (m.contacts.detected) return;
+  prepare(m, mesh);
+  detect_contacts(m);
+  update_masses(m);
+}
+
+}  // namespace
+
+void Model::add_joint_material(const JointMaterialDef& def) {
+  const JointParams params = joint_params(def);
+  Mechanics& m = *mechanics_;
+  for (size_t i = 0; i < m.joint_materials.size(); ++i) {
+    if (m.joint_materials[i].name != def.name) continue;
+    m.joint_materials[i] = def;
+    m.joint_params[i] = params;
+    m.dirty = true;  // the step allows for the stiffest law
+    return;
+  }
+  m.joint_materials.push_back(def);
+  m.joint_params.push_back(params);
+}
+
+std::vector<std::string> Model::joint_material_names() const {
+  std::vector<std::string> names;
+  for (const auto& material : mechanics_->joint_materials) names.push_back(material.name);
+  return names;
+}
+
+void Model::jassign(const JassignDef& def) {
+  Mechanics& m = *mechanics_;
+  const int material = joint_material_index(m, def.material);
+  if (mesh_.zone_count() == 0) fail("there are no contacts to assign to: zone{{...}} the blocks first");
+  if (!def.kind.empty() && def.kind != "joint" && def.kind != "crack") {
+    if (def.kind == "glued")
+      fail("glued edges (region outlines) join their blocks into one continuum and have no "
+           "contacts; cut the region with glued = false to make its outline a joint");
+    fail("kind must be \"joint\" or \"crack\", got \"{}\"", def.kind);
+  }
+  if (def.set >= joint_set_count())
+    fail("set {} does not exist: the model has {} joint set{}", def.set + 1, joint_set_count(),
+         joint_set_count() == 1 ? "" : "s");
+  Polygon region;
+  if (!def.region.empty()) region = resolve(def.region);
+  // Something must be selected, or the assignment is surely a mistake.
+  bool any = false;
+  for (const ContactEdge& e : m.faces.edges) {
+    if (!e.touchable) continue;
+    if (!def.kind.empty() && (def.kind == "crack") != (e.origin.kind == EdgeKind::crack)) continue;
+    if (def.set >= 0 && !(e.origin.kind == EdgeKind::joint && e.origin.set == def.set)) continue;
+    if (!region.empty()) {
+      const size_t a = static_cast<size_t>(e.a), b = static_cast<size_t>(e.b);
+      const Vec2 mid{0.5 * (m.position[2 * a] + m.position[2 * b]), 0.5 * (m.position[2 * a + 1] + m.position[2 * b + 1])};
+      if (!contains(region, mid)) continue;
+    }
+    any = true;
+    break;
+  }
+  if (!any) fail("no joint or block edge that can touch another matches this jassign{{}}");
+  m.jassign.push_back(def);
+  m.jassign_regions.push_back(region);
+  m.jassign_material.push_back(material);
+  m.dirty = true;
+  if (!cycling_started() && !m.replaying)
+    m.replay.push_back([def](Model& model) { model.jassign(def); });
+}
+
+int Model::contact_count() const {
+  ensure_contacts(*mechanics_, mesh_);
+  return static_cast<int>(mechanics_->contacts.list.size());
+}
+
+ContactView Model::contact(int id) const {
+  const Mechanics& m = *mechanics_;
+  if (id < 0 || id >= contact_count()) fail("no contact {}", id + 1);
+  const Contact& c = m.contacts.list[static_cast<size_t>(id)];
+  const ContactEdge& e = m.faces.edges[static_cast<size_t>(c.edge)];
+  auto at = [&](int node) {
+    const size_t n = static_cast<size_t>(node);
+    return Vec2{m.current[2 * n], m.current[2 * n + 1]};
+  };
+  ContactView view;
+  view.id = id;
+  view.position = at(c.node);
+  const Vec2 d = at(e.b) - at(e.a);
+  view.normal = {d.y / norm(d), -d.x / norm(d)};
+  view.length = c.length;
+  const bool open = c.state == ContactState::open;
+  view.fn = open ? 0.0 : -c.sn * c.length;
+  view.fs = c.fs;
+  view.un = -c.closure;
+  view.us = c.us;
+  view.slip = c.slip;
+  view.state = std::string(to_string(c.state));
+  view.kind = e.origin.kind == EdgeKind::crack ? "crack" : "joint";
+  view.material = m.joint_materials[static_cast<size_t>(c.material)].name;
+  view.block = c.block;
+  view.other = c.other;
+  for (double value : {view.fn, view.fs, view.un, view.us})
+    if (!std::isfinite(value)) fail("contact {} holds no finite force: the run went unstable earlier", id + 1);
+  return view;
+}
+
+int Model::contact_near(Vec2 point) const {
+  const int count = contact_count();
+  const Mechanics& m = *mechanics_;
+  int best = -1;
+  double best_distance = INFINITY;
+  for (int i = 0; i < count; ++i) {
+    const size_t n = static_cast<size_t>(m.contacts.list[static_cast<size_t>(i)].node);
+    const double dx = m.current[2 * n] - point.x, dy = m.current[2 * n + 1] - point.y;
+    const double d = dx * dx + dy * dy;
+    if (d < best_distance) best_distance = d, best = i;
+  }
+  return best;
+}
+
+}  // namespace edem
