@@ -11,15 +11,17 @@
 
 namespace edem {
 
-// Updates `c` and its force on the gridpoint (c.fx, c.fy) from the current node positions `x`
+// Updates `c` and its force on the gridpoint (c.fx, c.fy) from the node positions, origin + u,
 // and velocities `v`; returns the overlap, how far the
 // gridpoint is inside the edge's block [m] (negative: a gap).
 [[gnu::always_inline]] inline double contact_force(Contact& c, const ContactEdge& e, const JointParams& p,
-                                                   const double* x, const double* v, double dt) {
+                                                   const double* origin, const double* u,
+                                                   const double* v, double dt) {
   const size_t n = static_cast<size_t>(c.node), a = static_cast<size_t>(e.a), b = static_cast<size_t>(e.b);
-  const double xa = x[2 * a], ya = x[2 * a + 1];
-  const double dx = x[2 * b] - xa, dy = x[2 * b + 1] - ya;
-  const double px = x[2 * n] - xa, py = x[2 * n + 1] - ya;
+  const auto x = [&](size_t dof) { return origin[dof] + u[dof]; };
+  const double xa = x(2 * a), ya = x(2 * a + 1);
+  const double dx = x(2 * b) - xa, dy = x(2 * b + 1) - ya;
+  const double px = x(2 * n) - xa, py = x(2 * n + 1) - ya;
   const double len = std::sqrt(dx * dx + dy * dy);
   const double sx = dx / len, sy = dy / len;  // along the edge
   const double nx = sy, ny = -sx;             // out of the edge's block
@@ -35,7 +37,7 @@ namespace edem {
     const size_t f = static_cast<size_t>(beyond);
     // The corner's other edge, from the corner to `beyond` (t = 1) or from `beyond` to it (t = 0).
     const double cx = t * dx, cy = t * dy;
-    const double ox = x[2 * f] - xa - cx, oy = x[2 * f + 1] - ya - cy;
+    const double ox = x(2 * f) - xa - cx, oy = x(2 * f + 1) - ya - cy;
     const double olen = std::sqrt(ox * ox + oy * oy);
     const double sign = t > 0.5 ? 1.0 : -1.0;  // keep the block on the left of the direction
     const double onx = sign * oy / olen, ony = -sign * ox / olen;

@@ -47,6 +47,7 @@ struct ContactBoundary {
   std::vector<int> block_first, node_blocks;
   std::vector<double> reach;  // per node: half its shortest touchable edge [m]
   double min_reach = 0.0;     // [m]
+  int touchable_blocks = 0;   // blocks with a touchable edge: below two, no contacts ever
 };
 
 enum class ContactState : std::uint8_t { bonded, elastic, slip, open };

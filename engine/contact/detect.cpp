@@ -33,7 +33,7 @@ struct Box {
 
 Vec2 at(const Mechanics& m, int node) {
   const size_t n = static_cast<size_t>(node);
-  return {m.current[2 * n], m.current[2 * n + 1]};
+  return {m.origin[2 * n] + m.u[2 * n], m.origin[2 * n + 1] + m.u[2 * n + 1]};
 }
 
 Vec2 outward(Vec2 a, Vec2 b) {
@@ -230,12 +230,6 @@ std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t
   return found;
 }
 
-bool kind_matches(const std::string& kind, EdgeKind edge) {
-  if (kind == "joint") return edge == EdgeKind::joint || edge == EdgeKind::boundary || edge == EdgeKind::region;
-  if (kind == "crack") return edge == EdgeKind::crack;
-  return false;
-}
-
 std::string describe(const ContactEdge& e) {
   if (e.origin.kind == EdgeKind::joint) return fmt::format("a joint of set {}", e.origin.set + 1);
   if (e.origin.kind == EdgeKind::crack) return "a crack";
@@ -324,34 +318,44 @@ ContactBoundary contact_boundary(const Mesh& mesh, const std::vector<int>& gp_no
     cb.min_reach = std::min(cb.min_reach, 0.5 * shortest);
   }
   if (cb.nodes.empty()) cb.min_reach = 0.0;
+  for (size_t block = 0; block + 1 < cb.block_first_edge.size(); ++block)
+    for (int e = cb.block_first_edge[block]; e < cb.block_first_edge[block + 1]; ++e)
+      if (cb.edges[static_cast<size_t>(e)].touchable) {
+        ++cb.touchable_blocks;
+        break;
+      }
   return cb;
+}
+
+bool jassign_selects(const JassignDef& rule, const Polygon& region, const ContactEdge& e,
+                     const std::vector<double>& position) {
+  if (!e.touchable) return false;
+  const EdgeKind kind = e.origin.kind;
+  if (rule.kind == "joint" && !(kind == EdgeKind::joint || kind == EdgeKind::boundary || kind == EdgeKind::region))
+    return false;
+  if (rule.kind == "crack" && kind != EdgeKind::crack) return false;
+  if (rule.set >= 0 && !(kind == EdgeKind::joint && e.origin.set == rule.set)) return false;
+  if (region.empty()) return true;
+  const size_t a = static_cast<size_t>(e.a), b = static_cast<size_t>(e.b);
+  return contains(region, {0.5 * (position[2 * a] + position[2 * b]), 0.5 * (position[2 * a + 1] + position[2 * b + 1])});
 }
 
 void assign_joint_materials(Mechanics& m) {
   for (ContactEdge& e : m.faces.edges) {
     e.material = -1;
-    if (!e.touchable) continue;
-    const Vec2 a{m.position[2 * static_cast<size_t>(e.a)], m.position[2 * static_cast<size_t>(e.a) + 1]};
-    const Vec2 b{m.position[2 * static_cast<size_t>(e.b)], m.position[2 * static_cast<size_t>(e.b) + 1]};
-    for (size_t r = 0; r < m.jassign.size(); ++r) {
-      const JassignDef& rule = m.jassign[r];
-      if (!rule.kind.empty() && !kind_matches(rule.kind, e.origin.kind)) continue;
-      if (rule.set >= 0 && !(e.origin.kind == EdgeKind::joint && e.origin.set == rule.set)) continue;
-      const Polygon& region = m.jassign_regions[r];
-      if (!region.empty() && !contains(region, 0.5 * (a + b))) continue;
-      e.material = m.jassign_material[r];
-    }
+    for (size_t r = 0; r < m.jassign.size(); ++r)
+      if (jassign_selects(m.jassign[r], m.jassign_regions[r], e, m.position)) e.material = m.jassign_material[r];
   }
 }
 
 bool contacts_due(const Mechanics& m, double coming_motion) {
+  if (m.faces.touchable_blocks < 2) return false;  // nothing can ever touch
   if (!m.contacts.detected) return true;
-  if (m.faces.nodes.empty()) return false;
   double moved = 0.0;
   for (const int node : m.faces.nodes) {
     const size_t n = static_cast<size_t>(node);
-    moved = std::max(moved, std::hypot(m.current[2 * n] - m.contacts.x_detected[2 * n],
-                                       m.current[2 * n + 1] - m.contacts.x_detected[2 * n + 1]));
+    const Vec2 now = at(m, node);
+    moved = std::max(moved, std::hypot(now.x - m.contacts.x_detected[2 * n], now.y - m.contacts.x_detected[2 * n + 1]));
   }
   return moved + coming_motion > 0.25 * m.faces.min_reach;
 }
@@ -460,7 +464,8 @@ void detect_contacts(Mechanics& m) {
   set.gather_first = std::move(first_slot);
   set.gather = std::move(gather);
   set.rows = std::move(rows);
-  set.x_detected = m.current;
+  set.x_detected.resize(m.u.size());
+  for (size_t dof = 0; dof < m.u.size(); ++dof) set.x_detected[dof] = m.origin[dof] + m.u[dof];
   set.detected = true;
   set.as_built = false;
   if (with_insitu) set.from_insitu = false;

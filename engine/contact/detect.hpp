@@ -11,6 +11,11 @@ namespace edem {
 ContactBoundary contact_boundary(const Mesh& mesh, const std::vector<int>& gp_node,
                                  const std::vector<double>& position);
 
+// Whether a jassign{} (its region resolved) selects an edge: touchable, of its kind and set,
+// the midpoint inside its region.
+bool jassign_selects(const JassignDef& rule, const Polygon& region, const ContactEdge& e,
+                     const std::vector<double>& position);
+
 // Gives every edge the joint material of the last jassign{} that selects it.
 void assign_joint_materials(Mechanics& m);
 

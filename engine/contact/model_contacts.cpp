@@ -68,19 +68,8 @@ void Model::jassign(const JassignDef& def) {
   Polygon region;
   if (!def.region.empty()) region = resolve(def.region);
   // Something must be selected, or the assignment is surely a mistake.
-  bool any = false;
-  for (const ContactEdge& e : m.faces.edges) {
-    if (!e.touchable) continue;
-    if (!def.kind.empty() && (def.kind == "crack") != (e.origin.kind == EdgeKind::crack)) continue;
-    if (def.set >= 0 && !(e.origin.kind == EdgeKind::joint && e.origin.set == def.set)) continue;
-    if (!region.empty()) {
-      const size_t a = static_cast<size_t>(e.a), b = static_cast<size_t>(e.b);
-      const Vec2 mid{0.5 * (m.position[2 * a] + m.position[2 * b]), 0.5 * (m.position[2 * a + 1] + m.position[2 * b + 1])};
-      if (!contains(region, mid)) continue;
-    }
-    any = true;
-    break;
-  }
+  const bool any = std::any_of(m.faces.edges.begin(), m.faces.edges.end(),
+                               [&](const ContactEdge& e) { return jassign_selects(def, region, e, m.position); });
   if (!any) fail("no joint or block edge that can touch another matches this jassign{{}}");
   m.jassign.push_back(def);
   m.jassign_regions.push_back(region);
@@ -102,7 +91,7 @@ ContactView Model::contact(int id) const {
   const ContactEdge& e = m.faces.edges[static_cast<size_t>(c.edge)];
   auto at = [&](int node) {
     const size_t n = static_cast<size_t>(node);
-    return Vec2{m.current[2 * n], m.current[2 * n + 1]};
+    return Vec2{m.origin[2 * n] + m.u[2 * n], m.origin[2 * n + 1] + m.u[2 * n + 1]};
   };
   ContactView view;
   view.id = id;
@@ -133,7 +122,7 @@ int Model::contact_near(Vec2 point) const {
   double best_distance = INFINITY;
   for (int i = 0; i < count; ++i) {
     const size_t n = static_cast<size_t>(m.contacts.list[static_cast<size_t>(i)].node);
-    const double dx = m.current[2 * n] - point.x, dy = m.current[2 * n + 1] - point.y;
+    const double dx = m.origin[2 * n] + m.u[2 * n] - point.x, dy = m.origin[2 * n + 1] + m.u[2 * n + 1] - point.y;
     const double d = dx * dx + dy * dy;
     if (d < best_distance) best_distance = d, best = i;
   }

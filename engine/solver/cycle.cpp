@@ -104,8 +104,8 @@ bool inverted(const Mechanics& m, const ZoneGeometry& g) {
   double x[3], y[3];
   for (int i = 0; i < 3; ++i) {
     const size_t n = static_cast<size_t>(g.node[static_cast<size_t>(i)]);
-    x[i] = m.current[2 * n];
-    y[i] = m.current[2 * n + 1];
+    x[i] = m.origin[2 * n] + m.u[2 * n];
+    y[i] = m.origin[2 * n + 1] + m.u[2 * n + 1];
   }
   return (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]) <= 0.0;
 }
@@ -202,7 +202,8 @@ void contact_pass(Mechanics& m, int begin, int end, Partials& partials) {
   int overlapping = -1;
   for (int i = begin; i < end; ++i) {
     Contact& c = list[i];
-    const double overlap = contact_force(c, edges[c.edge], params[c.material], m.current.data(), m.v.data(), m.step);
+    const double overlap = contact_force(c, edges[c.edge], params[c.material], m.origin.data(), m.u.data(), m.v.data(),
+                                         m.step);
     if constexpr (kMeasure) {
       applied += 2.0 * std::sqrt(c.fx * c.fx + c.fy * c.fy);
       if (overlapping < 0 && overlap > c.limit) overlapping = i;
@@ -290,17 +291,13 @@ void node_motion_pass(Mechanics& m, int begin, int end, const Motion& motion, bo
           }
         }
         m.u[dof] += motion.dt * m.v[dof];
-        m.current[dof] += motion.dt * m.v[dof];
       }
     } else {
       // No stiffness to move against: held components still follow their velocity.
       for (int c = 0; c < 2; ++c) {
         const size_t dof = 2 * nn + static_cast<size_t>(c);
         m.force[dof] = f[c] + m.weight[dof] + m.load[dof];
-        if ((m.fix[nn] >> c) & 1) {
-          m.u[dof] += motion.dt * m.v[dof];
-          m.current[dof] += motion.dt * m.v[dof];
-        }
+        if ((m.fix[nn] >> c) & 1) m.u[dof] += motion.dt * m.v[dof];
       }
     }
     if (mass > 0.0) {
@@ -479,7 +476,7 @@ Measure measure_state(const Mechanics& m) {
   for (const Contact& c : m.contacts.list) {
     Contact now = c;
     const ContactEdge& e = m.faces.edges[static_cast<size_t>(c.edge)];
-    contact_force(now, e, m.joint_params[static_cast<size_t>(c.material)], m.current.data(), m.v.data(), 0.0);
+    contact_force(now, e, m.joint_params[static_cast<size_t>(c.material)], m.origin.data(), m.u.data(), m.v.data(), 0.0);
     const size_t n = static_cast<size_t>(c.node), a = static_cast<size_t>(e.a), b = static_cast<size_t>(e.b);
     f[2 * n] += now.fx;
     f[2 * n + 1] += now.fy;

@@ -239,7 +239,10 @@ void Model::set_threads(int threads) {
 
 void Model::reset(bool displacement, bool velocity, bool state) {
   Mechanics& m = *mechanics_;
-  if (displacement) std::fill(m.u.begin(), m.u.end(), 0.0);
+  if (displacement) {
+    for (size_t dof = 0; dof < m.u.size(); ++dof) m.origin[dof] += m.u[dof];  // nodes stay put
+    std::fill(m.u.begin(), m.u.end(), 0.0);
+  }
   if (velocity)
     for (size_t n = 0; n < static_cast<size_t>(m.node_count); ++n) {
       if (!(m.fix[n] & 1)) m.v[2 * n] = 0.0;

@@ -106,7 +106,9 @@ struct Mechanics {
   std::vector<int> gp_node;         // mesh gridpoint -> node
   std::vector<double> position;     // reference [m], 2 per node
   std::vector<double> u, v;         // displacement [m], velocity [m/s]
-  std::vector<double> current;      // where the node is now [m]: position + u, unless u was reset
+  // Where u is measured from [m]: the position, moved by the displacement a reset{} cleared, so
+  // that origin + u is where the node is now (what contacts and the watchdog look at).
+  std::vector<double> origin;
   std::vector<double> force;        // unbalanced force of the last cycle [N/m]
   std::vector<double> load;         // boundary tractions lumped to nodes [N/m]
   std::vector<std::uint8_t> fix;    // bit 0: x held, bit 1: y held

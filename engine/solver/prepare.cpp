@@ -219,7 +219,7 @@ void reset_for_mesh(Mechanics& m, const Mesh& mesh) {
     if (m.node_block[n] < 0) m.node_block[n] = mesh.gp_block[gp];
   }
   m.u.assign(dofs, 0.0);
-  m.current = m.position;
+  m.origin = m.position;
   m.v.assign(dofs, 0.0);
   m.force.assign(dofs, 0.0);
   m.load.assign(dofs, 0.0);

@@ -71,7 +71,8 @@ void watch(Mechanics& m, const Mesh& mesh, const Measure& measure, int batch) {
   }
   if (measure.overlapping >= 0) {
     const Contact& c = m.contacts.list[static_cast<size_t>(measure.overlapping)];
-    const Vec2 p{m.current[2 * static_cast<size_t>(c.node)], m.current[2 * static_cast<size_t>(c.node) + 1]};
+    const size_t n = static_cast<size_t>(c.node);
+    const Vec2 p{m.origin[2 * n] + m.u[2 * n], m.origin[2 * n + 1] + m.u[2 * n + 1]};
     const JointParams& jp = m.joint_params[static_cast<size_t>(c.material)];
     fail("cycle {}: overlap too great: the gridpoint at ({:.6g}, {:.6g}) of block {} is {:.3g} m inside "
          "block {}, more than half its shortest boundary edge ({:.3g} m); normal stress {:.4g} Pa "
