@@ -1,16 +1,18 @@
 // Zoning with CGAL's constrained Delaunay refinement (Ruppert's algorithm, Shewchuk's clusters).
 //
-// Blocks joined by glued edges must share their gridpoints along those edges, so they are
-// meshed together: union-find groups the zoned blocks over their glued edges, and each group
+// Blocks joined by glued edges must share their gridpoints along those edges, and the two faces
+// of a joint are best zoned alike (see touching_groups()), so blocks that touch along an edge are
+// meshed together: union-find groups the zoned blocks over their shared edges, and each group
 // goes into one CDT with all its rings as constraints. A flood fill over unconstrained edges,
 // seeded left of every ring edge, labels each face with its block; the labelled faces are the
 // domain. CGAL's mesher levels (assembled here rather than through Delaunay_mesher_2, see
 // DomainGabriel and refine()) insert points one at a time until every face meets the size
 // field and the shape bound, splitting a shared edge for both blocks at once. A zone budget
 // stops runaway meshes. The refined CDT is labelled again and read out block by block:
-// boundary gridpoints in loop order first, then interior gridpoints and zones in Z-order. A
-// block with no glued edge is a group of one, meshed exactly as it would be alone; a group of
-// several also gets its neighbours' rings as bare constraints and its shared sharp corners
+// boundary gridpoints in loop order first, then interior gridpoints and zones in Z-order (only
+// glued edges merge gridpoints, later, in the solver). A block touching no other is a group of
+// one, meshed exactly as it would be alone; a group of several also gets its neighbours' rings
+// as bare constraints and its shared sharp corners
 // lopped (see insert_neighbours() and lop_sharp_corners()).
 #include "geom/zoning.hpp"
 
@@ -462,29 +464,34 @@ bool overlap_opposite(const RingEdge& e, const RingEdge& f) {
   return low < high;
 }
 
-// The zoned blocks in groups joined through glued edges: each group ascending, the groups in
-// the order of their first block. Two zoned blocks are joined when a glued edge of one runs
-// along an edge of the other the other way. Cut blocks come from one exact arrangement, so a
-// shared edge has the same end points on both sides and the sorted lookup finds its twin; a
-// glued edge without one (blocks built by hand with a vertex only one side has) is compared
-// with every edge instead.
-std::vector<Group> glued_groups(const BlockSet& blocks,
-                                const std::vector<const SizeField*>& size_of_block) {
+// The zoned blocks in groups joined through the edges they share, glued or not: each group
+// ascending, the groups in the order of their first block. Two zoned blocks are joined when an
+// edge of one runs along an edge of the other the other way. Meshed together, the two faces of a
+// joint get gridpoints at the same places (still two gridpoints, one per block), so that a joint
+// under uniform stress closes uniformly: node-to-edge contacts between faces zoned apart carry
+// it with a scatter of several percent (the contact patch test fails on non-matching meshes).
+// Cut blocks come from one exact arrangement, so a shared edge has the same end points on both
+// sides and the sorted lookup finds its twin; the edges without a twin (the model's outline,
+// blocks built by hand with a vertex only one side has) are compared with each other.
+std::vector<Group> touching_groups(const BlockSet& blocks,
+                                   const std::vector<const SizeField*>& size_of_block) {
   const size_t count = blocks.blocks.size();
   auto zoned = [&](int b) { return size_of_block[b] != nullptr; };
   const std::vector<RingEdge> edges = ring_edges(blocks);
   DisjointSets sets(count);
+  std::vector<const RingEdge*> twinless;
   for (const RingEdge& edge : edges) {
-    if (!edge.glued || !zoned(edge.block)) continue;
+    if (!zoned(edge.block)) continue;
     const RingEdge twin{edge.b, edge.a};
     const auto [first, last] = std::equal_range(edges.begin(), edges.end(), twin, by_end_points);
     for (auto other = first; other != last; ++other)
       if (zoned(other->block)) sets.join(edge.block, other->block);
-    if (first != last) continue;
-    for (const RingEdge& other : edges)
-      if (other.block != edge.block && zoned(other.block) && overlap_opposite(edge, other))
-        sets.join(edge.block, other.block);
+    if (first == last) twinless.push_back(&edge);
   }
+  for (size_t i = 0; i < twinless.size(); ++i)
+    for (size_t j = i + 1; j < twinless.size(); ++j)
+      if (twinless[i]->block != twinless[j]->block && overlap_opposite(*twinless[i], *twinless[j]))
+        sets.join(twinless[i]->block, twinless[j]->block);
   std::vector<Group> groups;
   std::vector<int> group_of_root(count, -1);
   for (size_t b = 0; b < count; ++b) {
@@ -1158,7 +1165,7 @@ Mesh zone_blocks(const BlockSet& blocks, const std::vector<const SizeField*>& si
     if (size_of_block[b] != nullptr)
       check_block(blocks.blocks[b], *size_of_block[b], static_cast<int>(b));
   std::vector<BlockZones> zones(count);
-  const std::vector<Group> groups = glued_groups(blocks, size_of_block);
+  const std::vector<Group> groups = touching_groups(blocks, size_of_block);
   BlocksAtVertex blocks_at;
   if (std::any_of(groups.begin(), groups.end(), [](const Group& g) { return g.size() > 1; }))
     blocks_at = blocks_at_vertices(blocks);

@@ -1,10 +1,11 @@
 // Zoning: meshing blocks into quality triangles with a graded size field.
 //
 // Constrained Delaunay refinement (CGAL, Ruppert's algorithm with Shewchuk's clusters). Blocks
-// joined through glued edges (EdgeOrigin::glued, region outlines) are meshed together in one
-// triangulation, so that they share their gridpoints along those edges; every other block is
-// meshed on its own, exactly as if it were alone. The target edge length is `edge` inside and
-// next to the `near` polygons and grows linearly with distance, at rate `growth`, up to `far`.
+// that touch along an edge, glued (EdgeOrigin::glued, region outlines) or not (joints, cracks),
+// are meshed together in one triangulation, so that both sides of every shared edge get
+// gridpoints at the same places; a block touching no other is meshed exactly as if it were
+// alone. The target edge length is `edge` inside and next to the `near` polygons and grows
+// linearly with distance, at rate `growth`, up to `far`.
 //
 // What zone_blocks() guarantees, block by block:
 //  * gridpoints: every ring vertex is a gridpoint with its exact coordinates; the mesher adds
@@ -12,12 +13,13 @@
 //    first, in loop order, then its interior ones; interior gridpoints and zones are in
 //    Z-order (spatially local). Each block has gridpoints of its own: those on an edge two
 //    blocks share are there twice, once per block.
-//  * glued edges: along every ring edge that two zoned blocks share and either of them marks
-//    glued, both blocks have the same gridpoints: the same number, bit-identical coordinates
-//    (a solver may merge them). Blocks are joined when a glued edge of one runs along an edge
-//    of the other the other way (same end points, or, for blocks built by hand, a common
-//    stretch); blocks joined directly or through others form a group, meshed together. Edges
-//    that are not glued (joints, cracks) get gridpoints on each side independently.
+//  * shared edges: along every ring edge that two zoned blocks share, both blocks have the same
+//    gridpoints: the same number, bit-identical coordinates. A solver merges them where the
+//    edge is glued (either side marks it so) and keeps them apart across a joint or crack, whose
+//    faces then start matched (a uniform joint stress gives a uniform closure). Blocks are
+//    joined when an edge of one runs along an edge of the other the other way (same end
+//    points, or, for blocks built by hand, a common stretch); blocks joined directly or through
+//    others form a group, meshed together.
 //  * boundary: block_boundary[b] holds the outer loop (counter-clockwise, from the outer ring's
 //    first vertex) then one loop per hole (clockwise, from its first vertex); each segment
 //    carries the EdgeOrigin of the ring edge it lies on.
@@ -25,7 +27,7 @@
 //    (to rounding, ~1e-15 relative).
 //  * size: every zone's longest edge is at most SizeField::at(zone centroid), no slack factor.
 //    A group takes the pointwise minimum of its blocks' distinct size fields (its shared
-//    edges are split alike for both sides), so a block glued to a finer one gets smaller zones
+//    edges are split alike for both sides), so a block next to a finer one gets smaller zones
 //    near it than its own field asks for; all blocks with one field share it unchanged.
 //  * shape: every zone angle is at least kMinZoneAngle except where the block's own corner is
 //    sharper. Precisely: a zone angle below kMinZoneAngle is always a whole block corner, i.e.
@@ -66,7 +68,7 @@ struct SizeField {
 // Minimum zone angle the mesher guarantees away from sharp block corners [deg].
 inline constexpr double kMinZoneAngle = 20.0;
 
-// Most zones one block, or one group of glued blocks, may get; beyond it zoning stops with an
+// Most zones one block, or one group of touching blocks, may get; beyond it zoning stops with an
 // error instead of running out of memory or time.
 inline constexpr int kMaxZonesPerBlock = 5'000'000;
 
