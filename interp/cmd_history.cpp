@@ -17,15 +17,15 @@ namespace edem {
 namespace {
 
 // The built-in quantities of Model::history_sampler: of the whole model, or at a point.
-const std::vector<std::string>& model_quantities() {
-  static const std::vector<std::string> names = {"ratio", "time", "kinetic", "cycle"};
-  return names;
-}
+const std::vector<std::string>& model_quantities() { return Model::history_model_quantities(); }
 
 const std::vector<std::string>& history_quantities() {
-  static const std::vector<std::string> names = {"ratio", "time", "kinetic", "cycle", "ux",
-                                                 "uy",    "vx",   "vy",      "sxx",   "syy",
-                                                 "sxy",   "szz",  "s1",      "s3"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> all = Model::history_model_quantities();
+    const auto& point = Model::history_point_quantities();
+    all.insert(all.end(), point.begin(), point.end());
+    return all;
+  }();
   return names;
 }
 
@@ -100,8 +100,11 @@ const Command& history_command() {
       .positional =
           {
               {"quantity", Type::string, "", any_value, kOptional,
-               "of the model: ratio, time, kinetic, cycle; at a point: ux, uy, vx, vy (nearest "
-               "gridpoint), sxx, syy, sxy, szz, s1, s3 (zone containing it)",
+               "of the model: ratio, time, kinetic, cycle, contacts, slipping, open (counts of "
+               "contacts as last found), max_slip; at a point: ux, uy, vx, vy (nearest "
+               "gridpoint), sxx, syy, sxy, szz, s1, s3 (zone containing it), joint_sn, "
+               "joint_tau, joint_un, joint_us, joint_slip (the contact nearest to it when the "
+               "history is made, followed by its gridpoint; 0 while that has no contact)",
                "or fn", history_quantities},
           },
       .keys =

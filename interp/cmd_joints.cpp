@@ -37,6 +37,8 @@ int run_joint_material(lua_State*, Context& context, const Args& args) {
   def.cohesion = args.number("cohesion");
   def.tension = args.number("tension");
   def.dilation = args.number("dilation");
+  def.residual_cohesion = args.number("residual_cohesion");
+  if (args.has("residual_friction")) def.residual_friction = args.number("residual_friction");
   context.model().add_joint_material(def);
   return 0;
 }
@@ -63,8 +65,10 @@ const Command& joint_material_command() {
           "curve sn = -4.302 v^3 + 7.688 v^2 - 0.123 v (MPa, mm), started at its zero "
           "crossing and straight at 1880 MPa/m past its descending 1880 MPa/m point, so that "
           "it never gives tension or a negative stiffness. Shear: ks and Coulomb slip; "
-          "cohesion and tension hold only until the contact first slips or opens (then "
-          "zero); dilation opens the joint while it slips. Defining a name again replaces "
+          "cohesion and tension hold only until the contact first slips or opens; then it "
+          "has no tension and its residual cohesion and friction (UDEC's Coulomb slip with "
+          "residual strength; by default zero and the friction; residual_cohesion = cohesion "
+          "keeps it). Dilation opens the joint while it slips. Defining a name again replaces "
           "that material, in its contacts too.",
       .positional =
           {
@@ -90,6 +94,10 @@ const Command& joint_material_command() {
               {"tension", Type::number, "Pa", ge(0), "0",
                "tensile strength, until it first slips or opens"},
               {"dilation", Type::number, "deg", ge(0), "0", "dilation angle, at most friction"},
+              {"residual_cohesion", Type::number, "Pa", ge(0), "0",
+               "cohesion once it has slipped or opened, at most cohesion"},
+              {"residual_friction", Type::number, "deg", from_below(0, 90), kOptional,
+               "friction angle once it has slipped or opened (default: friction)"},
           },
       .run = run_joint_material,
       .usage =

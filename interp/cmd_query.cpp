@@ -21,7 +21,7 @@ int run_info(lua_State* L, Context& context, const Args&) {
   Model& model = context.model();
   const ModelInfo info = model.info();
   const SolverInfo solver = model.solver_info();
-  lua_createtable(L, 0, 12);
+  lua_createtable(L, 0, 14);
   set_field(L, "blocks", info.blocks);
   set_field(L, "zones", info.zones);
   set_field(L, "gridpoints", info.gridpoints);
@@ -34,6 +34,8 @@ int run_info(lua_State* L, Context& context, const Args&) {
   set_field(L, "time", solver.time);
   set_field(L, "step", solver.step);
   set_field(L, "ratio", solver.ratio);
+  set_field(L, "contacts", solver.contacts);
+  set_field(L, "late_contacts", static_cast<long long>(solver.late_contacts));
   return 1;
 }
 
@@ -283,7 +285,10 @@ const Command& info_command() {
       .returns =
           "a table: blocks, zones, gridpoints, joint_edges, dropped_cuts, regions, "
           "joint_sets, title, cycle (cycles run so far), time (model time [s]; static mode: "
-          "the cycle count), step (time step [s]), ratio (last unbalanced-force ratio)",
+          "the cycle count), step (time step [s]), ratio (last unbalanced-force ratio), "
+          "contacts (as last found: 0 until the first cycle or contact query), late_contacts "
+          "(contacts found already pressed in by more than a tenth of their reach, since the "
+          "blocks were zoned: detection came too late for them; it should stay 0)",
       .usage = "print(info().blocks)",
   };
   return command;
@@ -388,7 +393,7 @@ const Command& contacts_command() {
           "gridpoint, where it is now [m]), normal {x =, y =} (unit, out of the edge's block), "
           "length [m], fn, fs (normal force, compression negative, and shear force [N/m]), sn, "
           "tau (the same per length [Pa]), un (normal displacement, opening positive, "
-          "including the closure the in-situ stress gives [m]), us (shear displacement since it "
+          "including the closure the in-situ stress gives and the dilation [m]), us (shear displacement since it "
           "formed [m]), slip (plastic shear, accumulated [m]), state (\"bonded\", "
           "\"elastic\", \"slip\", \"open\"), kind (\"joint\", \"crack\"), material, "
           "block and other (the gridpoint's and the edge's block ids)",

@@ -1,6 +1,7 @@
 // The force of one contact over one step: geometry from the current positions, the normal
 // stress from the closure (joint_law.hpp), the shear force incrementally, then Coulomb slip,
-// dilation and the loss of cohesion and tension once it slips or opens.
+// dilation and the drop to residual strength (cohesion and friction; no tension) once it slips
+// or opens.
 #pragma once
 
 #include <algorithm>
@@ -27,37 +28,33 @@ namespace edem {
   const double nx = sy, ny = -sx;             // out of the edge's block
   const double t_line = (px * sx + py * sy) / len;
   const double t = std::clamp(t_line, 0.0, 1.0);
-  double gap = (px - t * dx) * nx + (py - t * dy) * ny;
-  // Past the end of the edge at a convex corner of its block, the gridpoint is in contact only if
-  // it is behind the corner's other edge too: the gap is the larger of the two (a gridpoint next
-  // to a pressed-in corner is beside it, not under it). Where the boundary goes on straight, the
-  // gridpoint is over the next edge and the gap stays as it is.
-  const int beyond = t_line < 0.0 ? e.beyond_a : t_line > 1.0 ? e.beyond_b : -1;
-  if (beyond >= 0) {
-    const size_t f = static_cast<size_t>(beyond);
-    // The corner's other edge, from the corner to `beyond` (t = 1) or from `beyond` to it (t = 0).
-    const double cx = t * dx, cy = t * dy;
-    const double ox = x(2 * f) - xa - cx, oy = x(2 * f + 1) - ya - cy;
-    const double olen = std::sqrt(ox * ox + oy * oy);
-    const double sign = t > 0.5 ? 1.0 : -1.0;  // keep the block on the left of the direction
-    const double onx = sign * oy / olen, ony = -sign * ox / olen;
-    gap = std::max(gap, (px - cx) * onx + (py - cy) * ony);
+  const double gap = px * nx + py * ny;  // from the edge's line
+  // Past the end of the edge at a convex corner of its block, the gridpoint's share of the
+  // contact length shrinks with the distance past the corner and is gone at twice its length
+  // (its half-edges then no longer lie over the block): the force fades as a face slides off a
+  // corner instead of dropping at once. Faces zoned alike (zoning.hpp) put the gridpoints at a
+  // joint's ends exactly on the corners, where any all-or-nothing rule would flicker.
+  double share = 1.0;
+  if ((t_line < 0.0 && e.corner_a) || (t_line > 1.0 && e.corner_b)) {
+    const double past = (t_line < 0.0 ? -t_line : t_line - 1.0) * len;
+    share = c.length > 0.0 ? std::max(0.0, 1.0 - past / (2.0 * c.length)) : 0.0;
   }
   const double rvx = v[2 * n] - ((1.0 - t) * v[2 * a] + t * v[2 * b]);
   const double rvy = v[2 * n + 1] - ((1.0 - t) * v[2 * a + 1] + t * v[2 * b + 1]);
   const double dus = (rvx * sx + rvy * sy) * dt;
   c.t = t;
   c.us += dus;
-  c.closure = c.closure0 - gap - c.dilation;
+  // Dilation pushes the faces apart: at a given gap the joint is that much more closed.
+  c.closure = c.closure0 - gap + c.dilation;
 
   double sn = normal_stress(p, c.closure);
-  bool open = false;
-  if (c.intact) {
-    if (sn < -p.tension) {  // fails in tension: the bond is gone
-      c.intact = false;
-      open = true;
-    }
-  } else if (c.closure <= 0.0) {
+  bool open = !(share > 0.0);
+  // Fails in tension: the bond is gone. (A bond with no tensile strength between faces that
+  // start together must not break on the round-off of its gap.)
+  if (!open && c.intact && sn < -p.tension && c.closure < -1e-9 * c.limit) {
+    c.intact = false;
+    open = true;
+  } else if (!open && !c.intact && c.closure <= 0.0) {
     open = true;
   }
   if (open) {
@@ -65,11 +62,14 @@ namespace edem {
     c.fs = 0.0;
     c.state = ContactState::open;
     c.fx = c.fy = 0.0;
-    return -gap;
+    return share > 0.0 ? -gap : 0.0;
   }
-  const double ks = p.ks * c.length;
+  const double length = share * c.length;
+  const double ks = p.ks * length;
   const double trial = c.fs - ks * dus;
-  const double limit = std::max(0.0, ((c.intact ? p.cohesion : 0.0) + p.tan_friction * sn) * c.length);
+  const double limit =
+      std::max(0.0, (c.intact ? p.cohesion + p.tan_friction * sn
+                              : p.residual_cohesion + p.tan_residual_friction * sn) * length);
   if (std::fabs(trial) > limit) {
     const double plastic = (std::fabs(trial) - limit) / ks;
     c.fs = std::copysign(limit, trial);
@@ -82,7 +82,7 @@ namespace edem {
     c.state = c.intact ? ContactState::bonded : ContactState::elastic;
   }
   c.sn = sn;
-  const double fn = sn * c.length;
+  const double fn = sn * length;
   c.fx = fn * nx + c.fs * sx;
   c.fy = fn * ny + c.fs * sy;
   return -gap;

@@ -28,9 +28,9 @@ struct ContactEdge {
   int a = -1, b = -1;        // solver nodes, in loop order
   int block = -1;            // mesh block
   int prev = -1, next = -1;  // the neighbouring edges of its loop
-  // At a convex corner of its block (turning by more than 10 degrees), the node at the far end
-  // of the neighbouring edge there; -1 where the boundary goes on (nearly) straight.
-  int beyond_a = -1, beyond_b = -1;
+  // Whether its end is a convex corner of its block (the boundary turns by more than 10
+  // degrees there), not a point where it goes on (nearly) straight.
+  bool corner_a = false, corner_b = false;
   bool touchable = false;    // not glued
   EdgeOrigin origin;
   int material = -1;         // joint material (jassign), -1: none
@@ -62,7 +62,7 @@ struct Contact {
   double limit = 0.0;  // overlap beyond which the watchdog stops the run: the gridpoint's reach [m]
   double t = 0.0;      // where the gridpoint projects on the edge, 0 at a, 1 at b
   double closure0 = 0.0;  // closure at zero gap: the in-situ prestress [m]
-  double dilation = 0.0;  // opening from dilation [m]
+  double dilation = 0.0;  // opening from dilation [m]: closure = closure0 - gap + dilation
   double closure = 0.0;   // last closure, positive pressing [m]
   double sn = 0.0;        // last normal stress, compression positive [Pa]
   double fs = 0.0;        // shear force on the gridpoint along the edge direction [N/m]
@@ -83,6 +83,9 @@ struct ContactSet {
   bool detected = false;             // the list is current (materials, zones, positions)
   bool as_built = true;              // the next detection is the first on this mesh
   bool from_insitu = false;          // the next detection sets contact forces from insitu{}
+  // Contacts found new but already pressed in by more than a tenth of their reach, since the
+  // mesh was made: detection came too late for them (a lost contact); should stay 0.
+  long late = 0;
 };
 
 std::string_view to_string(ContactState state);

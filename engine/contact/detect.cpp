@@ -14,12 +14,15 @@
 #include "core/error.hpp"
 #include "geom/polygon.hpp"
 #include "solver/loads.hpp"
+#include "solver/prepare.hpp"
 
 namespace edem {
 namespace {
 
 // Stiffness rows count each direction with this bound on |n_x| (|n_x| + |n_y|).
 constexpr double kRowBound = 1.21;
+// Edges whose outward normals are within 10 degrees face the same way.
+const double kSameFacing = std::cos(10.0 * M_PI / 180.0);
 
 struct Box {
   double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
@@ -31,6 +34,10 @@ struct Box {
   }
 };
 
+// A vector's length: plain sqrt, not std::hypot (which guards against overflow nobody needs
+// here and was the largest single cost of detection).
+inline double length(Vec2 a) { return std::sqrt(a.x * a.x + a.y * a.y); }
+
 Vec2 at(const Mechanics& m, int node) {
   const size_t n = static_cast<size_t>(node);
   return {m.origin[2 * n] + m.u[2 * n], m.origin[2 * n + 1] + m.u[2 * n + 1]};
@@ -38,7 +45,7 @@ Vec2 at(const Mechanics& m, int node) {
 
 Vec2 outward(Vec2 a, Vec2 b) {
   const Vec2 d = b - a;
-  const double len = norm(d);
+  const double len = length(d);
   return {d.y / len, -d.x / len};
 }
 
@@ -46,7 +53,7 @@ double distance_to_segment(Vec2 p, Vec2 a, Vec2 b, double* t_out = nullptr) {
   const Vec2 d = b - a;
   const double t = std::clamp(dot(p - a, d) / dot(d, d), 0.0, 1.0);
   if (t_out) *t_out = t;
-  return norm(p - (a + t * d));
+  return length(p - (a + t * d));
 }
 
 // Blocks in a uniform grid of cells by their boxes, grown by the largest reach.
@@ -119,21 +126,33 @@ struct Found {
 };
 
 // The nearest touchable edge of `block` within `reach` of node k's gridpoint, or nothing.
+// Edges about as near as the nearest (within a tenth of the reach) are told apart by how
+// squarely they face the gridpoint's own boundary: a gridpoint at, or pressed a little into,
+// the corner of the other block belongs to the face it lies against, not to the side edge
+// that happens to be a micrometre nearer (which would turn its force sideways). Matching
+// gridpoints on the two faces of a joint (zoning.hpp) sit exactly at each other's corners.
 std::optional<Found> nearest_edge(const Mechanics& m, int node, Vec2 p, Vec2 own_normal, int block, double reach) {
   const ContactBoundary& cb = m.faces;
-  double best = reach, best_opposition = INFINITY;
+  const int first = cb.block_first_edge[static_cast<size_t>(block)];
+  const int last = cb.block_first_edge[static_cast<size_t>(block) + 1];
+  double nearest = reach;
+  for (int e = first; e < last; ++e) {
+    const ContactEdge& edge = cb.edges[static_cast<size_t>(e)];
+    if (!edge.touchable || edge.a == node || edge.b == node) continue;
+    nearest = std::min(nearest, distance_to_segment(p, at(m, edge.a), at(m, edge.b)));
+  }
+  const double about = std::min(reach, nearest + 0.1 * reach);
+  double best = INFINITY, best_opposition = INFINITY;
   int best_edge = -1;
-  for (int e = cb.block_first_edge[static_cast<size_t>(block)]; e < cb.block_first_edge[static_cast<size_t>(block) + 1]; ++e) {
+  for (int e = first; e < last; ++e) {
     const ContactEdge& edge = cb.edges[static_cast<size_t>(e)];
     if (!edge.touchable || edge.a == node || edge.b == node) continue;
     const Vec2 a = at(m, edge.a), b = at(m, edge.b);
     const double d = distance_to_segment(p, a, b);
-    if (d > best + 1e-9 * reach) continue;
-    // Equally near edges (a gridpoint on the corner of the other block): the one that faces
-    // the gridpoint's own boundary most squarely.
+    if (d > about) continue;
     const double opposition = dot(outward(a, b), own_normal);
-    if (d < best - 1e-9 * reach || opposition < best_opposition) {
-      best = std::min(best, d);
+    if (opposition < best_opposition - 1e-9 || (opposition <= best_opposition + 1e-9 && d < best)) {
+      best = d;
       best_opposition = opposition;
       best_edge = e;
     }
@@ -155,22 +174,51 @@ std::optional<Stress> insitu_here(const Mechanics& m, Vec2 point) {
   return insitu_stress_if_any(m, point);
 }
 
-// How much of the segment p-q lies over the touchable edges `edge` and its loop neighbours,
-// measured along them (their projections, clipped to each edge's ends) [m].
+// How much of the segment p-q lies over the touchable edges `edge` and those beside it along
+// its loop, measured along them (their projections, clipped to each edge's ends) [m]. The walk
+// goes on in each direction while the segment still reaches over the next edge: a long half
+// edge (coarse zoning) can lie over many short ones of the other block.
 double covered_length(const Mechanics& m, Vec2 p, Vec2 q, int edge) {
   const ContactBoundary& cb = m.faces;
-  const ContactEdge& target = cb.edges[static_cast<size_t>(edge)];
-  double covered = 0.0;
-  for (const int e : {target.prev, edge, target.next}) {
+  const auto over = [&](int e) {
     const ContactEdge& ce = cb.edges[static_cast<size_t>(e)];
-    if (!ce.touchable) continue;
+    if (!ce.touchable) return 0.0;
     const Vec2 a = at(m, ce.a), d = at(m, ce.b) - a;
     const double len2 = dot(d, d);
     const double tp = dot(p - a, d) / len2, tq = dot(q - a, d) / len2;
     const double lo = std::max(0.0, std::min(tp, tq)), hi = std::min(1.0, std::max(tp, tq));
-    if (hi > lo) covered += (hi - lo) * std::sqrt(len2);
+    return hi > lo ? (hi - lo) * std::sqrt(len2) : 0.0;
+  };
+  const double limit = length(q - p);
+  double covered = over(edge);
+  for (const bool forward : {false, true}) {
+    int e = edge;
+    for (;;) {
+      e = forward ? cb.edges[static_cast<size_t>(e)].next : cb.edges[static_cast<size_t>(e)].prev;
+      const double part = e == edge ? 0.0 : over(e);
+      if (!(part > 0.0) || covered >= limit) break;
+      covered += part;
+    }
   }
-  return std::min(covered, norm(q - p));
+  return std::min(covered, limit);
+}
+
+// Whether a half-edge of a gridpoint at the other block's corner runs on along that block's
+// outline rather than against it: the other block's edge leaving its corner at the gridpoint
+// faces the same way as the half-edge (where a joint meets the model's outline, or another
+// joint, both blocks' outlines go on side by side). Such a half-edge carries nothing across the
+// joint, neither length nor in-situ traction.
+bool continues_outline(const Mechanics& m, const Found& to, Vec2 p, Vec2 n_e, double reach) {
+  const ContactBoundary& cb = m.faces;
+  const ContactEdge& target = cb.edges[static_cast<size_t>(to.edge)];
+  const double near = 0.01 * reach;
+  const auto same_facing = [&](int e) {
+    const ContactEdge& other = cb.edges[static_cast<size_t>(e)];
+    return dot(outward(at(m, other.a), at(m, other.b)), n_e) > kSameFacing;
+  };
+  if (length(at(m, target.a) - p) < near && same_facing(target.prev)) return true;
+  if (length(at(m, target.b) - p) < near && same_facing(target.next)) return true;
+  return false;
 }
 
 // Contacts of node position k: the nearest edge of each block in reach, and their lengths.
@@ -202,7 +250,7 @@ std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t
     const ContactEdge& e = cb.edges[static_cast<size_t>(cb.node_edges[static_cast<size_t>(i)])];
     if (!m.block_live[static_cast<size_t>(e.block)]) continue;
     const Vec2 far_end = at(m, e.a == node ? e.b : e.a);
-    const double half = 0.5 * norm(far_end - p);
+    const double half = 0.5 * length(far_end - p);
     const Vec2 quarter = p + 0.25 * (far_end - p);
     double best = reach + 0.5 * half;
     Found* to = nullptr;
@@ -213,6 +261,7 @@ std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t
     }
     if (!to) continue;
     const Vec2 n_e = e.a == node ? outward(p, far_end) : outward(far_end, p);
+    if (continues_outline(m, *to, p, n_e, reach)) continue;
     const Vec2 middle = p + 0.5 * (far_end - p);
     // This side's share, half; of the half edge, the part that lies over the other block.
     const double covered = covered_length(m, p, middle, to->edge);
@@ -280,8 +329,8 @@ ContactBoundary contact_boundary(const Mesh& mesh, const std::vector<int>& gp_no
     const ContactEdge& next = cb.edges[static_cast<size_t>(e.next)];
     const ContactEdge& prev = cb.edges[static_cast<size_t>(e.prev)];
     const Vec2 d = ref(e.b) - ref(e.a), dn = ref(next.b) - ref(next.a), dp = ref(prev.b) - ref(prev.a);
-    if (cross(d, dn) > sin10 * norm(d) * norm(dn)) e.beyond_b = next.b;
-    if (cross(dp, d) > sin10 * norm(dp) * norm(d)) e.beyond_a = prev.a;
+    e.corner_b = cross(d, dn) > sin10 * length(d) * length(dn);
+    e.corner_a = cross(dp, d) > sin10 * length(dp) * length(d);
   }
   // Per node: its touchable edges, and every block whose boundary it is on.
   std::vector<std::pair<int, int>> node_edge, node_block;
@@ -355,9 +404,10 @@ bool contacts_due(const Mechanics& m, double coming_motion) {
   for (const int node : m.faces.nodes) {
     const size_t n = static_cast<size_t>(node);
     const Vec2 now = at(m, node);
-    moved = std::max(moved, std::hypot(now.x - m.contacts.x_detected[2 * n], now.y - m.contacts.x_detected[2 * n + 1]));
+    const double dx = now.x - m.contacts.x_detected[2 * n], dy = now.y - m.contacts.x_detected[2 * n + 1];
+    moved = std::max(moved, dx * dx + dy * dy);
   }
-  return moved + coming_motion > 0.25 * m.faces.min_reach;
+  return std::sqrt(moved) + coming_motion > 0.25 * m.faces.min_reach;
 }
 
 void detect_contacts(Mechanics& m) {
@@ -371,12 +421,13 @@ void detect_contacts(Mechanics& m) {
 
   std::vector<std::vector<Found>> found(cb.nodes.size());
   if (!grid.cells.empty()) {
-#pragma omp parallel for schedule(dynamic, 256) num_threads(std::max(1, m.threads > 0 ? m.threads : omp_get_max_threads()))
+#pragma omp parallel for schedule(dynamic, 256) num_threads(thread_count(m))
     for (size_t k = 0; k < cb.nodes.size(); ++k) found[k] = contacts_of(m, grid, k, with_insitu);
   }
 
   // Join in node order, carrying the state of contacts that persist (same gridpoint and block).
   std::vector<Contact> list;
+  long late = 0;
   for (size_t k = 0; k < cb.nodes.size(); ++k) {
     std::sort(found[k].begin(), found[k].end(), [](const Found& a, const Found& b) { return a.other < b.other; });
     for (const Found& f : found[k]) {
@@ -414,6 +465,14 @@ void detect_contacts(Mechanics& m) {
         c.state = old->state;
         c.intact = old->intact;
       } else {
+        // Already pressed in, and nothing held this gridpoint back before: it went into the other
+        // block unseen. (At a junction a gridpoint held by one block may turn to its neighbour:
+        // not lost.)
+        if (!first && f.gap < -0.1 * cb.reach[k]) {
+          const auto held = std::lower_bound(set.list.begin(), set.list.end(), c.node,
+                                             [](const Contact& x, int node) { return x.node < node; });
+          if (held == set.list.end() || held->node != c.node) ++late;
+        }
         // Joints as built keep their strength until they fail; blocks that touch later do not
         // stick together.
         c.intact = first && (p.cohesion > 0.0 || p.tension > 0.0);
@@ -421,7 +480,7 @@ void detect_contacts(Mechanics& m) {
       }
       if (with_insitu && f.insitu) {
         const Vec2 a = at(m, edge.a), b = at(m, edge.b);
-        const Vec2 s = (1.0 / norm(b - a)) * (b - a);
+        const Vec2 s = (1.0 / length(b - a)) * (b - a);
         const double gap = f.gap;
         // The half traction on this side, as the contact's force on its gridpoint.
         c.sn = dot(f.insitu_force, f.normal) / c.length;
@@ -461,6 +520,7 @@ void detect_contacts(Mechanics& m) {
     rows[static_cast<size_t>(e.b)] += 2.0 * c.t * k;
   }
   set.list = std::move(list);
+  set.late += late;
   set.gather_first = std::move(first_slot);
   set.gather = std::move(gather);
   set.rows = std::move(rows);

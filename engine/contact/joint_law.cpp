@@ -2,7 +2,7 @@
 // two defects (VERIFICATION.md S.4): it gives tension (down to -0.0005 MPa) for v < 0.0161 mm and
 // its tangent falls to zero at v = 1.183 mm and turns negative beyond. Clamped here so that the
 // stiffness is always positive and the polynomial never gives tension:
-//   * the curve starts at its zero crossing v0 = 0.0161 mm: sn(c) = f(c + v0), tangent 121 MPa/m
+//   * the curve starts at its zero crossing v0 = 0.0161 mm: sn(c) = f(c + v0), tangent 122 MPa/m
 //     at c = 0 (the "offset" of S.4);
 //   * past the point of the descending branch where the tangent is back down to 1880 MPa/m (the
 //     third stage of the seed's three-stage fit, reached at v = 1.042 mm, sn = 3.35 MPa), it goes
@@ -65,6 +65,16 @@ JointParams joint_params(const JointMaterialDef& def) {
   p.tan_dilation = std::tan(def.dilation * M_PI / 180.0);
   p.cohesion = def.cohesion;
   p.tension = def.tension;
+  check_finite_ge0(def.residual_cohesion, "residual_cohesion");
+  if (def.residual_cohesion > def.cohesion)
+    fail("residual_cohesion must be at most cohesion = {}, got {}", def.cohesion, def.residual_cohesion);
+  p.residual_cohesion = def.residual_cohesion;
+  const double residual_friction = std::isnan(def.residual_friction) ? def.friction : def.residual_friction;
+  if (!(std::isfinite(residual_friction) && residual_friction >= 0.0 && residual_friction < 90.0))
+    fail("residual_friction must be in [0, 90) degrees, got {}", residual_friction);
+  if (def.dilation > residual_friction)  // it dilates while slipping, at residual strength
+    fail("dilation must be at most residual_friction = {} degrees, got {}", residual_friction, def.dilation);
+  p.tan_residual_friction = std::tan(residual_friction * M_PI / 180.0);
   const bool kn_given = !std::isnan(def.kn);
   switch (def.law) {
     case NormalLaw::linear:

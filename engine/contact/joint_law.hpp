@@ -19,6 +19,9 @@ struct JointParams {
   double tan_friction = 0.0;  // [-]
   double cohesion = 0.0;      // [Pa]
   double tension = 0.0;       // [Pa]
+  // Once the contact has slipped or opened (no longer intact): no tension, and these.
+  double residual_cohesion = 0.0;      // [Pa]
+  double tan_residual_friction = 0.0;  // [-]
   double tan_dilation = 0.0;  // [-]
   // Staged law: stage i holds from stage_closure[i] on, with stiffness stage_kn[i] and the
   // stress stage_stress[i] at its start.

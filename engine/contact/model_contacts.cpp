@@ -102,7 +102,7 @@ ContactView Model::contact(int id) const {
   const bool open = c.state == ContactState::open;
   view.fn = open ? 0.0 : -c.sn * c.length;
   view.fs = c.fs;
-  view.un = -c.closure;
+  view.un = c.dilation - c.closure;  // the faces' opening: dilation opens them at a given stress
   view.us = c.us;
   view.slip = c.slip;
   view.state = std::string(to_string(c.state));

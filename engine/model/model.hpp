@@ -86,10 +86,14 @@ class Model {
 
   // Histories, sampled after every cycle whose number is a multiple of their `every`.
   int add_history(HistoryDef def);
-  // A built-in quantity: "ratio", "time", "kinetic"; at a point: "ux", "uy", "vx", "vy"
-  // (nearest gridpoint) or "sxx", "syy", "sxy", "szz", "s1", "s3" (zone containing it).
+  // A built-in quantity of the whole model (model_quantities()) or at a point
+  // (point_quantities(): the nearest gridpoint's ux, uy, vx, vy; the stresses sxx, syy, sxy,
+  // szz, s1, s3 of the zone containing it; the joint_* quantities of the contact at the
+  // boundary gridpoint nearest to it that has one, 0 while it has none).
   std::function<double()> history_sampler(std::string_view quantity,
                                           std::optional<Vec2> at) const;
+  static const std::vector<std::string>& history_model_quantities();
+  static const std::vector<std::string>& history_point_quantities();
   static std::string history_unit(std::string_view quantity);  // "m", "Pa", "-", ...
   const std::vector<History>& histories() const;
   void write_histories(const std::string& path) const;  // CSV, one column per history

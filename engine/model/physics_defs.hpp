@@ -50,8 +50,10 @@ struct JointMaterialDef {
   double kn = kUnset;      // normal stiffness [Pa/m] (linear law; optional with a table)
   double ks = kUnset;      // shear stiffness [Pa/m]
   double friction = 0.0;   // [deg]
-  double cohesion = 0.0;   // [Pa], lost once the contact slips or opens
-  double tension = 0.0;    // tensile strength [Pa], lost likewise
+  double cohesion = 0.0;   // [Pa], drops to residual_cohesion once the contact slips or opens
+  double tension = 0.0;    // tensile strength [Pa], lost likewise (no residual tension)
+  double residual_cohesion = 0.0;      // [Pa], at most cohesion
+  double residual_friction = kUnset;   // [deg], unset: friction
   double dilation = 0.0;   // [deg], at most friction
   NormalLaw law = NormalLaw::linear;
   // Stages {closure from [m], kn [Pa/m]}: closures increasing from 0.
@@ -197,6 +199,8 @@ struct SolverInfo {
   double step = 0.0;   // [s]
   double ratio = 0.0;  // last measured unbalanced-force ratio [-]
   double kinetic = 0.0;  // last measured kinetic energy [J/m]
+  int contacts = 0;      // contacts as last found (0 until found: first cycle or query)
+  long late_contacts = 0;  // contacts found already pressed in (ContactSet::late)
 };
 
 }  // namespace edem

@@ -256,7 +256,12 @@ void Model::reset(bool displacement, bool velocity, bool state) {
 
 bool Model::cycling_started() const { return mechanics_->cycles_run > 0; }
 bool Model::cycling_now() const { return mechanics_->cycling_now; }
-SolverInfo Model::solver_info() const { return mechanics_->info; }
+SolverInfo Model::solver_info() const {
+  SolverInfo info = mechanics_->info;
+  info.contacts = mechanics_->contacts.detected ? static_cast<int>(mechanics_->contacts.list.size()) : 0;
+  info.late_contacts = mechanics_->contacts.late;
+  return info;
+}
 
 SolveResult Model::run(long max_cycles, double target_ratio) {
   return run_solver(*mechanics_, mesh_, max_cycles, target_ratio);
@@ -300,31 +305,68 @@ int Model::add_history(HistoryDef def) {
   return static_cast<int>(mechanics_->histories.size());
 }
 
-namespace {
-const std::vector<std::string>& point_quantities() {
-  static const std::vector<std::string> names{"ux", "uy", "vx", "vy", "sxx", "syy",
-                                              "sxy", "szz", "s1", "s3"};
+const std::vector<std::string>& Model::history_point_quantities() {
+  static const std::vector<std::string> names{"ux",       "uy",        "vx",       "vy",
+                                              "sxx",      "syy",       "sxy",      "szz",
+                                              "s1",       "s3",        "joint_sn", "joint_tau",
+                                              "joint_un", "joint_us",  "joint_slip"};
   return names;
 }
-const std::vector<std::string>& global_quantities() {
-  static const std::vector<std::string> names{"ratio", "time", "kinetic", "cycle"};
+
+const std::vector<std::string>& Model::history_model_quantities() {
+  static const std::vector<std::string> names{"ratio", "time",    "kinetic",  "cycle",
+                                              "contacts", "slipping", "open", "max_slip"};
   return names;
 }
-}  // namespace
 
 std::string Model::history_unit(std::string_view quantity) {
-  if (quantity == "ratio" || quantity == "cycle") return "-";
+  if (quantity == "ratio" || quantity == "cycle" || quantity == "contacts" ||
+      quantity == "slipping" || quantity == "open")
+    return "-";
   if (quantity == "time") return "s";
   if (quantity == "kinetic") return "J/m";
-  if (quantity == "ux" || quantity == "uy") return "m";
+  if (quantity == "ux" || quantity == "uy" || quantity == "max_slip" || quantity == "joint_un" ||
+      quantity == "joint_us" || quantity == "joint_slip")
+    return "m";
   if (quantity == "vx" || quantity == "vy") return "m/s";
   return "Pa";
 }
 
+namespace {
+
+// Counts of the contacts as last found, or the largest slip among them.
+double contact_statistic(const Mechanics& m, std::string_view quantity) {
+  const std::vector<Contact>& list = m.contacts.list;
+  if (quantity == "contacts") return static_cast<double>(list.size());
+  double value = 0.0;
+  for (const Contact& c : list) {
+    if (quantity == "slipping") value += c.state == ContactState::slip;
+    else if (quantity == "open") value += c.state == ContactState::open;
+    else value = std::max(value, c.slip);
+  }
+  return value;
+}
+
+// A joint quantity of the first contact of `node` (contacts are sorted by node), 0 if none.
+double joint_quantity(const Mechanics& m, int node, std::string_view quantity) {
+  const std::vector<Contact>& list = m.contacts.list;
+  const auto c = std::lower_bound(list.begin(), list.end(), node,
+                                  [](const Contact& x, int n) { return x.node < n; });
+  if (c == list.end() || c->node != node) return 0.0;
+  const bool open = c->state == ContactState::open;
+  if (quantity == "joint_sn") return open ? 0.0 : -c->sn;  // compression negative
+  if (quantity == "joint_tau") return c->length > 0.0 ? c->fs / c->length : 0.0;
+  if (quantity == "joint_un") return c->dilation - c->closure;
+  if (quantity == "joint_us") return c->us;
+  return c->slip;
+}
+
+}  // namespace
+
 std::function<double()> Model::history_sampler(std::string_view quantity,
                                                 std::optional<Vec2> at) const {
-  const auto& global = global_quantities();
-  const auto& local = point_quantities();
+  const auto& global = history_model_quantities();
+  const auto& local = history_point_quantities();
   const bool is_global = std::find(global.begin(), global.end(), quantity) != global.end();
   const bool is_local = std::find(local.begin(), local.end(), quantity) != local.end();
   if (!is_global && !is_local) {
@@ -337,9 +379,16 @@ std::function<double()> Model::history_sampler(std::string_view quantity,
     if (quantity == "ratio") return [m] { return m->info.ratio; };
     if (quantity == "time") return [m] { return m->info.time; };
     if (quantity == "kinetic") return [m] { return m->info.kinetic; };
-    return [m] { return static_cast<double>(m->info.cycle); };
+    if (quantity == "cycle") return [m] { return static_cast<double>(m->info.cycle); };
+    return [m, q = std::string(quantity)] { return contact_statistic(*m, q); };
   }
   if (!at) fail("history quantity '{}' needs at = {{x, y}}", quantity);
+  if (quantity.starts_with("joint_")) {
+    const int id = contact_near(*at);
+    if (id < 0) fail("no contact to follow near ({}, {})", at->x, at->y);
+    const int node = m->contacts.list[static_cast<size_t>(id)].node;
+    return [m, node, q = std::string(quantity)] { return joint_quantity(*m, node, q); };
+  }
   if (quantity[0] == 'u' || quantity[0] == 'v') {
     const int gp = gridpoint_near(*at);
     if (gp < 0) fail("there are no gridpoints to follow: zone{{...}} the blocks first");

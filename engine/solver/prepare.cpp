@@ -198,8 +198,17 @@ void update_masses(Mechanics& m) {
   m.info.step = m.step;
 }
 
+// Threads as asked (all the machine's by default), but no more than the model can keep busy:
+// each cycle ends in two barriers, and a thread with less than this much work (zones and
+// boundary gridpoints that may touch) waits more than it works; on a loaded machine a barrier
+// can cost a scheduler time slice, and a model of a few hundred zones then runs many times
+// slower on two threads than on one. Results do not depend on the thread count.
+constexpr size_t kWorkPerThread = 1000;
+
 int thread_count(const Mechanics& m) {
-  return m.threads > 0 ? m.threads : std::max(1, omp_get_max_threads());
+  const int wanted = m.threads > 0 ? m.threads : std::max(1, omp_get_max_threads());
+  const size_t work = m.active.size() + (m.faces.touchable_blocks > 1 ? m.faces.nodes.size() : 0);
+  return static_cast<int>(std::clamp<size_t>(work / kWorkPerThread, 1, static_cast<size_t>(wanted)));
 }
 
 void reset_for_mesh(Mechanics& m, const Mesh& mesh) {
@@ -241,8 +250,7 @@ void reset_for_mesh(Mechanics& m, const Mesh& mesh) {
 }
 
 void prepare(Mechanics& m, const Mesh& mesh) {
-  const int threads = thread_count(m);
-  if (!m.dirty && m.partition.threads == threads) return;
+  if (!m.dirty && m.partition.threads == thread_count(m)) return;
   if (mesh.zone_count() == 0) fail("the model has no zones: zone{{...}} the blocks first");
 
   m.active.clear();
@@ -298,7 +306,7 @@ void prepare(Mechanics& m, const Mesh& mesh) {
 
   m.mates.clear();
   if (m.settings.mixed) m.mates = group_zones(m.geometry, m.active, m.position);
-  m.partition = make_partition(m, threads);
+  m.partition = make_partition(m, thread_count(m));  // once the active zones are known
   m.acc_force.assign(2 * static_cast<size_t>(m.partition.accumulators), 0.0);
   m.info.step = m.step;
   m.dirty = false;
