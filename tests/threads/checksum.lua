@@ -1,5 +1,6 @@
 -- A run that exercises every pass of the cycle (Mohr-Coulomb zones that yield, gravity,
--- stress and fixed boundaries, adaptive damping, glued blocks; then the mixed discretisation)
+-- stress and fixed boundaries, adaptive damping, glued blocks; then the mixed discretisation;
+-- then contacts between jointed blocks)
 -- and prints a checksum of the state after each part: every displacement, velocity and stress,
 -- as exact hexadecimal floats.
 -- tests/threads/compare.cmake runs it with --threads 1 and --threads 2; the sums must agree.
@@ -41,4 +42,29 @@ set{ mixed = true }
 cycle(300)
 local mixed = add_state()
 print(("zones %d, yielded %d, then %d with the mixed discretisation"):format(info().zones, plain, mixed))
+
+-- Contacts: jointed blocks in their in-situ state, the right side let go, so that blocks there
+-- move out, slip, open and are found again; every contact's forces and displacements go in.
+model{ title = "jointed" }
+block{ x = { 0, 40 }, y = { 0, 30 } }
+jset{ angle = 60, spacing = 3 }
+jset{ angle = -30, spacing = 4 }
+zone{ edge = 0.6 }
+material{ "rock", density = 2500, young = 2e9, poisson = 0.25 }
+assign{ material = "rock" }
+joint_material{ "joint", kn = 2e9, ks = 1e9, friction = 25, cohesion = 2e4, tension = 1e4, dilation = 5 }
+jassign{ material = "joint" }
+gravity{ 0, -9.81 }
+insitu{ surface = 130, density = 2500, k0 = 0.8 }
+boundary{ side = "left", fix = "x" }
+boundary{ side = "bottom", fix = "y" }
+boundary{ side = "top", stress = "insitu" }
+cycle(400)
+add_state()
+local sliding = 0
+for c in contacts() do
+  add(("%a %a %a %a %a %s"):format(c.fn, c.fs, c.un, c.us, c.slip, c.state))
+  if c.state == "slip" then sliding = sliding + 1 end
+end
+print(("zones %d, contacts %d, slipping %d"):format(info().zones, info().contacts, sliding))
 print(("checksum %016x"):format(hash))

@@ -2,22 +2,25 @@
 --
 -- The plane is a fixed base block, the slope is made by tilting gravity by theta (the same
 -- mechanics as a tilted plane, with straight edges). A deformable block rests on it through a
--- Coulomb joint (kn = ks = 10 GPa/m), mass 5300 kg/m and base A = 2 m as in VERIFICATION.md.
---   * sliding, theta = 30 and 40, phi = 20, a 2 m x 1 m block: it settles in static mode with
---     friction 89 deg (the contacts carry its weight, normal and shear), then takes phi = 20
---     and runs dynamically from rest; acceleration from a fit s = s0 + v0 t + a t^2 / 2 over
---     t = 0.2 .. 1.0 s, against a = g (sin theta - cos theta tan phi), within 1 %.
---   * threshold, theta = 30: phi = 30.1 stays put (checked; stable means it moved less than
---     10 x the elastic shear-spring value m g sin theta / (ks A), and no more than that value in
---     the second second); phi = 29.9 should slide a t^2 / 2 from rest (printed, see below);
---   * cohesion, phi = 20, c_crit A = m g (sin theta - cos theta tan phi): 0.95 c_crit slides as
---     without cohesion (checked: cohesion is lost once a contact slips, residual zero);
---     1.05 c_crit should stay put (printed). These use a flat block, 2 m x 0.02 m with the
---     density raised to keep the mass, whose base carries nearly uniform stress as the closed
---     form assumes (a tall block presses its toe harder than its heel, and brittle cohesion then
---     fails from the heel).
--- NOT YET RIGHT (issue 4 open): phi = 29.9 slides 6 x too far in 2 s after a static phase that
--- cannot converge, and 1.05 c_crit loses its cohesion and slides; both are printed, not checked.
+-- Coulomb joint, mass 5300 kg/m and base A = 2 m as in VERIFICATION.md. Each case settles in
+-- static mode (with friction 89 deg where the block is to slide: the contacts then carry its
+-- weight, normal and shear), takes its own joint properties and runs dynamically from rest;
+-- accelerations from a fit s = s0 + v0 t + a t^2 / 2 (t from 0.2 s), against
+-- a = g (sin theta - cos theta tan phi) - c A / m.
+--   * sliding, theta = 30 and 40, phi = 20: a 2 m x 1 m block, kn = ks = 10 GPa/m, within 1 %;
+--   * threshold, theta = 30: phi = 30.1 stays put (stable: moved less than 10 x the elastic
+--     shear-spring value m g sin theta / (ks A), and no more than that value in the second
+--     second); phi = 29.9 slides with a = 0.01975 m/s2, within 1 %;
+--   * cohesion bracket, phi = 20, c_crit A = m g (sin theta - cos theta tan phi): with the
+--     cohesion kept after slip (residual_cohesion = cohesion), 1.05 c_crit is stable, 0.95 c_crit
+--     slides, 0.5 c_crit slides at the closed-form rate within 1 %; with the default brittle
+--     cohesion (residual zero), 0.95 c_crit fails and slides as with no cohesion, within 1 %.
+-- The slow cases use a rigid-like block: flat (2 m x 0.02 m, density raised to keep the mass)
+-- on joints 100 x softer (kn = ks = 0.1 GPa/m). A tall elastic block on stiff joints that slides
+-- slowly rocks, and with no damping the rocking does not die out: it reverses the slip at the
+-- heel and the toe now and then and the block slides too fast (steady sliding of elastic bodies
+-- with Coulomb friction is unstable; measured: phi = 29.9 with the tall block slides 0.3 m in
+-- 2 s instead of 0.04 m, with any time step). The fast cases slide faster than the rocking.
 local check = require "edem.check"
 
 local g, rho, kn, ks = 9.81, 2650, 1e10, 1e10
@@ -27,6 +30,8 @@ local mass = rho * width * 1.0  -- 5300 kg/m
 -- Runs one case; returns samples {t, s} of the block's slide from the start of the dynamic run.
 local function run_case(case)
   local height = case.height or 1.0
+  local kn = case.kn or kn
+  local ks = kn
   model{ title = ("block on a %g deg slope, phi = %g, c = %g"):format(case.theta, case.phi, case.cohesion or 0) }
   block{ x = {-3, 8}, y = {-1, 0} }
   block{ x = {-width / 2, width / 2}, y = {0, height} }
@@ -35,12 +40,15 @@ local function run_case(case)
   material{ "rock", density = mass / (width * height), young = 10e9, poisson = 0.25 }
   assign{ material = "rock" }
   local settle_friction = case.settle_friction or case.phi
-  joint_material{ "plane", kn = kn, ks = ks, friction = settle_friction, cohesion = case.cohesion or 0 }
+  local residual = case.keep_cohesion and case.cohesion or 0
+  joint_material{ "plane", kn = kn, ks = ks, friction = settle_friction, cohesion = case.cohesion or 0,
+                  residual_cohesion = residual }
   jassign{ material = "plane" }
   boundary{ polygon = {{-3.1, -1.1}, {8.1, -1.1}, {8.1, -0.01}, {-3.1, -0.01}}, fix = "xy" }
   gravity{ g * math.sin(math.rad(case.theta)), -g * math.cos(math.rad(case.theta)) }
   solve{ ratio = 1e-9, max_cycles = 20000 }
-  joint_material{ "plane", kn = kn, ks = ks, friction = case.phi, cohesion = case.cohesion or 0 }
+  joint_material{ "plane", kn = kn, ks = ks, friction = case.phi, cohesion = case.cohesion or 0,
+                  residual_cohesion = residual }
   set{ mode = "dynamic", damping = "none" }
   reset{ "velocity" }
   local start, t0 = gp_near(0, height).ux, info().time
@@ -91,31 +99,61 @@ for _, theta in ipairs({ 30, 40 }) do
                fit_acceleration(samples, 0.2, 1.0), acceleration(theta, 20), 0.01)
 end
 
-local elastic = mass * g * math.sin(math.rad(30)) / (ks * width)
+local function elastic(shear_stiffness)
+  return mass * g * math.sin(math.rad(30)) / ((shear_stiffness or ks) * width)
+end
 local function moved(samples, at)
   local best = samples[1]
   for _, p in ipairs(samples) do if math.abs(p[1] - at) < math.abs(best[1] - at) then best = p end end
   return best[2]
 end
-local function stable(samples)
-  local s1, s2 = moved(samples, 1.0), moved(samples, 2.0)
-  print(("  moved %.3g m by 1 s, %.3g m by 2 s; elastic shear-spring value %.3g m"):format(s1, s2, elastic))
-  return (math.abs(s2) < 10 * elastic and math.abs(s2 - s1) <= elastic) and 1 or 0
+local function stable(samples, shear_stiffness)
+  local s1, s2, e = moved(samples, 1.0), moved(samples, 2.0), elastic(shear_stiffness)
+  print(("  moved %.3g m by 1 s, %.3g m by 2 s; elastic shear-spring value %.3g m"):format(s1, s2, e))
+  return (math.abs(s2) < 10 * e and math.abs(s2 - s1) <= e) and 1 or 0
 end
 
-local flat = 0.02
+local flat, soft = 0.02, 1e8
 local samples = run_case{ theta = 30, phi = 30.1, seconds = 2.0 }
 check.report("theta = 30, phi = 30.1: stable (1 = yes)", stable(samples), 1, 0, { absolute = true })
-samples = run_case{ theta = 30, phi = 29.9, height = flat, seconds = 2.0 }
-print(("  NOT YET RIGHT: theta = 30, phi = 29.9: slid %.4g m by 2 s, a t^2 / 2 = %.4g m"):format(
-  moved(samples, 2.0), acceleration(30, 29.9) * 2.0))
+samples = run_case{ theta = 30, phi = 29.9, settle_friction = 89, height = flat, kn = soft, seconds = 2.0 }
+print(("  slid %.4g m by 2 s, a t^2 / 2 = %.4g m"):format(moved(samples, 2.0), acceleration(30, 29.9) * 2.0))
+check.report("theta = 30, phi = 29.9: acceleration [m/s2]", fit_acceleration(samples, 0.2, 2.0),
+             acceleration(30, 29.9), 0.01)
 
 local c_crit = mass * acceleration(30, 20) / width
 print(("  critical cohesion %.1f Pa (VERIFICATION.md: 4804)"):format(c_crit))
-samples = run_case{ theta = 30, phi = 20, cohesion = 1.05 * c_crit, height = flat, seconds = 2.0 }
-print("  NOT YET RIGHT: theta = 30, phi = 20, c = 1.05 c_crit should be stable:")
-stable(samples)
-samples = run_case{ theta = 30, phi = 20, cohesion = 0.95 * c_crit, height = flat, seconds = 2.0 }
-check.report("theta = 30, phi = 20, c = 0.95 c_crit: slid by 2 s [m]", moved(samples, 2.0),
-             acceleration(30, 20) * 2.0, 0.05)
+-- Cohesion kept after slip (residual_cohesion = cohesion): limit equilibrium of the whole block.
+samples = run_case{ theta = 30, phi = 20, settle_friction = 89, cohesion = 1.05 * c_crit, keep_cohesion = true,
+                    height = flat, kn = soft, seconds = 2.0 }
+check.report("cohesion kept, c = 1.05 c_crit: stable (1 = yes)", stable(samples, soft), 1, 0, { absolute = true })
+-- Sliding with cohesion kept: a = g (sin theta - cos theta tan phi) - c A / m. At 0.95 c_crit that
+-- is a small difference of large terms (0.091 of 1.81 m/s2): the block slides (checked) and the
+-- acceleration is printed; it comes out 4 % high because the base gridpoint the heel has slid
+-- past is beside the block, not under it, and its half of the heel's tributary length (0.004 of
+-- 2 m) carries no cohesion, 18 N of 9100 N. At 0.5 c_crit the same 18 N is 0.4 % of a: checked.
+samples = run_case{ theta = 30, phi = 20, settle_friction = 89, cohesion = 0.95 * c_crit, keep_cohesion = true,
+                    height = flat, kn = soft, seconds = 2.0 }
+print(("  cohesion kept, c = 0.95 c_crit: acceleration %.5g m/s2, closed form %.5g"):format(
+  fit_acceleration(samples, 0.2, 2.0), acceleration(30, 20) - 0.95 * c_crit * width / mass))
+check.report("cohesion kept, c = 0.95 c_crit: slides (1 = yes)",
+             moved(samples, 2.0) > 100 * elastic(soft) and 1 or 0, 1, 0, { absolute = true })
+samples = run_case{ theta = 30, phi = 20, settle_friction = 89, cohesion = 0.5 * c_crit, keep_cohesion = true,
+                    height = flat, kn = soft, seconds = 2.0 }
+check.report("cohesion kept, c = 0.5 c_crit: acceleration [m/s2]", fit_acceleration(samples, 0.2, 2.0),
+             acceleration(30, 20) - 0.5 * c_crit * width / mass, 0.01)
+-- Brittle cohesion (the default, residual zero): 0.95 c_crit fails and slides as without cohesion.
+samples = run_case{ theta = 30, phi = 20, settle_friction = 89, cohesion = 0.95 * c_crit, height = flat,
+                    kn = soft, seconds = 2.0 }
+check.report("brittle, c = 0.95 c_crit: acceleration [m/s2]", fit_acceleration(samples, 0.2, 2.0),
+             acceleration(30, 20), 0.01)
+-- Brittle at 1.05 c_crit is not the rigid block's answer and is not checked: the base of this
+-- elastic block is 5 % more stressed at its ends than on average (the base shear acts a
+-- half-thickness below the weight; a thin block on stiff springs bends that moment into its
+-- ends), more than the 1.8 % margin in shear, so the heel slips, loses its cohesion and the
+-- failure runs along the base.
+samples = run_case{ theta = 30, phi = 20, settle_friction = 89, cohesion = 1.05 * c_crit, height = flat,
+                    kn = soft, seconds = 2.0 }
+print("  brittle, c = 1.05 c_crit (not checked, see the comment):")
+stable(samples, soft)
 check.finish()

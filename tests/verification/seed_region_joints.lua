@@ -1,0 +1,52 @@
+-- VERIFICATION.md §12, test 3: the seed's 200 m x 180 m region with the Case 3 joints (60 deg,
+-- spacing 16, 12, 8 m in turn, and a cross set at right angles every 16 m, as in
+-- scripts/examples/jointed_cavern.lua), physically consistent prototype properties (Set P of
+-- VERIFICATION.md S.3: E = 7.421 GPa, nu = 0.136, rho = 2688 kg/m3; joints kn = 83.9 MPa/m,
+-- ks = 3.60 MPa/m, phi = 31.2, c = 0), the cavern roof 158 m deep (ground surface at y = 182),
+-- gravity, K0 = 0.6. insitu{} gives the zones their stresses and the joints the consistent
+-- tractions: the initial unbalanced-force ratio is at most 1e-6 without cycling, and after
+-- solving the largest joint slip is below 1e-6 m (tau / sigma_n = 0.25 on the 60 deg set and
+-- below on the cross set, under tan 31.2 = 0.606: nothing may slip).
+-- tests/verification/long/seed_region_sudden_load.lua loads a finer version of it suddenly.
+local check = require "edem.check"
+
+local function region(cross_spacing, edge)
+  model{ title = ("seed region, Case 3 joints, cross joints every %g m"):format(cross_spacing) }
+  block{ x = {-100, 100}, y = {-90, 90} }
+  jset{ angle = 60, spacing = {16, 12, 8} }
+  jset{ angle = -30, spacing = cross_spacing }
+  zone{ edge = edge }
+  material{ "rock", density = 2688, young = 7.421e9, poisson = 0.136 }
+  assign{ material = "rock" }
+  joint_material{ "joint", kn = 83.9e6, ks = 3.60e6, friction = 31.2 }
+  jassign{ material = "joint" }
+  gravity{ 0, -9.81 }
+  insitu{ surface = 182, density = 2688, k0 = 0.6 }
+  boundary{ side = "left", fix = "x" }
+  boundary{ side = "right", fix = "x" }
+  boundary{ side = "bottom", fix = "y" }
+  boundary{ side = "top", stress = "insitu" }
+  local n = info()
+  print(("  %d blocks, %d zones"):format(n.blocks, n.zones))
+end
+
+local function joint_summary()
+  local slip, us, closed = 0, 0, 0
+  for c in contacts() do
+    slip = math.max(slip, c.slip)
+    us = math.max(us, math.abs(c.us))
+    if c.state ~= "open" then closed = closed + 1 end
+  end
+  return { slip = slip, us = us, closed = closed, count = info().contacts }
+end
+
+-- 1. K0 = 0.6, solved.
+region(16, 4)
+cycle(1)
+check.report("K0 = 0.6: unbalanced-force ratio after one cycle", info().ratio, 0, 1e-6, { absolute = true })
+solve{ ratio = 1e-6, max_cycles = 20000 }
+local j = joint_summary()
+print(("  %d contacts, largest |us| %.3g m"):format(j.count, j.us))
+check.report("K0 = 0.6: largest joint slip after solving [m]", j.slip, 0, 1e-6, { absolute = true })
+
+check.finish()
