@@ -13,6 +13,9 @@
 //     contacts are found again) changes as the model settles.
 //   * BM_B4_JointedRegion: the jointed model; zone-cycles/s include the contact passes (forces,
 //     gather) and every re-detection the motion asks for.
+//   * BM_B4_JointedRegionLoaded: the same, with the top load raised by a fifth after the
+//     warm-up: blocks move and slip, and the timed cycles include the re-detections the motion
+//     asks for (the sudden-load robustness test's situation).
 //   * BM_B4_SameZonesNoJoints: the same region and size field without the joint sets (the
 //     glued cavern outline stays, so its blocks are one continuum and there are no contacts):
 //     the zones' cost alone, with a zone count within a few % of the jointed one.
@@ -29,6 +32,7 @@
 // the jointed value minus the unjointed one estimates the contact boundary and detection).
 #include <benchmark/benchmark.h>
 
+#include <array>
 #include <chrono>
 #include <exception>
 #include <fstream>
@@ -130,7 +134,17 @@ Model b4_model(bool joints, int threads) {
   return model;
 }
 
-void run_b4(benchmark::State& state, bool joints) {
+// Raises the top load by a fifth at once (the sides stay on rollers): the blocks move, slip,
+// and the contacts are found again as they go, as in
+// tests/verification/long/seed_region_sudden_load.lua.
+void load_suddenly(Model& model) {
+  const double top = -(2688 * 9.81 * (24 + 158 - 90));  // in-situ syy at y = 90 [Pa]
+  BoundaryDef def = on_side("top", "");
+  def.stress = std::array<double, 3>{0.6 * 1.2 * top, 1.2 * top, 0.0};
+  model.boundary(def);
+}
+
+void run_b4(benchmark::State& state, bool joints, bool loaded = false) {
   const int threads = static_cast<int>(state.range(0));
   release_free_heap();
   const double rss_before = rss_bytes();
@@ -142,6 +156,7 @@ void run_b4(benchmark::State& state, bool joints) {
     model.cycle(1);
     first = std::chrono::steady_clock::now() - start;
     model.cycle(kWarmUp - 1);
+    if (loaded) load_suddenly(model);
   } catch (const std::exception& e) {
     state.SkipWithError(e.what());
     return;
@@ -176,6 +191,16 @@ void BM_B4_JointedRegion(benchmark::State& state) {
   run_b4(state, true);
 }
 BENCHMARK(BM_B4_JointedRegion)
+    ->Arg(1)
+    ->Arg(2)
+    ->Iterations(kBatches)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+void BM_B4_JointedRegionLoaded(benchmark::State& state) {
+  run_b4(state, true, true);
+}
+BENCHMARK(BM_B4_JointedRegionLoaded)
     ->Arg(1)
     ->Arg(2)
     ->Iterations(kBatches)
