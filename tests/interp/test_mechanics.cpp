@@ -395,6 +395,73 @@ TEST(Mechanics, Histories) {
   EXPECT_TRUE(interpreter.context().histories_written);
 }
 
+// Joint quantities: the counts of the model's contacts, and one contact followed by its
+// gridpoint, equal to what contact_near() says about it.
+TEST(Mechanics, JointHistories) {
+  const fs::path csv =
+      fs::temp_directory_path() / ("edem_joint_histories_" + std::to_string(::getpid()) + ".csv");
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, R"lua(
+    block{ x = {0, 1}, y = {0, 2} }
+    jset{ angle = 0, spacing = 10, origin = {0, 1} }
+    zone{ edge = 0.25 }
+    material{ "rock", density = 2600, young = 10e9, poisson = 0.25 }
+    assign{ material = "rock" }
+    joint_material{ "j", kn = 10e9, ks = 1e9, friction = 30 }
+    jassign{ material = "j" }
+    boundary{ side = "bottom", fix = "xy" }
+    boundary{ side = "top", stress = {0, -1e6, 0} }
+    assert(history{ "joint_sn", at = {0.5, 1} } == "joint_sn@(0.5 1)")
+    history{ "joint_un", at = {0.5, 1} }
+    history{ "contacts", every = 5 }
+    history{ "max_slip" }
+    cycle(200)
+    local c = contact_near(0.5, 1)
+    history_write(")lua" + csv.string() + R"lua(")
+    local last
+    for line in io.lines(")lua" + csv.string() + R"lua(") do last = line end
+    local v = {}
+    for field in last:gmatch("[^,]+") do v[#v + 1] = tonumber(field) end
+    assert(v[1] == 200, last)
+    assert(v[2] == c.sn and v[3] == c.un, ("%s: sn %g un %g"):format(last, c.sn, c.un))
+    assert(v[2] < 0 and v[4] == info().contacts and v[4] > 0 and v[5] == 0, last)
+  )lua");
+  fs::remove(csv);
+}
+
+// The time step allows for the contacts: a stiffer joint material, or contacts that form when
+// blocks come together, shorten it at once.
+TEST(Mechanics, ContactStiffnessSetsTheStep) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, R"lua(
+    block{ x = {0, 1}, y = {0, 1} }
+    block{ x = {0, 1}, y = {1.2, 2.2} }
+    zone{ edge = 0.25 }
+    material{ "rock", density = 2600, young = 10e9, poisson = 0.25 }
+    assign{ material = "rock" }
+    joint_material{ "j", kn = 1e14, ks = 1e14, friction = 30 }
+    jassign{ material = "j" }
+    boundary{ side = "bottom", fix = "xy" }
+    gravity{ 0, -1000 }
+    set{ mode = "dynamic" }
+    cycle(1)
+    local apart = info().step
+    assert(info().contacts == 0, "found " .. info().contacts .. " contacts 0.2 m apart")
+    -- falling from rest at 1000 m/s2, the block closes the 0.2 m gap in 20 ms
+    while (info().contacts == 0 or contact_near(0.5, 1).state == "open") and info().time < 0.05 do
+      cycle(100)
+    end
+    assert(info().contacts > 0 and contact_near(0.5, 1).state ~= "open", "the block never landed")
+    local touching = info().step
+    assert(touching < 0.5 * apart, ("step %g apart, %g touching"):format(apart, touching))
+    joint_material{ "j", kn = 1e16, ks = 1e16, friction = 30 }
+    cycle(1)
+    assert(info().step < 0.2 * touching, ("step %g, then %g with a 100 x stiffer joint"):format(touching, info().step))
+  )lua");
+}
+
 TEST(Mechanics, HistoryErrors) {
   EXPECT_EQ(error_of("history{ 'ratio', fn = function() return 1 end }"),
             "test.lua:1: history: give a quantity or fn, not both");
