@@ -391,7 +391,9 @@ const Command& contacts_command() {
       .returns =
           "an iterator; each contact is a table: id, position {x =, y =}, x, y (the "
           "gridpoint, where it is now [m]), normal {x =, y =} (unit, out of the edge's block), "
-          "length [m], fn, fs (normal force, compression negative, and shear force [N/m]), sn, "
+          "length [m] (the part that carries its force: less for a gridpoint past the corner "
+          "of the other block), fn, fs (normal force, compression negative, and shear force "
+          "[N/m]), sn, "
           "tau (the same per length [Pa]), un (normal displacement, opening positive, "
           "including the closure the in-situ stress gives and the dilation [m]), us (shear displacement since it "
           "formed [m]), slip (plastic shear, accumulated [m]), state (\"bonded\", "

@@ -43,6 +43,7 @@ namespace edem {
   const double rvy = v[2 * n + 1] - ((1.0 - t) * v[2 * a + 1] + t * v[2 * b + 1]);
   const double dus = (rvx * sx + rvy * sy) * dt;
   c.t = t;
+  c.share = share;
   c.us += dus;
   // Dilation pushes the faces apart: at a given gap the joint is that much more closed.
   c.closure = c.closure0 - gap + c.dilation;

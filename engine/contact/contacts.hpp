@@ -61,6 +61,7 @@ struct Contact {
   double length = 0.0; // [m]
   double limit = 0.0;  // overlap beyond which the watchdog stops the run: the gridpoint's reach [m]
   double t = 0.0;      // where the gridpoint projects on the edge, 0 at a, 1 at b
+  double share = 1.0;  // of `length` still over the edge's block (past a corner: less) [-]
   double closure0 = 0.0;  // closure at zero gap: the in-situ prestress [m]
   double dilation = 0.0;  // opening from dilation [m]: closure = closure0 - gap + dilation
   double closure = 0.0;   // last closure, positive pressing [m]

@@ -98,9 +98,9 @@ ContactView Model::contact(int id) const {
   view.position = at(c.node);
   const Vec2 d = at(e.b) - at(e.a);
   view.normal = {d.y / norm(d), -d.x / norm(d)};
-  view.length = c.length;
+  view.length = c.length * c.share;  // what carries its force now
   const bool open = c.state == ContactState::open;
-  view.fn = open ? 0.0 : -c.sn * c.length;
+  view.fn = open ? 0.0 : -c.sn * view.length;
   view.fs = c.fs;
   view.un = c.dilation - c.closure;  // the faces' opening: dilation opens them at a given stress
   view.us = c.us;

@@ -355,7 +355,8 @@ double joint_quantity(const Mechanics& m, int node, std::string_view quantity) {
   if (c == list.end() || c->node != node) return 0.0;
   const bool open = c->state == ContactState::open;
   if (quantity == "joint_sn") return open ? 0.0 : -c->sn;  // compression negative
-  if (quantity == "joint_tau") return c->length > 0.0 ? c->fs / c->length : 0.0;
+  const double length = c->length * c->share;
+  if (quantity == "joint_tau") return length > 0.0 ? c->fs / length : 0.0;
   if (quantity == "joint_un") return c->dilation - c->closure;
   if (quantity == "joint_us") return c->us;
   return c->slip;
