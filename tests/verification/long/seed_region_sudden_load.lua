@@ -8,24 +8,10 @@
 -- gridpoint that went into another block before detection saw it, a lost contact).
 -- Label "long" (about two minutes): ctest -L long -R sudden_load.
 local check = require "edem.check"
+local seed = require "edem.seed"
 
 local function region(cross_spacing, edge)
-  model{ title = ("seed region, Case 3 joints, cross joints every %g m"):format(cross_spacing) }
-  block{ x = {-100, 100}, y = {-90, 90} }
-  jset{ angle = 60, spacing = {16, 12, 8} }
-  jset{ angle = -30, spacing = cross_spacing }
-  zone{ edge = edge }
-  material{ "rock", density = 2688, young = 7.421e9, poisson = 0.136 }
-  assign{ material = "rock" }
-  joint_material{ "joint", kn = 83.9e6, ks = 3.60e6, friction = 31.2 }
-  jassign{ material = "joint" }
-  gravity{ 0, -9.81 }
-  insitu{ surface = 182, density = 2688, k0 = 0.6 }
-  boundary{ side = "left", fix = "x" }
-  boundary{ side = "right", fix = "x" }
-  boundary{ side = "bottom", fix = "y" }
-  boundary{ side = "top", stress = "insitu" }
-  local n = info()
+  local n = seed.region{ cross_spacing = cross_spacing, edge = edge }
   print(("  %d blocks, %d zones"):format(n.blocks, n.zones))
 end
 

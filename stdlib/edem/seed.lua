@@ -1,0 +1,46 @@
+-- edem.seed: the seed paper's jointed region, as VERIFICATION.md S.3 reads its numbers.
+--
+--   local seed = require "edem.seed"
+--   seed.region{ cross_spacing = 16, edge = 4 }   -- builds, zones, loads; returns info()
+--   seed.P.rock, seed.P.joint                      -- the parameter set it uses
+--
+-- The region: 200 m x 180 m, centred on the origin, the Case 3 joints (60 deg, spacing 16, 12,
+-- 8 m in turn) and a cross set at right angles (-30 deg, `cross_spacing`, default 16 m as in
+-- scripts/examples/jointed_cavern.lua), zoned uniformly at `edge` (default 4 m), elastic rock
+-- and Coulomb joints of Set P, gravity, in-situ stress with the cavern roof (y = 24) `depth`
+-- below the ground (default 158 m) and K0 (default 0.6), rollers on the sides and the base, the
+-- top loaded by the in-situ stress.
+local seed = {}
+
+-- Set P, the physically consistent prototype (VERIFICATION.md S.3): the model material's stresses
+-- times 17.86, joint stiffnesses times 0.04465 (kn: the third stage, 1880 MPa/m in the lab).
+seed.P = {
+  rock = { density = 2688, young = 7.421e9, poisson = 0.136, cohesion = 2.554e6, friction = 34,
+           tension = 0.975e6 },
+  joint = { kn = 83.9e6, ks = 3.60e6, friction = 31.2 },
+}
+
+function seed.region(t)
+  t = t or {}
+  local cross, edge = t.cross_spacing or 16, t.edge or 4
+  local depth, k0 = t.depth or 158, t.k0 or 0.6
+  local rock, joint = seed.P.rock, seed.P.joint
+  model{ title = ("seed region, Case 3 joints, cross joints every %g m"):format(cross) }
+  block{ x = {-100, 100}, y = {-90, 90} }
+  jset{ angle = 60, spacing = {16, 12, 8} }
+  jset{ angle = -30, spacing = cross }
+  zone{ edge = edge }
+  material{ "rock", density = rock.density, young = rock.young, poisson = rock.poisson }
+  assign{ material = "rock" }
+  joint_material{ "joint", kn = joint.kn, ks = joint.ks, friction = joint.friction }
+  jassign{ material = "joint" }
+  gravity{ 0, -9.81 }
+  insitu{ surface = 24 + depth, density = rock.density, k0 = k0 }
+  boundary{ side = "left", fix = "x" }
+  boundary{ side = "right", fix = "x" }
+  boundary{ side = "bottom", fix = "y" }
+  boundary{ side = "top", stress = "insitu" }
+  return info()
+end
+
+return seed
