@@ -80,7 +80,8 @@ int main(int argc, char** argv) {
   app.fallthrough();
   app.add_flag("-q,--quiet", options.quiet, "print no progress while running");
   app.add_option("--threads", options.threads,
-                 "threads for cycling the model (default: OpenMP's, e.g. OMP_NUM_THREADS)")
+                 "threads for cycling the model (default: OpenMP's, e.g. OMP_NUM_THREADS); at "
+                 "most one per 1000 zones, which a smaller model could not keep busy")
       ->check(CLI::Range(1, 4096));
   app.add_flag("--reference", options.reference,
                "print the language reference (markdown) and exit");
