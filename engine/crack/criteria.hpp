@@ -1,0 +1,27 @@
+// When a potential-crack section fails (DESIGN.md §4, VERIFICATION.md §0.1), from its in-plane
+// principal stresses s1 <= s3 (compression negative: s1 the most compressive) and the rock's
+// strength:
+//   shear    f_s = (1 - sin phi) s1 - (1 + sin phi) s3 + 2 c cos phi,  fails when f_s < 0;
+//   tension  f_t = sigma_t - s3,                                      fails when f_t < 0.
+// (The seed prints "- 2 c cos phi" in f_s; with compression negative that cannot be right:
+// uniaxial compression, s1 = -q and s3 = 0, must fail at q = UCS = 2 c cos phi / (1 - sin phi).)
+// Where both fail, the section breaks in tension: the tensile stress opens it before any slip.
+#pragma once
+
+#include "constitutive/mohr_coulomb.hpp"
+
+namespace edem {
+
+enum class CrackMode : unsigned char { none, shear, tension };
+
+struct RockStrength {
+  double cohesion = 0.0;  // [Pa]
+  double friction = 0.0;  // [deg]
+  double tension = 0.0;   // tensile strength [Pa], >= 0
+};
+
+double shear_function(const Principal& p, const RockStrength& rock);
+double tension_function(const Principal& p, const RockStrength& rock);
+CrackMode crack_mode(const Principal& p, const RockStrength& rock);
+
+}  // namespace edem
