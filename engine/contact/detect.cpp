@@ -4,8 +4,6 @@
 // the same for any thread count.
 #include "contact/detect.hpp"
 
-#include <omp.h>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -34,10 +32,6 @@ struct Box {
   }
 };
 
-// A vector's length: plain sqrt, not std::hypot (which guards against overflow nobody needs
-// here and was the largest single cost of detection).
-inline double length(Vec2 a) { return std::sqrt(a.x * a.x + a.y * a.y); }
-
 Vec2 at(const Mechanics& m, int node) {
   const size_t n = static_cast<size_t>(node);
   return {m.origin[2 * n] + m.u[2 * n], m.origin[2 * n + 1] + m.u[2 * n + 1]};
@@ -45,7 +39,7 @@ Vec2 at(const Mechanics& m, int node) {
 
 Vec2 outward(Vec2 a, Vec2 b) {
   const Vec2 d = b - a;
-  const double len = length(d);
+  const double len = norm(d);
   return {d.y / len, -d.x / len};
 }
 
@@ -53,7 +47,7 @@ double distance_to_segment(Vec2 p, Vec2 a, Vec2 b, double* t_out = nullptr) {
   const Vec2 d = b - a;
   const double t = std::clamp(dot(p - a, d) / dot(d, d), 0.0, 1.0);
   if (t_out) *t_out = t;
-  return length(p - (a + t * d));
+  return norm(p - (a + t * d));
 }
 
 // Blocks in a uniform grid of cells by their boxes, grown by the largest reach.
@@ -189,7 +183,7 @@ double covered_length(const Mechanics& m, Vec2 p, Vec2 q, int edge) {
     const double lo = std::max(0.0, std::min(tp, tq)), hi = std::min(1.0, std::max(tp, tq));
     return hi > lo ? (hi - lo) * std::sqrt(len2) : 0.0;
   };
-  const double limit = length(q - p);
+  const double limit = norm(q - p);
   double covered = over(edge);
   for (const bool forward : {false, true}) {
     int e = edge;
@@ -216,8 +210,8 @@ bool continues_outline(const Mechanics& m, const Found& to, Vec2 p, Vec2 n_e, do
     const ContactEdge& other = cb.edges[static_cast<size_t>(e)];
     return dot(outward(at(m, other.a), at(m, other.b)), n_e) > kSameFacing;
   };
-  if (length(at(m, target.a) - p) < near && same_facing(target.prev)) return true;
-  if (length(at(m, target.b) - p) < near && same_facing(target.next)) return true;
+  if (norm(at(m, target.a) - p) < near && same_facing(target.prev)) return true;
+  if (norm(at(m, target.b) - p) < near && same_facing(target.next)) return true;
   return false;
 }
 
@@ -250,7 +244,7 @@ std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t
     const ContactEdge& e = cb.edges[static_cast<size_t>(cb.node_edges[static_cast<size_t>(i)])];
     if (!m.block_live[static_cast<size_t>(e.block)]) continue;
     const Vec2 far_end = at(m, e.a == node ? e.b : e.a);
-    const double half = 0.5 * length(far_end - p);
+    const double half = 0.5 * norm(far_end - p);
     const Vec2 quarter = p + 0.25 * (far_end - p);
     double best = reach + 0.5 * half;
     Found* to = nullptr;
@@ -329,8 +323,8 @@ ContactBoundary contact_boundary(const Mesh& mesh, const std::vector<int>& gp_no
     const ContactEdge& next = cb.edges[static_cast<size_t>(e.next)];
     const ContactEdge& prev = cb.edges[static_cast<size_t>(e.prev)];
     const Vec2 d = ref(e.b) - ref(e.a), dn = ref(next.b) - ref(next.a), dp = ref(prev.b) - ref(prev.a);
-    e.corner_b = cross(d, dn) > sin10 * length(d) * length(dn);
-    e.corner_a = cross(dp, d) > sin10 * length(dp) * length(d);
+    e.corner_b = cross(d, dn) > sin10 * norm(d) * norm(dn);
+    e.corner_a = cross(dp, d) > sin10 * norm(dp) * norm(d);
   }
   // Per node: its touchable edges, and every block whose boundary it is on.
   std::vector<std::pair<int, int>> node_edge, node_block;
@@ -480,7 +474,7 @@ void detect_contacts(Mechanics& m) {
       }
       if (with_insitu && f.insitu) {
         const Vec2 a = at(m, edge.a), b = at(m, edge.b);
-        const Vec2 s = (1.0 / length(b - a)) * (b - a);
+        const Vec2 s = (1.0 / norm(b - a)) * (b - a);
         const double gap = f.gap;
         // The half traction on this side, as the contact's force on its gridpoint.
         c.sn = dot(f.insitu_force, f.normal) / c.length;

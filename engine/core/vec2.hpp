@@ -16,6 +16,8 @@ inline Vec2 operator*(double s, Vec2 a) { return {s * a.x, s * a.y}; }
 inline bool operator==(Vec2 a, Vec2 b) { return a.x == b.x && a.y == b.y; }
 inline double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
 inline double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
-inline double norm(Vec2 a) { return std::hypot(a.x, a.y); }
+// Plain sqrt, not std::hypot: hypot guards against an overflow no model coordinate comes near
+// and is several times slower (it was the largest single cost of contact detection).
+inline double norm(Vec2 a) { return std::sqrt(a.x * a.x + a.y * a.y); }
 
 }  // namespace edem
