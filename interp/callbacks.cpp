@@ -197,4 +197,46 @@ std::function<double()> lua_sampler(lua_State* L, int index, const std::string& 
   };
 }
 
+std::function<CrackMode(const SectionView&)> lua_criterion(lua_State* L, int index) {
+  auto fn = std::make_shared<const LuaRef>(L, index);
+  return [fn](const SectionView& section) {
+    const std::shared_ptr<const LuaRef> keep = fn;
+    const auto push = [&section](lua_State* T) {
+      push_section(T, section);
+      return 1;
+    };
+    const Call done = call(*keep, push, 1, "judge", "the criterion");
+    lua_State* T = done.L;
+    const int type = lua_type(T, -1);
+    if (type == LUA_TNIL) {
+      lua_settop(T, done.top);
+      return CrackMode::none;
+    }
+    if (type == LUA_TSTRING) {
+      const std::string_view word = lua_tostring(T, -1);
+      const CrackMode mode = word == "shear"     ? CrackMode::shear
+                             : word == "tension" ? CrackMode::tension
+                                                 : CrackMode::none;
+      if (mode != CrackMode::none) {
+        lua_settop(T, done.top);
+        return mode;
+      }
+    }
+    const std::string got = describe(T, -1);
+    lua_settop(T, done.top);
+    // No line ran the wrong return: blame the function's definition.
+    lua_rawgeti(T, LUA_REGISTRYINDEX, keep->ref());
+    lua_Debug info;
+    lua_getinfo(T, ">S", &info);
+    const Context& context = keep->context();
+    const std::string location = info.linedefined > 0
+                                     ? fmt::format("{}:{}", source_of(info), info.linedefined)
+                                     : fallback_location(context);
+    throw CallbackError(fmt::format("{}: judge: the criterion must return nil, \"shear\" or "
+                                    "\"tension\", got {}{}",
+                                    location, got, while_running(context)),
+                        {});
+  };
+}
+
 }  // namespace edem

@@ -16,6 +16,8 @@
 #include <functional>
 #include <string>
 
+#include "model/physics_defs.hpp"
+
 struct lua_State;
 
 namespace edem {
@@ -26,5 +28,13 @@ std::function<void(long cycle)> lua_callback(lua_State* L, int index);
 // history{ name = , fn = f }: the function at `index` called as f(), which must return a
 // number. `name` is the history's name for messages.
 std::function<double()> lua_sampler(lua_State* L, int index, const std::string& name);
+
+// judge{ criterion = f }: the function at `index` called as f(section) with a read-only view of
+// an intact section; it returns nil, "shear" or "tension" (anything else is an error that
+// names the function's definition).
+std::function<CrackMode(const SectionView&)> lua_criterion(lua_State* L, int index);
+
+// Pushes a read-only table of a section (the criterion's argument, and sections()).
+void push_section(lua_State* L, const SectionView& section);
 
 }  // namespace edem

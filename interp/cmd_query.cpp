@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "context.hpp"
 #include "geom/polygon.hpp"
+#include "iterator.hpp"
 #include "lua_util.hpp"
 
 namespace edem {
@@ -21,7 +22,7 @@ int run_info(lua_State* L, Context& context, const Args&) {
   Model& model = context.model();
   const ModelInfo info = model.info();
   const SolverInfo solver = model.solver_info();
-  lua_createtable(L, 0, 14);
+  lua_createtable(L, 0, 20);
   set_field(L, "blocks", info.blocks);
   set_field(L, "zones", info.zones);
   set_field(L, "gridpoints", info.gridpoints);
@@ -29,6 +30,12 @@ int run_info(lua_State* L, Context& context, const Args&) {
   set_field(L, "dropped_cuts", info.dropped_cuts);
   set_field(L, "regions", info.regions);
   set_field(L, "joint_sets", info.joint_sets);
+  set_field(L, "crack_seeds", info.crack_seeds);
+  set_field(L, "sections", info.sections);
+  set_field(L, "intact_sections", info.intact_sections);
+  set_field(L, "cracks", info.cracks);
+  set_field(L, "shear_cracks", info.shear_cracks);
+  set_field(L, "tension_cracks", info.tension_cracks);
   set_field(L, "title", model.title());
   set_field(L, "cycle", static_cast<long long>(solver.cycle));
   set_field(L, "time", solver.time);
@@ -139,7 +146,7 @@ void push_zone(lua_State* L, const Model& model, size_t index) {
 
 void push_gridpoint(lua_State* L, const Model& model, size_t index) {
   const GridpointView gp = model.gridpoint(static_cast<int>(index));
-  lua_createtable(L, 0, 14);
+  lua_createtable(L, 0, 20);
   set_field(L, "id", static_cast<long long>(index + 1));
   push_point(L, gp.position);
   lua_setfield(L, -2, "position");
@@ -183,37 +190,23 @@ void push_contact(lua_State* L, const Model& model, size_t index) {
   set_field(L, "other", c.other + 1);
 }
 
-// One step of an iterator: upvalue 1 is the 0-based position of the next item.
-template <typename Count, typename Push>
-int step(lua_State* L, const char* name, Count&& count, Push&& push) {
-  return guarded(L, name, [&] {
-    const Model& model = context_of(L).model();
-    const auto next = static_cast<size_t>(lua_tointeger(L, lua_upvalueindex(1)));
-    if (next >= count(model)) return 0;
-    lua_pushinteger(L, static_cast<lua_Integer>(next + 1));
-    lua_replace(L, lua_upvalueindex(1));
-    push(L, model, next);
-    return 1;
-  });
-}
-
 int next_block(lua_State* L) {
-  return step(
+  return iterator_step(
       L, "blocks", [](const Model& m) { return m.blocks().blocks.size(); }, push_block);
 }
 
 int next_zone(lua_State* L) {
-  return step(
+  return iterator_step(
       L, "zones", [](const Model& m) { return m.mesh().zone_gp.size(); }, push_zone);
 }
 
 int next_gridpoint(lua_State* L) {
-  return step(
+  return iterator_step(
       L, "gridpoints", [](const Model& m) { return m.mesh().gp_position.size(); }, push_gridpoint);
 }
 
 int next_contact(lua_State* L) {
-  return step(
+  return iterator_step(
       L, "contacts", [](const Model& m) { return static_cast<size_t>(m.contact_count()); }, push_contact);
 }
 
@@ -284,7 +277,8 @@ const Command& info_command() {
       .run = run_info,
       .returns =
           "a table: blocks, zones, gridpoints, joint_edges, dropped_cuts, regions, "
-          "joint_sets, title, cycle (cycles run so far), time (model time [s]; static mode: "
+          "joint_sets, crack_seeds, sections (potential-crack sections), intact_sections, "
+          "cracks, shear_cracks, tension_cracks, title, cycle (cycles run so far), time (model time [s]; static mode: "
           "the cycle count), step (time step [s]), ratio (last unbalanced-force ratio), "
           "contacts (as last found: 0 until the first cycle or contact query), late_contacts "
           "(contacts found already pressed in by more than a tenth of their reach, since the "

@@ -16,6 +16,7 @@ const std::vector<const Command*>& commands() {
       &block_command(),          // cmd_geometry.cpp
       &jset_command(),           //
       &crack_command(),          //
+      &crackseed_command(),      // cmd_cracks.cpp
       &region_command(),         //
       &zone_command(),           //
       &material_command(),       // cmd_material.cpp
@@ -41,6 +42,9 @@ const std::vector<const Command*>& commands() {
       &zone_at_command(),        //
       &contacts_command(),       //
       &contact_near_command(),   //
+      &judge_command(),          // cmd_cracks.cpp
+      &cracks_command(),         //
+      &sections_command(),       //
       &plot_command(),           // cmd_plot.cpp
   };
   return table;

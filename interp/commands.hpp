@@ -19,6 +19,7 @@ const Command& model_command();
 const Command& block_command();
 const Command& jset_command();
 const Command& crack_command();
+const Command& crackseed_command();
 const Command& region_command();
 const Command& zone_command();
 const Command& material_command();
@@ -43,6 +44,9 @@ const Command& gridpoints_command();
 const Command& gp_near_command();
 const Command& zone_at_command();
 const Command& contacts_command();
+const Command& judge_command();
+const Command& cracks_command();
+const Command& sections_command();
 const Command& contact_near_command();
 const Command& plot_command();
 

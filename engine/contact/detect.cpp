@@ -216,7 +216,23 @@ bool continues_outline(const Mechanics& m, const Found& to, Vec2 p, Vec2 n_e, do
 }
 
 // Contacts of node position k: the nearest edge of each block in reach, and their lengths.
+// The stress whose traction a contact found new on edge `edge` takes: that of the section the
+// edge belongs to if it broke since the last detection (its faces were carrying it), else the
+// in-situ field (with_insitu: the first detection after insitu{}), else none.
+std::optional<Stress> traction_source(const Mechanics& m, int edge, Vec2 point, bool with_insitu) {
+  const int section = m.edge_section.empty() ? -1 : m.edge_section[static_cast<size_t>(edge)];
+  if (section >= 0) {
+    const Section& s = m.sections[static_cast<size_t>(section)];
+    if (!s.fresh) return std::nullopt;
+    const CrackView& c = m.cracks[static_cast<size_t>(s.crack)];
+    return Stress{c.sxx, c.syy, c.sxy, 0.0};
+  }
+  if (with_insitu) return insitu_here(m, point);
+  return std::nullopt;
+}
+
 std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t k, bool with_insitu) {
+  const bool with_traction = with_insitu || m.fresh_cracks;
   const ContactBoundary& cb = m.faces;
   const int node = cb.nodes[k];
   const Vec2 p = at(m, node);
@@ -260,8 +276,8 @@ std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t
     // This side's share, half; of the half edge, the part that lies over the other block.
     const double covered = covered_length(m, p, middle, to->edge);
     to->length += 0.5 * covered * std::max(0.0, -dot(n_e, to->normal));
-    if (with_insitu && covered > 0.0) {
-      if (const auto s = insitu_here(m, p + (1.0 / 3.0) * (far_end - p))) {
+    if (with_traction && covered > 0.0) {
+      if (const auto s = traction_source(m, cb.node_edges[static_cast<size_t>(i)], p + (1.0 / 3.0) * (far_end - p), with_insitu)) {
         // This side's share of the edge's consistent nodal force, half * sigma . n, for the
         // part that lies over the other block.
         to->insitu_force = to->insitu_force + 0.5 * covered * Vec2{s->xx * n_e.x + s->xy * n_e.y, s->xy * n_e.x + s->yy * n_e.y};
@@ -292,7 +308,8 @@ std::string_view to_string(ContactState state) {
   return "?";
 }
 
-ContactBoundary contact_boundary(const Mesh& mesh, const std::vector<int>& gp_node,
+ContactBoundary contact_boundary(const Mesh& mesh, const std::vector<char>& edge_glued,
+                                 const std::vector<int>& gp_node,
                                  const std::vector<double>& position) {
   ContactBoundary cb;
   cb.block_first_edge.push_back(0);
@@ -307,7 +324,7 @@ ContactBoundary contact_boundary(const Mesh& mesh, const std::vector<int>& gp_no
         e.a = gp_node[static_cast<size_t>(loop.gridpoints[i])];
         e.b = gp_node[static_cast<size_t>(loop.gridpoints[(i + 1) % count])];
         e.block = static_cast<int>(block);
-        e.touchable = !loop.edges[i].glued;
+        e.touchable = !edge_glued[cb.edges.size()];
         e.origin = loop.edges[i];
         cb.edges.push_back(e);
       }
@@ -389,6 +406,11 @@ void assign_joint_materials(Mechanics& m) {
     for (size_t r = 0; r < m.jassign.size(); ++r)
       if (jassign_selects(m.jassign[r], m.jassign_regions[r], e, m.position)) e.material = m.jassign_material[r];
   }
+  // A broken potential crack takes its own (crackseed{ after }, or the joints' there).
+  if (m.fits.after.size() == m.sections.size())
+    for (const Section& s : m.sections)
+      if (s.mode != CrackMode::none)
+        for (const int edge : s.edge) m.faces.edges[static_cast<size_t>(edge)].material = m.fits.after[static_cast<size_t>(&s - m.sections.data())];
 }
 
 bool contacts_due(const Mechanics& m, double coming_motion) {
@@ -448,7 +470,8 @@ void detect_contacts(Mechanics& m) {
       const auto old = std::lower_bound(set.list.begin(), set.list.end(), c, [](const Contact& x, const Contact& y) {
         return x.node != y.node ? x.node < y.node : x.other < y.other;
       });
-      if (old != set.list.end() && old->node == c.node && old->other == c.other) {
+      const bool kept = old != set.list.end() && old->node == c.node && old->other == c.other;
+      if (kept) {
         c.closure0 = old->closure0;
         c.dilation = old->dilation;
         c.closure = old->closure;
@@ -472,13 +495,17 @@ void detect_contacts(Mechanics& m) {
         c.intact = first && (p.cohesion > 0.0 || p.tension > 0.0);
         c.state = c.intact ? ContactState::bonded : ContactState::elastic;
       }
-      if (with_insitu && f.insitu) {
+      // A fresh crack's faces take the traction the section carried, if pressing (a crack
+      // carries no tension), on new contacts only: one that was there keeps its own force
+      // for the part it had. insitu{} sets every contact's.
+      if (f.insitu && (with_insitu || !kept)) {
         const Vec2 a = at(m, edge.a), b = at(m, edge.b);
         const Vec2 s = (1.0 / norm(b - a)) * (b - a);
         const double gap = f.gap;
         // The half traction on this side, as the contact's force on its gridpoint.
         c.sn = dot(f.insitu_force, f.normal) / c.length;
         c.fs = dot(f.insitu_force, s);
+        if (!with_insitu && c.sn < 0.0) c.sn = c.fs = 0.0;
         c.closure0 = closure_at(p, c.sn) + gap;
         c.closure = c.closure0 - gap;
         c.dilation = c.us = c.slip = 0.0;
@@ -523,6 +550,10 @@ void detect_contacts(Mechanics& m) {
   set.detected = true;
   set.as_built = false;
   if (with_insitu) set.from_insitu = false;
+  if (m.fresh_cracks) {
+    for (Section& s : m.sections) s.fresh = false;
+    m.fresh_cracks = false;
+  }
 }
 
 }  // namespace edem

@@ -7,8 +7,10 @@
 
 namespace edem {
 
-// The touchable boundary of every block, with solver nodes (m.gp_node must be set).
-ContactBoundary contact_boundary(const Mesh& mesh, const std::vector<int>& gp_node,
+// The touchable boundary of every block, with solver nodes (m.gp_node must be set); edges
+// flagged in edge_glued (per flat loop edge, crack/sections.hpp) are not touchable.
+ContactBoundary contact_boundary(const Mesh& mesh, const std::vector<char>& edge_glued,
+                                 const std::vector<int>& gp_node,
                                  const std::vector<double>& position);
 
 // Whether a jassign{} (its region resolved) selects an edge: touchable, of its kind and set,

@@ -12,16 +12,6 @@
 namespace edem {
 namespace {
 
-int joint_material_index(const Mechanics& m, const std::string& name) {
-  std::vector<std::string> names;
-  for (size_t i = 0; i < m.joint_materials.size(); ++i) {
-    if (m.joint_materials[i].name == name) return static_cast<int>(i);
-    names.push_back(m.joint_materials[i].name);
-  }
-  if (names.empty()) fail("unknown joint material '{}': no joint_material{{...}} has been defined", name);
-  fail("unknown joint material '{}'{}", name, did_you_mean(name, names));
-}
-
 // Contacts are found when cycling starts; a view before that finds them now.
 void ensure_contacts(Mechanics& m, const Mesh& mesh) {
   if (m.contacts.detected) return;
@@ -54,7 +44,7 @@ std::vector<std::string> Model::joint_material_names() const {
 
 void Model::jassign(const JassignDef& def) {
   Mechanics& m = *mechanics_;
-  const int material = joint_material_index(m, def.material);
+  const int material = index_of_name(m.joint_materials, def.material, "joint material", "joint_material{...}");
   if (mesh_.zone_count() == 0) fail("there are no contacts to assign to: zone{{...}} the blocks first");
   if (!def.kind.empty() && def.kind != "joint" && def.kind != "crack") {
     if (def.kind == "glued")

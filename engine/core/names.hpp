@@ -5,6 +5,8 @@
 #include <string_view>
 #include <vector>
 
+#include "core/error.hpp"
+
 namespace edem {
 
 // Levenshtein distance between two ASCII strings, case-insensitive.
@@ -15,5 +17,20 @@ std::string closest_name(std::string_view name, const std::vector<std::string>& 
 
 // " (did you mean 'x'?)" or "" when nothing is close.
 std::string did_you_mean(std::string_view name, const std::vector<std::string>& candidates);
+
+// The position of the item called `name` among `items` (anything with a `name`); throws
+// edem::Error "unknown <what> 'name'" with a did-you-mean hint, or, when there are none, how
+// to define one (`command`, e.g. "material{...}").
+template <typename Items>
+int index_of_name(const Items& items, std::string_view name, std::string_view what,
+                  std::string_view command) {
+  std::vector<std::string> names;
+  for (const auto& item : items) {
+    if (item.name == name) return static_cast<int>(names.size());
+    names.push_back(item.name);
+  }
+  if (names.empty()) fail("unknown {} '{}': no {} has been defined", what, name, command);
+  fail("unknown {} '{}'{}", what, name, did_you_mean(name, names));
+}
 
 }  // namespace edem

@@ -12,14 +12,6 @@
 
 namespace edem {
 
-enum class CrackMode : unsigned char { none, shear, tension };
-
-struct RockStrength {
-  double cohesion = 0.0;  // [Pa]
-  double friction = 0.0;  // [deg]
-  double tension = 0.0;   // tensile strength [Pa], >= 0
-};
-
 double shear_function(const Principal& p, const RockStrength& rock);
 double tension_function(const Principal& p, const RockStrength& rock);
 CrackMode crack_mode(const Principal& p, const RockStrength& rock);

@@ -24,7 +24,9 @@
 // result carries the zones' mean szz.
 #pragma once
 
+#include <array>
 #include <span>
+#include <vector>
 
 #include "constitutive/mohr_coulomb.hpp"
 #include "core/vec2.hpp"
@@ -41,6 +43,22 @@ struct SectionStress {
   Principal principal;  // in-plane, s1 <= s3 (compression negative: s1 the most compressive)
   bool linear = false;  // the linear terms were fitted (else: the mean of the zones)
 };
+
+// The fit is linear in the zones' stresses: the stress at the point is
+//   s = sum_k W_k (sxx_k, syy_k, sxy_k) + offset,
+// with W_k and the offset (the body force's part) fixed by the centroids alone. A solver that
+// judges a section many times computes them once.
+struct SectionWeights {
+  std::vector<std::array<double, 9>> w;  // per zone, row-major: rows sxx, syy, sxy at the point,
+                                         // columns the zone's sxx, syy, sxy
+  std::array<double, 3> offset{};        // sxx, syy, sxy [Pa]
+  bool linear = false;                   // as SectionStress::linear
+};
+
+SectionWeights section_weights(Vec2 point, std::span<const Vec2> centroids, Vec2 body_force = {});
+
+// s = sum W_k sigma_k + offset (szz: the zones' mean).
+Stress apply_weights(const SectionWeights& weights, std::span<const Stress> stresses);
 
 // The fitted stress at `point` from `zones`; `body_force` = rho g [N/m^3] (zero: none).
 SectionStress section_stress(Vec2 point, std::span<const ZoneSample> zones, Vec2 body_force = {});

@@ -47,6 +47,17 @@ struct CrackDef {
   Vec2 from, to;  // [m]
 };
 
+// Potential cracks (DESIGN.md §4): sets of parallel cuts with the intact rock's strength,
+// tied shut until a section of them fails (crack/sections.hpp).
+struct CrackSeedDef {
+  RegionRef region;            // only inside this region (empty: everywhere)
+  std::vector<double> angles;  // one set of parallel cuts per angle, from +x [deg]
+  double spacing = 1.0;        // normal distance between cuts [m]
+  Vec2 origin;                 // a point on one cut of each set [m]
+  std::string material;        // rock material whose c, phi, sigma_t judge it ("": the zone's)
+  std::string after;           // joint material its cracks take ("": the joints')
+};
+
 struct RegionDef {
   std::string name;
   Polygon polygon;    // [m]
@@ -69,6 +80,12 @@ struct ModelInfo {
   int dropped_cuts = 0;
   int regions = 0;
   int joint_sets = 0;
+  int crack_seeds = 0;      // crackseed{} inputs
+  int sections = 0;         // potential-crack sections (crack/sections.hpp)
+  int intact_sections = 0;  // of them, not yet broken
+  int cracks = 0;           // sections broken, in either mode
+  int shear_cracks = 0;
+  int tension_cracks = 0;
 };
 
 }  // namespace edem

@@ -112,6 +112,21 @@ void Model::add_crack(const CrackDef& def) {
   commit(std::move(next));
 }
 
+void Model::add_crackseed(const CrackSeedDef& def) {
+  check_geometry_open();
+  if (def.angles.empty()) fail("crackseed needs an angle: angle = a or angles = {{a1, a2}}");
+  for (double a : def.angles) check_finite(a, "angle");
+  if (!(def.spacing > 0.0) || !std::isfinite(def.spacing))
+    fail("spacing must be > 0, got {}", def.spacing);
+  check_finite(def.origin.x, "origin x");
+  check_finite(def.origin.y, "origin y");
+  if (inputs_.bases.empty()) fail("no blocks to cut: define blocks with block{{...}} first");
+  if (!def.region.empty()) resolve(def.region);  // throws for an unknown name or bad polygon
+  Inputs next = inputs_;
+  next.crack_seeds.push_back(def);
+  commit(std::move(next));
+}
+
 void Model::add_region(const RegionDef& def) {
   check_geometry_open();
   if (def.name.empty()) fail("a region needs a name");
@@ -168,6 +183,25 @@ BlockSet Model::cut(const Inputs& inputs) const {
   for (size_t i = 0; i < inputs.cracks.size(); ++i)
     input.cuts.push_back({inputs.cracks[i].from, inputs.cracks[i].to,
                           {EdgeKind::crack, -1, static_cast<int>(i), false}, -1});
+  // Potential cracks: parallel cuts as a joint set lays them, glued (tied) until they break.
+  for (size_t i = 0; i < inputs.crack_seeds.size(); ++i) {
+    const CrackSeedDef& seed = inputs.crack_seeds[i];
+    int clip = -1;
+    if (!seed.region.empty()) {
+      clip = static_cast<int>(input.clip_polygons.size());
+      input.clip_polygons.push_back(resolve_in(inputs, seed.region));
+    }
+    for (const double angle : seed.angles) {
+      JointSetDef lines;
+      lines.angle = angle;
+      lines.spacing = {seed.spacing};
+      lines.origin = seed.origin;
+      for (CutSegment cut : joint_set_traces(lines, extent, -1, clip)) {
+        cut.origin = {EdgeKind::potential, -1, static_cast<int>(i), true};
+        input.cuts.push_back(cut);
+      }
+    }
+  }
   return cut_blocks(input);
 }
 
@@ -200,6 +234,7 @@ void Model::commit(Inputs next) {
   mesh_ = std::move(mesh);
   // New zones: the mechanical commands given so far are applied to them again.
   Mechanics& m = *mechanics_;
+  m.crack_seeds = inputs_.crack_seeds;
   reset_for_mesh(m, mesh_);
   if (mesh_.zone_count() == 0) return;
   m.replaying = true;
@@ -219,6 +254,8 @@ ModelInfo Model::info() const {
   info.dropped_cuts = blocks_.dropped_cuts;
   info.regions = static_cast<int>(inputs_.regions.size());
   info.joint_sets = static_cast<int>(inputs_.joint_sets.size());
+  info.crack_seeds = static_cast<int>(inputs_.crack_seeds.size());
+  add_crack_counts(info);
   return info;
 }
 

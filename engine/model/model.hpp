@@ -37,6 +37,7 @@ class Model {
   int add_joint_set(const JointSetDef& def);  // returns the set's index (0-based)
   void add_crack(const CrackDef& def);
   void add_region(const RegionDef& def);
+  void add_crackseed(const CrackSeedDef& def);  // potential cracks (crack/sections.hpp)
   void zone(const ZoneDef& def);
 
   // Derived stores.
@@ -108,6 +109,13 @@ class Model {
   ContactView contact(int id) const;
   int contact_near(Vec2 point) const;  // -1 when there are none
   std::vector<std::string> joint_material_names() const;
+
+  // ---- Potential cracks (crack/model_cracks.cpp).
+  void judge(const JudgeDef& def);     // how and how often sections are judged
+  int section_count() const;           // potential-crack sections (known once zoned)
+  SectionView section(int id) const;   // with the fitted stress of now (prepares the model)
+  int crack_count() const;             // sections broken so far
+  const CrackView& crack(int id) const;
   std::vector<std::string> material_names() const;
 
  private:
@@ -121,6 +129,7 @@ class Model {
     std::vector<BlockDef> bases;
     std::vector<JointSetDef> joint_sets;
     std::vector<CrackDef> cracks;
+    std::vector<CrackSeedDef> crack_seeds;
     std::vector<RegionDef> regions;
     std::vector<ZoneRequest> zone_requests;
   };
@@ -134,6 +143,7 @@ class Model {
   void check_geometry_open() const;  // throws once cycling has begun
   SolveResult run(long max_cycles, double target_ratio);  // target <= 0: no ratio stop
   Polygon resolve_in(const Inputs& inputs, const RegionRef& ref) const;
+  void add_crack_counts(ModelInfo& info) const;
 
   ModelDef def_;
   Inputs inputs_;

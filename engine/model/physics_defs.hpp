@@ -176,6 +176,50 @@ struct ZoneView {
   std::string material;  // "" when none assigned
 };
 
+// How a potential-crack section broke (crack/criteria.hpp).
+enum class CrackMode : unsigned char { none, shear, tension };
+
+// The intact rock's strength that judges a section.
+struct RockStrength {
+  double cohesion = 0.0;  // [Pa]
+  double friction = 0.0;  // [deg]
+  double tension = 0.0;   // tensile strength [Pa], >= 0
+};
+
+// A potential-crack section as a crack criterion sees it (judge{ criterion = ... }): the fitted
+// stress at its calculation point and the rock's strength there.
+struct SectionView {
+  int id = -1;            // 0-based section
+  Vec2 position;          // calculation point [m]
+  double angle = 0.0;     // direction of the section, [0, 180) from +x [deg]
+  double length = 0.0;    // [m]
+  double sxx = 0, syy = 0, sxy = 0;  // fitted stress at the point [Pa]
+  double s1 = 0, s3 = 0;  // in-plane principal, s1 <= s3 [Pa]
+  double sn = 0;          // normal stress on the section, compression negative [Pa]
+  double tau = 0;         // shear stress on it (along the direction `angle`) [Pa]
+  RockStrength strength;  // cohesion [Pa], friction [deg], tension [Pa]
+};
+
+// A section that broke: a new crack.
+struct CrackView {
+  int id = -1;            // 0-based, in the order they broke
+  int section = -1;       // 0-based section
+  Vec2 position;          // midpoint [m]
+  double angle = 0.0;     // [0, 180) from +x [deg]
+  double length = 0.0;    // [m]
+  CrackMode mode = CrackMode::none;
+  long cycle = 0;         // the cycle of the judgment that broke it
+  int stage = 0;          // the excavation stage then
+  double sxx = 0, syy = 0, sxy = 0;  // the fitted stress that broke it [Pa]
+};
+
+// How sections are judged: every `every` cycles, by the built-in criteria (crack/criteria.hpp)
+// or by `criterion`.
+struct JudgeDef {
+  long every = 10;
+  std::function<CrackMode(const SectionView&)> criterion;  // empty: built in
+};
+
 // A history: a quantity sampled every `every` cycles.
 struct HistoryDef {
   std::string name;

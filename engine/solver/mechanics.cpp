@@ -81,23 +81,9 @@ std::vector<std::string> Model::material_names() const {
   return names;
 }
 
-namespace {
-
-int material_index(const Mechanics& m, const std::string& name) {
-  std::vector<std::string> names;
-  for (size_t i = 0; i < m.materials.size(); ++i) {
-    if (m.materials[i].name == name) return static_cast<int>(i);
-    names.push_back(m.materials[i].name);
-  }
-  if (names.empty()) fail("unknown material '{}': no material{{...}} has been defined", name);
-  fail("unknown material '{}'{}", name, did_you_mean(name, names));
-}
-
-}  // namespace
-
 void Model::assign(const AssignDef& def) {
   Mechanics& m = *mechanics_;
-  const int material = material_index(m, def.material);
+  const int material = index_of_name(m.materials, def.material, "material", "material{...}");
   if (mesh_.zone_count() == 0) fail("there are no zones to assign to: zone{{...}} the blocks first");
   std::vector<int> zones;
   if (def.region.empty()) {
@@ -315,13 +301,14 @@ const std::vector<std::string>& Model::history_point_quantities() {
 
 const std::vector<std::string>& Model::history_model_quantities() {
   static const std::vector<std::string> names{"ratio", "time",    "kinetic",  "cycle",
-                                              "contacts", "slipping", "open", "max_slip"};
+                                              "contacts", "slipping", "open", "max_slip",
+                                              "cracks", "shear_cracks", "tension_cracks"};
   return names;
 }
 
 std::string Model::history_unit(std::string_view quantity) {
   if (quantity == "ratio" || quantity == "cycle" || quantity == "contacts" ||
-      quantity == "slipping" || quantity == "open")
+      quantity == "slipping" || quantity == "open" || quantity.ends_with("cracks"))
     return "-";
   if (quantity == "time") return "s";
   if (quantity == "kinetic") return "J/m";
@@ -381,6 +368,16 @@ std::function<double()> Model::history_sampler(std::string_view quantity,
     if (quantity == "time") return [m] { return m->info.time; };
     if (quantity == "kinetic") return [m] { return m->info.kinetic; };
     if (quantity == "cycle") return [m] { return static_cast<double>(m->info.cycle); };
+    if (quantity.ends_with("cracks")) {
+      const CrackMode mode = quantity == "shear_cracks"     ? CrackMode::shear
+                             : quantity == "tension_cracks" ? CrackMode::tension
+                                                            : CrackMode::none;
+      return [m, mode] {
+        if (mode == CrackMode::none) return static_cast<double>(m->cracks.size());
+        return static_cast<double>(std::count_if(m->cracks.begin(), m->cracks.end(),
+                                                 [mode](const CrackView& c) { return c.mode == mode; }));
+      };
+    }
     return [m, q = std::string(quantity)] { return contact_statistic(*m, q); };
   }
   if (!at) fail("history quantity '{}' needs at = {{x, y}}", quantity);

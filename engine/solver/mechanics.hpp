@@ -19,6 +19,7 @@
 #include "constitutive/mohr_coulomb.hpp"
 #include "contact/contacts.hpp"
 #include "contact/joint_law.hpp"
+#include "crack/sections.hpp"
 #include "geom/mesh.hpp"
 #include "model/physics_defs.hpp"
 
@@ -119,7 +120,19 @@ struct Mechanics {
   ContactBoundary faces;   // the touchable block boundaries (per mesh)
   ContactSet contacts;
 
+  // ---- potential cracks (crack/sections.hpp, crack/judge.hpp)
+  std::vector<CrackSeedDef> crack_seeds;  // the model's crackseed{} inputs
+  std::vector<Section> sections;
+  std::vector<int> edge_section;          // per flat loop edge: its section, or -1
+  std::vector<char> edge_glued;           // per flat loop edge: ties its blocks now
+  std::vector<CrackView> cracks;          // in the order they broke
+  JudgeDef judge;
+  int stage = 0;                          // excavation stage (0: before any)
+  bool fresh_cracks = false;              // broken since the last contact detection
+
   // ---- derived by prepare()
+  SectionFits fits;
+  bool keep_fits = false;              // the next prepare() keeps them (only nodes changed)
   bool dirty = true;
   std::vector<ZoneGeometry> geometry;  // per mesh zone
   std::vector<int> active;             // mesh zones that are cycled (material not null)

@@ -10,6 +10,8 @@
 
 #include "core/error.hpp"
 #include "contact/detect.hpp"
+#include "crack/judge.hpp"
+#include "solver/loads.hpp"
 #include "solver/zone_groups.hpp"
 
 namespace edem {
@@ -23,19 +25,20 @@ int find_root(std::vector<int>& parent, int i) {
   return i;
 }
 
-// Mesh gridpoint -> node: gridpoints at the two ends of the same glued segment, seen from the
-// blocks on either side, become one node.
-std::vector<int> merge_glued(const Mesh& mesh, int& node_count) {
+// Mesh gridpoint -> node: gridpoints at the two ends of the same glued segment (edge_glued, per
+// flat loop edge), seen from the blocks on either side, become one node.
+std::vector<int> merge_glued(const Mesh& mesh, const std::vector<char>& edge_glued, int& node_count) {
   const int n = mesh.gp_count();
   std::vector<int> parent(static_cast<size_t>(n));
   for (int i = 0; i < n; ++i) parent[static_cast<size_t>(i)] = i;
   using Key = std::pair<std::pair<double, double>, std::pair<double, double>>;
   std::map<Key, std::pair<int, int>> first_side;  // segment -> its gridpoints (a, b)
+  size_t flat = 0;
   for (const auto& loops : mesh.block_boundary) {
     for (const BoundaryLoop& loop : loops) {
       const size_t count = loop.gridpoints.size();
-      for (size_t i = 0; i < count; ++i) {
-        if (!loop.edges[i].glued) continue;
+      for (size_t i = 0; i < count; ++i, ++flat) {
+        if (!edge_glued[flat]) continue;
         const int a = loop.gridpoints[i], b = loop.gridpoints[(i + 1) % count];
         Vec2 pa = mesh.gp_position[static_cast<size_t>(a)];
         Vec2 pb = mesh.gp_position[static_cast<size_t>(b)];
@@ -57,6 +60,19 @@ std::vector<int> merge_glued(const Mesh& mesh, int& node_count) {
     gp_node[static_cast<size_t>(i)] = node;
   }
   return gp_node;
+}
+
+// The outer boundary segments of the mesh (block{} outlines), with their nodes.
+std::vector<BoundarySegment> outer_boundary(const Mesh& mesh, const std::vector<int>& gp_node) {
+  std::vector<BoundarySegment> boundary;
+  for (const auto& loops : mesh.block_boundary)
+    for (const BoundaryLoop& loop : loops)
+      for (size_t i = 0; i < loop.gridpoints.size(); ++i)
+        if (loop.edges[i].kind == EdgeKind::boundary)
+          boundary.push_back({gp_node[static_cast<size_t>(loop.gridpoints[i])],
+                              gp_node[static_cast<size_t>(loop.gridpoints[(i + 1) % loop.gridpoints.size()])],
+                              false, {}, {}});
+  return boundary;
 }
 
 ZoneGeometry zone_geometry(const Mechanics& m, const Mesh& mesh, int zone) {
@@ -217,7 +233,14 @@ void reset_for_mesh(Mechanics& m, const Mesh& mesh) {
   m.stress.assign(zones, Stress{});
   m.mean_stress_ref.assign(zones, 0.0);
   m.zone_state.assign(zones, 0);
-  m.gp_node = merge_glued(mesh, m.node_count);
+  SectionLayout layout = find_sections(mesh);
+  m.sections = std::move(layout.sections);
+  m.edge_section = std::move(layout.edge_section);
+  m.edge_glued = std::move(layout.edge_glued);
+  m.cracks.clear();
+  m.fresh_cracks = false;
+  m.fits = SectionFits{};
+  m.gp_node = merge_glued(mesh, m.edge_glued, m.node_count);
   const size_t dofs = 2 * static_cast<size_t>(m.node_count);
   m.position.assign(dofs, 0.0);
   m.node_block.assign(static_cast<size_t>(m.node_count), -1);
@@ -233,19 +256,66 @@ void reset_for_mesh(Mechanics& m, const Mesh& mesh) {
   m.force.assign(dofs, 0.0);
   m.load.assign(dofs, 0.0);
   m.fix.assign(static_cast<size_t>(m.node_count), 0);
-  m.boundary.clear();
-  for (const auto& loops : mesh.block_boundary)
-    for (const BoundaryLoop& loop : loops)
-      for (size_t i = 0; i < loop.gridpoints.size(); ++i)
-        if (loop.edges[i].kind == EdgeKind::boundary)
-          m.boundary.push_back({m.gp_node[static_cast<size_t>(loop.gridpoints[i])],
-                                m.gp_node[static_cast<size_t>(loop.gridpoints[(i + 1) % loop.gridpoints.size()])],
-                                false, {}, {}});
-  m.faces = contact_boundary(mesh, m.gp_node, m.position);
+  m.boundary = outer_boundary(mesh, m.gp_node);
+  m.faces = contact_boundary(mesh, m.edge_glued, m.gp_node, m.position);
   m.contacts = ContactSet{};
   m.geometry.resize(zones);
   for (size_t z = 0; z < zones; ++z) m.geometry[z] = zone_geometry(m, mesh, static_cast<int>(z));
   m.insitu.clear();
+  m.dirty = true;
+}
+
+void reconnect(Mechanics& m, const Mesh& mesh) {
+  int count = 0;
+  const std::vector<int> fresh = merge_glued(mesh, m.edge_glued, count);
+  // Ties are only ever released, so each new node lies within one old node: the first part of
+  // an old node (in gridpoint order) keeps its number, the others are numbered after the old.
+  const size_t old_count = static_cast<size_t>(m.node_count);
+  std::vector<int> number(static_cast<size_t>(count), -1), source;
+  std::vector<char> kept(old_count, 0);
+  std::vector<int> gp_node(m.gp_node.size());
+  for (size_t gp = 0; gp < gp_node.size(); ++gp) {
+    int& id = number[static_cast<size_t>(fresh[gp])];
+    if (id < 0) {
+      const int old = m.gp_node[gp];
+      if (!kept[static_cast<size_t>(old)]) {
+        kept[static_cast<size_t>(old)] = 1;
+        id = old;
+      } else {
+        id = static_cast<int>(old_count + source.size());
+        source.push_back(old);
+      }
+    }
+    gp_node[gp] = id;
+  }
+  if (source.empty()) return;
+  // A new node starts where its old node was, moving with it.
+  for (const int old : source) {
+    const size_t o = static_cast<size_t>(old);
+    for (std::vector<double>* v : {&m.position, &m.u, &m.v, &m.origin, &m.force, &m.load}) {
+      v->push_back((*v)[2 * o]);
+      v->push_back((*v)[2 * o + 1]);
+    }
+    m.fix.push_back(m.fix[o]);
+    m.node_block.push_back(m.node_block[o]);
+  }
+  for (size_t gp = 0; gp < gp_node.size(); ++gp)
+    if (gp_node[gp] >= static_cast<int>(old_count)) m.node_block[static_cast<size_t>(gp_node[gp])] = mesh.gp_block[gp];
+  m.gp_node = std::move(gp_node);
+  m.node_count = static_cast<int>(old_count + source.size());
+  // Outer boundary segments keep their loads, now on the nodes of their own side.
+  std::vector<BoundarySegment> boundary = outer_boundary(mesh, m.gp_node);
+  for (size_t i = 0; i < boundary.size(); ++i) {
+    boundary[i].loaded = m.boundary[i].loaded;
+    boundary[i].at_a = m.boundary[i].at_a;
+    boundary[i].at_b = m.boundary[i].at_b;
+  }
+  m.boundary = std::move(boundary);
+  lump_boundary_loads(m);
+  m.faces = contact_boundary(mesh, m.edge_glued, m.gp_node, m.position);
+  for (int z = 0; z < mesh.zone_count(); ++z) m.geometry[static_cast<size_t>(z)] = zone_geometry(m, mesh, z);
+  m.contacts.detected = false;
+  m.keep_fits = true;
   m.dirty = true;
 }
 
@@ -268,6 +338,8 @@ void prepare(Mechanics& m, const Mesh& mesh) {
 
   m.block_live.assign(mesh.block_boundary.size(), 0);
   for (const int z : m.active) m.block_live[static_cast<size_t>(mesh.zone_block[static_cast<size_t>(z)])] = 1;
+  if (!m.keep_fits) fit_sections(m, mesh);  // before the joint materials: cracks take `after`
+  m.keep_fits = false;
   assign_joint_materials(m);
   m.contacts.detected = false;  // materials or zones may have changed
 

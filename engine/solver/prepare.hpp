@@ -10,6 +10,11 @@ namespace edem {
 // state arrays, outer boundary segments. Materials, gravity and settings are kept from `old`.
 void reset_for_mesh(Mechanics& m, const Mesh& mesh);
 
+// After sections broke (m.edge_glued changed): gridpoints no longer tied become nodes of their
+// own, numbered after the existing ones, which keep their numbers; each starts with the state
+// of the node it leaves. Rebuilds what refers to nodes and marks the model dirty.
+void reconnect(Mechanics& m, const Mesh& mesh);
+
 // Recomputes the derived arrays (active zones, masses, time step, loads, partition) if
 // m.dirty. Throws edem::Error when the model cannot be cycled (no zones, a zone without
 // material, dynamic mode with zero density, a forced step at or above the critical step is

@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "contact/detect.hpp"
+#include "crack/judge.hpp"
 #include "solver/cycle.hpp"
 #include "solver/prepare.hpp"
 
@@ -114,14 +115,23 @@ void adapt_damping(Mechanics& m, const Measure& measure) {
   m.adaptive.c = std::min(2.0 * std::sqrt(omega2), 2.0 / m.step);
 }
 
+// Sections are judged while any is intact.
+bool judging(const Mechanics& m) {
+  return static_cast<long>(m.cracks.size()) < static_cast<long>(m.sections.size());
+}
+
 long next_due(const Mechanics& m, long cycle) {
   long due = cycle + kMeasureInterval - cycle % kMeasureInterval;
   for (const Callback& c : m.callbacks) due = std::min(due, (cycle / c.every + 1) * c.every);
   for (const History& h : m.histories) due = std::min(due, (cycle / h.every + 1) * h.every);
+  if (judging(m)) due = std::min(due, (cycle / m.judge.every + 1) * m.judge.every);
   return due;
 }
 
-void run_due(Mechanics& m, long cycle) {
+// Judgment first, so that histories and callbacks of this cycle see its cracks. Returns whether
+// sections broke.
+bool run_due(Mechanics& m, const Mesh& mesh, long cycle) {
+  const bool broke = judging(m) && cycle % m.judge.every == 0 && judge_sections(m, mesh) > 0;
   for (History& h : m.histories)
     if (cycle % h.every == 0) {
       const double value = h.sample();
@@ -139,6 +149,7 @@ void run_due(Mechanics& m, long cycle) {
     const auto fn = it->fn;  // a copy: the callback may cancel itself
     fn(cycle);
   }
+  return broke;
 }
 
 void start_adaptive(Mechanics& m) {
@@ -200,8 +211,9 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
     m.info.ratio = measure.applied > 0.0 ? measure.unbalanced / measure.applied : 0.0;
     watch(m, mesh, measure, static_cast<int>(batch));
     if (m.settings.damping == Damping::adaptive) adapt_damping(m, measure);
-    run_due(m, m.info.cycle);
-    if (target_ratio > 0.0 && m.info.ratio <= target_ratio) {
+    // A model that has just cracked is not in equilibrium, whatever the ratio said before.
+    const bool cracked = run_due(m, mesh, m.info.cycle);
+    if (target_ratio > 0.0 && m.info.ratio <= target_ratio && !cracked) {
       result.converged = true;
       break;
     }

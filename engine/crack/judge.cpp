@@ -1,0 +1,210 @@
+#include "crack/judge.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "contact/detect.hpp"
+#include "core/error.hpp"
+#include "core/names.hpp"
+#include "crack/section_stress.hpp"
+#include "solver/prepare.hpp"
+
+namespace edem {
+namespace {
+
+// Up to this many zones each side are fitted (the seed uses four).
+constexpr size_t kZonesPerSide = 4;
+
+// Per mesh gridpoint (CSR): the active zones at it.
+struct GridpointZones {
+  std::vector<int> first, zones;
+};
+
+GridpointZones gridpoint_zones(const Mechanics& m, const Mesh& mesh) {
+  GridpointZones gz;
+  gz.first.assign(static_cast<size_t>(mesh.gp_count()) + 1, 0);
+  for (const int z : m.active)
+    for (const int gp : mesh.zone_gp[static_cast<size_t>(z)]) ++gz.first[static_cast<size_t>(gp) + 1];
+  for (size_t i = 1; i < gz.first.size(); ++i) gz.first[i] += gz.first[i - 1];
+  gz.zones.resize(static_cast<size_t>(gz.first.back()));
+  std::vector<int> fill(gz.first.begin(), gz.first.end() - 1);
+  for (const int z : m.active)
+    for (const int gp : mesh.zone_gp[static_cast<size_t>(z)])
+      gz.zones[static_cast<size_t>(fill[static_cast<size_t>(gp)]++)] = z;
+  return gz;
+}
+
+// The active zones of one face nearest the point, among those at the section's ends.
+std::vector<int> side_zones(const Mesh& mesh, const GridpointZones& gz, const Section& s, int side) {
+  std::vector<int> zones;
+  for (const int gp : {s.a[static_cast<size_t>(side)], s.b[static_cast<size_t>(side)]})
+    for (int i = gz.first[static_cast<size_t>(gp)]; i < gz.first[static_cast<size_t>(gp) + 1]; ++i)
+      zones.push_back(gz.zones[static_cast<size_t>(i)]);
+  std::sort(zones.begin(), zones.end());
+  zones.erase(std::unique(zones.begin(), zones.end()), zones.end());
+  const auto distance = [&](int z) { return norm(mesh.zone_centroid(z) - s.point); };
+  std::stable_sort(zones.begin(), zones.end(), [&](int x, int y) { return distance(x) < distance(y); });
+  if (zones.size() > kZonesPerSide) zones.resize(kZonesPerSide);
+  return zones;
+}
+
+RockStrength strength_of(const Mechanics& m, int material, int seed, Vec2 at) {
+  const MaterialDef& def = m.materials[static_cast<size_t>(material)];
+  if (def.model != MaterialModel::mohr)
+    fail("crackseed {}: the rock at ({:.6g}, {:.6g}) is of material '{}', which has no strength "
+         "({}); give crackseed{{ material = ... }} a mohr_coulomb material whose cohesion, "
+         "friction and tension judge it",
+         seed + 1, at.x, at.y, def.name, def.model == MaterialModel::null ? "null" : "elastic");
+  return {def.cohesion, def.friction, def.tension};
+}
+
+// The joint material of the cracks of section s: crackseed{ after }, else the one jassign{}
+// gives joints (of no particular set) there.
+int after_material(const Mechanics& m, const Section& s) {
+  const CrackSeedDef& seed = m.crack_seeds[static_cast<size_t>(s.seed)];
+  if (!seed.after.empty())
+    return index_of_name(m.joint_materials, seed.after, "joint material", "joint_material{...}");
+  ContactEdge as_joint;
+  as_joint.a = m.gp_node[static_cast<size_t>(s.a[0])];
+  as_joint.b = m.gp_node[static_cast<size_t>(s.b[0])];
+  as_joint.touchable = true;
+  as_joint.origin = {EdgeKind::joint, -1, -1, false};
+  int material = -1;
+  for (size_t r = 0; r < m.jassign.size(); ++r)
+    if (jassign_selects(m.jassign[r], m.jassign_regions[r], as_joint, m.position)) material = m.jassign_material[r];
+  if (material < 0)
+    fail("crackseed {}: a crack at ({:.6g}, {:.6g}) would have no joint material: give "
+         "crackseed{{ after = ... }} or a jassign{{...}} for joints there",
+         s.seed + 1, s.point.x, s.point.y);
+  return material;
+}
+
+Stress fitted_stress(const Mechanics& m, int section) {
+  const SectionFits& f = m.fits;
+  const size_t i = static_cast<size_t>(section);
+  Stress s;
+  double out[3] = {f.offset[i][0], f.offset[i][1], f.offset[i][2]};
+  const int first = f.first[i], last = f.first[i + 1];
+  for (int k = first; k < last; ++k) {
+    const Stress& z = m.stress[static_cast<size_t>(f.zone[static_cast<size_t>(k)])];
+    const auto& w = f.weight[static_cast<size_t>(k)];
+    out[0] += w[0] * z.xx + w[1] * z.yy + w[2] * z.xy;
+    out[1] += w[3] * z.xx + w[4] * z.yy + w[5] * z.xy;
+    out[2] += w[6] * z.xx + w[7] * z.yy + w[8] * z.xy;
+    s.zz += z.zz;
+  }
+  s.xx = out[0], s.yy = out[1], s.xy = out[2];
+  if (last > first) s.zz /= static_cast<double>(last - first);
+  return s;
+}
+
+SectionView view_of(const Mechanics& m, int section, const Stress& s) {
+  const Section& sec = m.sections[static_cast<size_t>(section)];
+  SectionView v;
+  v.id = section;
+  v.position = sec.point;
+  v.angle = sec.angle;
+  v.length = sec.length;
+  v.sxx = s.xx, v.syy = s.yy, v.sxy = s.xy;
+  const Principal p = in_plane_principal(s);
+  v.s1 = p.s1, v.s3 = p.s3;
+  const double a = sec.angle * std::numbers::pi / 180.0;
+  const Vec2 t{std::cos(a), std::sin(a)}, n{-t.y, t.x};
+  const Vec2 sn{s.xx * n.x + s.xy * n.y, s.xy * n.x + s.yy * n.y};
+  v.sn = dot(sn, n);
+  v.tau = dot(sn, t);
+  v.strength = m.fits.strength[static_cast<size_t>(section)];
+  return v;
+}
+
+}  // namespace
+
+void fit_sections(Mechanics& m, const Mesh& mesh) {
+  SectionFits f;
+  const size_t count = m.sections.size();
+  f.first.assign(count + 1, 0);
+  f.offset.assign(count, {});
+  f.strength.assign(count, {});
+  f.after.assign(count, -1);
+  if (count == 0) {
+    m.fits = std::move(f);
+    return;
+  }
+  const GridpointZones gz = gridpoint_zones(m, mesh);
+  for (size_t i = 0; i < count; ++i) {
+    const Section& s = m.sections[i];
+    const CrackSeedDef& seed = m.crack_seeds[static_cast<size_t>(s.seed)];
+    std::vector<int> zones = side_zones(mesh, gz, s, 0);
+    for (const int z : side_zones(mesh, gz, s, 1)) zones.push_back(z);
+    if (!zones.empty()) {
+      // The body force of the rock at the point, rho g, for the fit's equilibrium.
+      const int own = m.zone_material[static_cast<size_t>(zones.front())];
+      const Vec2 body = m.params[static_cast<size_t>(own)].density * m.gravity;
+      std::vector<Vec2> centroids;
+      for (const int z : zones) centroids.push_back(mesh.zone_centroid(z));
+      SectionWeights w = section_weights(s.point, centroids, body);
+      f.linear += w.linear ? 1 : 0;
+      f.offset[i] = w.offset;
+      for (size_t k = 0; k < zones.size(); ++k) {
+        f.zone.push_back(zones[k]);
+        f.weight.push_back(w.w[k]);
+      }
+      const int rock = seed.material.empty()
+                           ? own
+                           : index_of_name(m.materials, seed.material, "material", "material{...}");
+      f.strength[i] = strength_of(m, rock, s.seed, s.point);
+      f.after[i] = after_material(m, s);
+    }
+    f.first[i + 1] = static_cast<int>(f.zone.size());
+  }
+  m.fits = std::move(f);
+}
+
+SectionView section_view(const Mechanics& m, int section) {
+  return view_of(m, section, fitted_stress(m, section));
+}
+
+int judge_sections(Mechanics& m, const Mesh& mesh) {
+  struct Failed {
+    int section;
+    CrackMode mode;
+    Stress stress;
+  };
+  std::vector<Failed> failed;
+  if (m.fits.first.size() != m.sections.size() + 1) return 0;  // not prepared
+  for (size_t i = 0; i < m.sections.size(); ++i) {
+    if (m.sections[i].mode != CrackMode::none || m.fits.first[i] == m.fits.first[i + 1]) continue;
+    const Stress s = fitted_stress(m, static_cast<int>(i));
+    CrackMode mode = CrackMode::none;
+    if (m.judge.criterion)
+      mode = m.judge.criterion(view_of(m, static_cast<int>(i), s));
+    else
+      mode = crack_mode(in_plane_principal(s), m.fits.strength[i]);
+    if (mode != CrackMode::none) failed.push_back({static_cast<int>(i), mode, s});
+  }
+  if (failed.empty()) return 0;
+  for (const Failed& f : failed) {
+    Section& s = m.sections[static_cast<size_t>(f.section)];
+    s.mode = f.mode;
+    s.crack = static_cast<int>(m.cracks.size());
+    s.fresh = true;
+    for (const int edge : s.edge) m.edge_glued[static_cast<size_t>(edge)] = 0;
+    CrackView c;
+    c.id = s.crack;
+    c.section = f.section;
+    c.position = s.point;
+    c.angle = s.angle;
+    c.length = s.length;
+    c.mode = f.mode;
+    c.cycle = m.info.cycle;
+    c.stage = m.stage;
+    c.sxx = f.stress.xx, c.syy = f.stress.yy, c.sxy = f.stress.xy;
+    m.cracks.push_back(c);
+  }
+  m.fresh_cracks = true;
+  reconnect(m, mesh);
+  return static_cast<int>(failed.size());
+}
+
+}  // namespace edem
