@@ -199,10 +199,17 @@ std::function<double()> lua_sampler(lua_State* L, int index, const std::string& 
 
 std::function<CrackMode(const SectionView&)> lua_criterion(lua_State* L, int index) {
   auto fn = std::make_shared<const LuaRef>(L, index);
-  return [fn](const SectionView& section) {
+  push_section(L, SectionView{});
+  auto view = std::make_shared<const LuaRef>(L, -1);
+  lua_pop(L, 1);
+  return [fn, view](const SectionView& section) {
     const std::shared_ptr<const LuaRef> keep = fn;
-    const auto push = [&section](lua_State* T) {
-      push_section(T, section);
+    const auto push = [&section, &view](lua_State* T) {
+      lua_rawgeti(T, LUA_REGISTRYINDEX, view->ref());
+      lua_getmetatable(T, -1);
+      lua_getfield(T, -1, "__index");
+      set_section_fields(T, section);
+      lua_pop(T, 2);
       return 1;
     };
     const Call done = call(*keep, push, 1, "judge", "the criterion");

@@ -31,10 +31,14 @@ std::function<double()> lua_sampler(lua_State* L, int index, const std::string& 
 
 // judge{ criterion = f }: the function at `index` called as f(section) with a read-only view of
 // an intact section; it returns nil, "shear" or "tension" (anything else is an error that
-// names the function's definition).
+// names the function's definition). One view is made once and refilled for every call (a
+// table per call would cost more than the criterion): it is valid during the call only.
 std::function<CrackMode(const SectionView&)> lua_criterion(lua_State* L, int index);
 
-// Pushes a read-only table of a section (the criterion's argument, and sections()).
+// Pushes a read-only table of a section (the criterion's argument, and sections()): an empty
+// proxy whose metatable's __index holds the fields.
 void push_section(lua_State* L, const SectionView& section);
+// Sets the fields of a section on the table at the top of the stack.
+void set_section_fields(lua_State* L, const SectionView& section);
 
 }  // namespace edem

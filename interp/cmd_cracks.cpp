@@ -94,10 +94,7 @@ int refuse_write(lua_State* L) {
 
 }  // namespace
 
-void push_section(lua_State* L, const SectionView& s) {
-  lua_createtable(L, 0, 0);  // the proxy the script sees
-  lua_createtable(L, 0, 2);  // its metatable
-  lua_createtable(L, 0, 16);  // the fields
+void set_section_fields(lua_State* L, const SectionView& s) {
   set_field(L, "id", s.id + 1);
   set_field(L, "x", s.position.x);
   set_field(L, "y", s.position.y);
@@ -113,9 +110,18 @@ void push_section(lua_State* L, const SectionView& s) {
   set_field(L, "cohesion", s.strength.cohesion);
   set_field(L, "friction", s.strength.friction);
   set_field(L, "tension", s.strength.tension);
+}
+
+void push_section(lua_State* L, const SectionView& s) {
+  lua_createtable(L, 0, 0);   // the proxy the script sees
+  lua_createtable(L, 0, 3);   // its metatable
+  lua_createtable(L, 0, 16);  // the fields
+  set_section_fields(L, s);
   lua_setfield(L, -2, "__index");
   lua_pushcfunction(L, refuse_write);
   lua_setfield(L, -2, "__newindex");
+  lua_pushboolean(L, 0);
+  lua_setfield(L, -2, "__metatable");  // getmetatable() cannot reach the fields either
   lua_setmetatable(L, -2);
 }
 

@@ -35,7 +35,11 @@ const Command& plot_command() {
                "",
                any_value,
                R"({"blocks", "joints"})",
-               "layers to draw, in any order",
+               "layers to draw, in any order: regions (named regions, filled), zones (triangle "
+               "edges), blocks (outlines), joints (edges by origin: joint sets coloured, crack{} "
+               "traces red, region outlines, potential cracks dotted, the boundary thick), cracks "
+               "(crack{} traces, and the new cracks as their sections: tension red, shear blue, "
+               "counted in the legend)",
                {},
                plot_layers},
               {"size", Type::int_pair, "px", between(kPlotMinSize, kPlotMaxSize), "{1200, 900}",

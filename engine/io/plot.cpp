@@ -13,6 +13,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <numbers>
 #include <optional>
 #include <string_view>
 #include <unordered_set>
@@ -243,6 +244,7 @@ constexpr std::array kRegionColours{rgb(0xb3cde3), rgb(0xfbb4ae), rgb(0xccebc5),
                                     rgb(0xfed9a6), rgb(0xffffcc), rgb(0xe5d8bd), rgb(0xfddaec)};
 constexpr Rgb kInk = rgb(0x202020);
 constexpr Rgb kCrack = rgb(0xd62728);
+constexpr Rgb kShearCrack = rgb(0x1a35d4);  // deeper than joint set 1's blue, and thicker
 
 Rgb set_colour(int set) {
   return kSetColours[static_cast<std::size_t>(std::max(set, 0)) % kSetColours.size()];
@@ -287,6 +289,16 @@ std::string label_of(const EdgeClass& cls) {
       break;
   }
   return "boundary";
+}
+
+// New cracks by how they broke, as in the seed paper's Figure 9: thicker than any edge, so that
+// they read over the dotted potential crack they broke from.
+Pen crack_pen(CrackMode mode) {
+  return {mode == CrackMode::shear ? kShearCrack : kCrack, 3.2, {}};
+}
+
+std::string label_of(CrackMode mode, std::size_t count) {
+  return fmt::format("{} crack ({})", mode == CrackMode::shear ? "shear" : "tension", count);
 }
 
 const Pen kBlockPen{rgb(0x404040), 0.8, {}, false};
@@ -690,6 +702,35 @@ SurfacePtr make_surface(Format format, const fs::path& tmp, int width, int heigh
   return SurfacePtr(cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height));
 }
 
+// The new cracks of one mode, each its section's segment [m].
+struct CrackBatch {
+  CrackMode mode = CrackMode::none;
+  Polylines lines;  // one polyline per crack
+};
+
+// Drawing and legend order.
+constexpr std::array kCrackModes{CrackMode::tension, CrackMode::shear};
+
+// A crack is drawn as the section that broke: `length` along `angle` through its midpoint.
+void add_section(Polylines& lines, const CrackView& crack) {
+  const double a = crack.angle * std::numbers::pi / 180.0;
+  const Vec2 half = 0.5 * crack.length * Vec2{std::cos(a), std::sin(a)};
+  lines.begin(crack.position - half);
+  lines.add(crack.position + half);
+}
+
+// The broken potential-crack sections by mode; modes without cracks are left out.
+std::vector<CrackBatch> new_cracks_of(const Model& model) {
+  std::vector<CrackBatch> out;
+  for (const CrackMode mode : kCrackModes) {
+    CrackBatch batch{mode, {}};
+    for (int id = 0; id < model.crack_count(); ++id)
+      if (model.crack(id).mode == mode) add_section(batch.lines, model.crack(id));
+    if (!batch.lines.empty()) out.push_back(std::move(batch));
+  }
+  return out;
+}
+
 // Everything the picture needs from the model, gathered before any file is opened.
 struct Scene {
   std::string title;
@@ -700,6 +741,7 @@ struct Scene {
   Polylines zone_lines;
   Polylines block_lines;
   std::map<EdgeClass, Polylines> edges;  // joints and cracks layers
+  std::vector<CrackBatch> new_cracks;    // cracks layer
 };
 
 Scene gather(Model& model, const Layers& layers) {
@@ -729,10 +771,12 @@ Scene gather(Model& model, const Layers& layers) {
   };
   if (layers.blocks) scene.block_lines = std::move(collect_edges(set, neutral)[EdgeClass{}]);
   if (joints || cracks) scene.edges = collect_edges(set, styled);
+  if (cracks) scene.new_cracks = new_cracks_of(model);
   return scene;
 }
 
-// The edge styles drawn (block outlines and zones explain themselves).
+// The edge styles drawn (block outlines and zones explain themselves), then the new cracks
+// with their counts.
 std::vector<LegendEntry> legend_of(const Scene& scene) {
   // Boundary, joint sets in order, cracks, region outlines, potential cracks.
   auto order = [](Tier tier) {
@@ -747,6 +791,8 @@ std::vector<LegendEntry> legend_of(const Scene& scene) {
   });
   std::vector<LegendEntry> entries;
   for (const EdgeClass& cls : classes) entries.push_back({label_of(cls), pen_of(cls)});
+  for (const CrackBatch& batch : scene.new_cracks)
+    entries.push_back({label_of(batch.mode, batch.lines.starts.size()), crack_pen(batch.mode)});
   return entries;
 }
 
@@ -816,6 +862,8 @@ void render(cairo_t* cr, const Scene& scene, const Layers& layers, double width,
   p.hairlines(scene.zone_lines, view, kZonePen);
   p.stroke(scene.block_lines, view, kBlockPen);
   for (const auto& [cls, lines] : scene.edges) p.stroke(lines, view, pen_of(cls));
+  for (const CrackBatch& batch : scene.new_cracks)
+    p.stroke(batch.lines, view, crack_pen(batch.mode));
   if (layers.regions) draw_region_labels(p, scene, view);
   cairo_restore(cr);
 

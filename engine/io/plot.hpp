@@ -1,8 +1,8 @@
 // Pictures of a model with cairo: PNG, SVG or PDF chosen by the file's extension.
 //
 // The model's extent is fitted to the canvas with square metres kept square, y up, a title,
-// a legend of the edge styles drawn and a scale bar. The file is written to FILE.tmp and
-// renamed, so a failed plot never leaves a half-written picture behind.
+// a legend of the edge styles and new cracks drawn, and a scale bar. The file is written to
+// FILE.tmp and renamed, so a failed plot never leaves a half-written picture behind.
 #pragma once
 
 #include <string>
@@ -25,7 +25,8 @@ struct PlotDef {
 //   blocks   block outlines, one neutral style
 //   joints   block edges by origin: joints coloured by set, cracks red, region outlines
 //            (dashed when glued), potential cracks dotted, the boundary thick
-//   cracks   only the crack edges, red
+//   cracks   the crack{} edges, red, and the new cracks (broken potential-crack sections),
+//            each its section, thick: tension red, shear blue, with counts in the legend
 const std::vector<std::string>& plot_layers();
 
 // Smallest and largest accepted width or height [px].
