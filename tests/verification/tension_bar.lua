@@ -52,6 +52,7 @@ local function step(du, speed)
   solve{ ratio = RATIO, max_cycles = 100000 }
 end
 
+history{ "tension_cracks", every = 10 }
 print(("sections %d, zones %d"):format(info().sections, info().zones))
 local reach = TENSION * H * (1 - NU * NU) / E  -- elongation at the onset [m]
 local at_crack
@@ -77,6 +78,21 @@ end
 print(("after the crack: top up %.4g mm, stress %.3g Pa; %d contacts open, largest |fn| %.3g N/m, "
        .. "contact length %.6g m"):format(top() * 1e3, after, open, open_force, length))
 check.report("stress at the crack [Pa]", at_crack, TENSION, 0.01)
+-- The history of the crack count steps from 0 to all sections at the crack's cycle.
+local csv = os.tmpname()
+history_write(csv)
+local first_nonzero, last
+for line in io.lines(csv) do
+  local cycle, value = line:match("^([%d.e+]+),([%d.e+-]+)")
+  if cycle and tonumber(value) > 0 then
+    first_nonzero = first_nonzero or tonumber(cycle)
+    last = tonumber(value)
+  end
+end
+os.remove(csv)
+check.report("history tension_cracks: first counted at the crack's cycle", first_nonzero or -1, cracks()().cycle, 0,
+             { absolute = true })
+check.report("history tension_cracks: count", last or -1, sections, 0, { absolute = true })
 check.report("all sections broken, in tension (1 = yes)",
              (broken == sections and info().tension_cracks == sections) and 1 or 0, 1, 0, { absolute = true })
 check.report("stress once open [Pa]", after, 0, 1e-6 * TENSION, { absolute = true })
