@@ -152,6 +152,24 @@ Call call(const LuaRef& fn, Push&& push, int results, std::string_view word,
   return {L, top};
 }
 
+// A call returned the wrong thing (at the top of its thread): no line ran it, so the error
+// blames the function's definition. "LOCATION: WORD: MUST, got VALUE (while ...)".
+[[noreturn]] void fail_return(const LuaRef& fn, const Call& done, std::string_view word,
+                              const std::string& must) {
+  lua_State* T = done.L;
+  const std::string got = describe(T, -1);
+  lua_settop(T, done.top);
+  lua_rawgeti(T, LUA_REGISTRYINDEX, fn.ref());
+  lua_Debug info;
+  lua_getinfo(T, ">S", &info);
+  const Context& context = fn.context();
+  const std::string location = info.linedefined > 0
+                                   ? fmt::format("{}:{}", source_of(info), info.linedefined)
+                                   : fallback_location(context);
+  throw CallbackError(
+      fmt::format("{}: {}: {}, got {}{}", location, word, must, got, while_running(context)), {});
+}
+
 }  // namespace
 
 std::function<void(long cycle)> lua_callback(lua_State* L, int index) {
@@ -181,19 +199,7 @@ std::function<double()> lua_sampler(lua_State* L, int index, const std::string& 
       lua_settop(T, done.top);
       return value;
     }
-    const std::string got = describe(T, -1);
-    lua_settop(T, done.top);
-    // No line ran the wrong return: blame the function's definition.
-    lua_rawgeti(T, LUA_REGISTRYINDEX, keep->ref());
-    lua_Debug info;
-    lua_getinfo(T, ">S", &info);
-    const Context& context = keep->context();
-    const std::string location = info.linedefined > 0
-                                     ? fmt::format("{}:{}", source_of(info), info.linedefined)
-                                     : fallback_location(context);
-    throw CallbackError(fmt::format("{}: history: {} must return a number, got {}{}", location,
-                                    what, got, while_running(context)),
-                        {});
+    fail_return(*keep, done, "history", fmt::format("{} must return a number", what));
   };
 }
 
@@ -229,20 +235,7 @@ std::function<CrackMode(const SectionView&)> lua_criterion(lua_State* L, int ind
         return mode;
       }
     }
-    const std::string got = describe(T, -1);
-    lua_settop(T, done.top);
-    // No line ran the wrong return: blame the function's definition.
-    lua_rawgeti(T, LUA_REGISTRYINDEX, keep->ref());
-    lua_Debug info;
-    lua_getinfo(T, ">S", &info);
-    const Context& context = keep->context();
-    const std::string location = info.linedefined > 0
-                                     ? fmt::format("{}:{}", source_of(info), info.linedefined)
-                                     : fallback_location(context);
-    throw CallbackError(fmt::format("{}: judge: the criterion must return nil, \"shear\" or "
-                                    "\"tension\", got {}{}",
-                                    location, got, while_running(context)),
-                        {});
+    fail_return(*keep, done, "judge", "the criterion must return nil, \"shear\" or \"tension\"");
   };
 }
 

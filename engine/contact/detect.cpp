@@ -215,7 +215,6 @@ bool continues_outline(const Mechanics& m, const Found& to, Vec2 p, Vec2 n_e, do
   return false;
 }
 
-// Contacts of node position k: the nearest edge of each block in reach, and their lengths.
 // The stress whose traction a contact found new on edge `edge` takes: that of the section the
 // edge belongs to if it broke since the last detection (its faces were carrying it), else the
 // in-situ field (with_insitu: the first detection after insitu{}), else none.
@@ -231,6 +230,7 @@ std::optional<Stress> traction_source(const Mechanics& m, int edge, Vec2 point, 
   return std::nullopt;
 }
 
+// Contacts of node position k: the nearest edge of each block in reach, and their lengths.
 std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t k, bool with_insitu) {
   const bool with_traction = with_insitu || m.fresh_cracks;
   const ContactBoundary& cb = m.faces;
@@ -407,10 +407,10 @@ void assign_joint_materials(Mechanics& m) {
       if (jassign_selects(m.jassign[r], m.jassign_regions[r], e, m.position)) e.material = m.jassign_material[r];
   }
   // A broken potential crack takes its own (crackseed{ after }, or the joints' there).
-  if (m.fits.after.size() == m.sections.size())
-    for (const Section& s : m.sections)
-      if (s.mode != CrackMode::none)
-        for (const int edge : s.edge) m.faces.edges[static_cast<size_t>(edge)].material = m.fits.after[static_cast<size_t>(&s - m.sections.data())];
+  if (m.fits.after.size() != m.sections.size()) return;
+  for (size_t i = 0; i < m.sections.size(); ++i)
+    if (m.sections[i].mode != CrackMode::none)
+      for (const int edge : m.sections[i].edge) m.faces.edges[static_cast<size_t>(edge)].material = m.fits.after[i];
 }
 
 bool contacts_due(const Mechanics& m, double coming_motion) {
