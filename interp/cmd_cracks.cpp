@@ -31,9 +31,6 @@ int run_crackseed(lua_State*, Context& context, const Args& args) {
   if (args.has("region")) def.region = args.get<RegionRef>("region");
   if (args.has("material")) def.material = args.string("material");
   if (args.has("after")) def.after = args.string("after");
-  if (args.has("kn") || args.has("ks"))
-    fail("kn and ks: compliant potential cracks are not implemented yet; intact potential "
-         "cracks are tied shut, so a model with them deforms exactly as one without");
   context.model().add_crackseed(def);
   return 0;
 }
@@ -130,7 +127,8 @@ const Command& crackseed_command() {
       .name = "crackseed",
       .help =
           "Places potential cracks: sets of parallel cuts through intact rock, tied shut "
-          "(the model deforms exactly as without them) until a section of one fails in shear "
+          "(their faces share gridpoints: no stiffness to choose, the model deforms exactly as "
+          "without them) until a section of one fails in shear "
           "or tension (judge{}); the section then becomes a crack with a joint material. "
           "Each zone edge along a cut is a section, judged on its own.",
       .keys =
@@ -151,10 +149,6 @@ const Command& crackseed_command() {
                "the zones' own"},
               {"after", Type::string, "", any_value, kOptional,
                "the joint material of its cracks", "the one jassign{} gives joints there"},
-              {"kn", Type::number, "Pa/m", gt(0), kOptional,
-               "not implemented: intact sections are tied (see help)", "tied"},
-              {"ks", Type::number, "Pa/m", gt(0), kOptional,
-               "not implemented: intact sections are tied (see help)", "tied"},
           },
       .run = run_crackseed,
       .usage = "crackseed{ region = \"arch\", angles = {62, 118}, spacing = 4.8, after = \"joint\" }",

@@ -127,11 +127,17 @@ void fit_sections(Mechanics& m, const Mesh& mesh) {
   f.offset.assign(count, {});
   f.strength.assign(count, {});
   f.after.assign(count, -1);
+  f.body.assign(count, {});
   if (count == 0) {
     m.fits = std::move(f);
     return;
   }
   const GridpointZones gz = gridpoint_zones(m, mesh);
+  // The weights depend on the zones and the body force only: a prepare() after a boundary or a
+  // material changed keeps those of sections whose inputs are the same (after sections broke,
+  // prepare() does not call this at all: only nodes changed).
+  const SectionFits& old = m.fits;
+  const bool have_old = old.first.size() == count + 1;
   for (size_t i = 0; i < count; ++i) {
     const Section& s = m.sections[i];
     const CrackSeedDef& seed = m.crack_seeds[static_cast<size_t>(s.seed)];
@@ -141,15 +147,20 @@ void fit_sections(Mechanics& m, const Mesh& mesh) {
       // The body force of the rock at the point, rho g, for the fit's equilibrium.
       const int own = m.zone_material[static_cast<size_t>(zones.front())];
       const Vec2 body = m.params[static_cast<size_t>(own)].density * m.gravity;
-      std::vector<Vec2> centroids;
-      for (const int z : zones) centroids.push_back(mesh.zone_centroid(z));
-      SectionWeights w = section_weights(s.point, centroids, body);
-      f.linear += w.linear ? 1 : 0;
-      f.offset[i] = w.offset;
-      for (size_t k = 0; k < zones.size(); ++k) {
-        f.zone.push_back(zones[k]);
-        f.weight.push_back(w.w[k]);
+      f.body[i] = body;
+      const auto old_first = have_old ? old.zone.begin() + old.first[i] : old.zone.end();
+      const auto old_last = have_old ? old.zone.begin() + old.first[i + 1] : old.zone.end();
+      if (have_old && old.body[i] == body && std::equal(zones.begin(), zones.end(), old_first, old_last)) {
+        f.offset[i] = old.offset[i];
+        f.weight.insert(f.weight.end(), old.weight.begin() + old.first[i], old.weight.begin() + old.first[i + 1]);
+      } else {
+        std::vector<Vec2> centroids;
+        for (const int z : zones) centroids.push_back(mesh.zone_centroid(z));
+        const SectionWeights w = section_weights(s.point, centroids, body);
+        f.offset[i] = w.offset;
+        f.weight.insert(f.weight.end(), w.w.begin(), w.w.end());
       }
+      f.zone.insert(f.zone.end(), zones.begin(), zones.end());
       const int rock = seed.material.empty()
                            ? own
                            : index_of_name(m.materials, seed.material, "material", "material{...}");

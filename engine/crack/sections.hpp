@@ -42,9 +42,9 @@ struct SectionFits {
   std::vector<int> zone;                       // mesh zones
   std::vector<std::array<double, 9>> weight;   // per zone (section_stress.hpp)
   std::vector<std::array<double, 3>> offset;   // per section: the body force's part [Pa]
+  std::vector<Vec2> body;                      // per section: the body force fitted [N/m^3]
   std::vector<RockStrength> strength;          // per section
   std::vector<int> after;                      // per section: joint material once broken
-  int linear = 0;                              // sections whose fit has its linear terms
 };
 
 struct SectionLayout {
