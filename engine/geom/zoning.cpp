@@ -12,8 +12,8 @@
 // boundary gridpoints in loop order first, then interior gridpoints and zones in Z-order (only
 // glued edges merge gridpoints, later, in the solver). A block touching no other is a group of
 // one, meshed exactly as it would be alone; a group of several also gets its neighbours' rings
-// as bare constraints and its shared sharp corners
-// lopped (see insert_neighbours() and lop_sharp_corners()).
+// as bare constraints, a frame of four points around it and its shared sharp corners lopped
+// (see insert_neighbours(), insert_frame() and lop_sharp_corners()).
 #include "geom/zoning.hpp"
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -72,6 +72,9 @@ const double kShapeBoundAngle = std::asin(std::sqrt(kShapeBound)) * 180.0 / std:
 Vec2 to_vec(const Point& p) {
   return {p.x(), p.y()};
 }
+
+// A block's number in messages: from 1, as everywhere users see blocks.
+int shown(int block) { return block + 1; }
 
 // ---------------------------------------------------------------------------------------------
 // Size field, evaluated fast: polygons flattened with their bounding boxes, and a cut-off
@@ -345,24 +348,26 @@ using LevelsVisitor = CGAL::Mesh_2::Refine_edges_visitor_from_faces<FacesLevel>;
 
 void check_size_field(const SizeField& field, int block) {
   if (!(std::isfinite(field.edge) && field.edge > 0.0))
-    fail("block {}: zone edge must be a positive length, got {}", block, field.edge);
+    fail("block {}: zone edge must be a positive length, got {}", shown(block), field.edge);
   if (!(std::isfinite(field.far) && field.far >= field.edge))
-    fail("block {}: zone far size {} must be at least the edge {}", block, field.far, field.edge);
+    fail("block {}: zone far size {} must be at least the edge {}", shown(block), field.far,
+         field.edge);
   if (!(std::isfinite(field.growth) && field.growth >= 0.0))
-    fail("block {}: zone growth must be zero or positive, got {}", block, field.growth);
+    fail("block {}: zone growth must be zero or positive, got {}", shown(block), field.growth);
 }
 
 void check_ring(const Ring& ring, int block, const char* what) {
   const size_t n = ring.points.size();
-  if (n < 3) fail("block {}: its {} has {} vertices, at least 3 are needed", block, what, n);
+  if (n < 3) fail("block {}: its {} has {} vertices, at least 3 are needed", shown(block), what, n);
   if (ring.edges.size() != n)
-    fail("block {}: its {} has {} vertices but {} edge origins", block, what, n, ring.edges.size());
+    fail("block {}: its {} has {} vertices but {} edge origins", shown(block), what, n,
+         ring.edges.size());
   for (size_t i = 0; i < n; ++i) {
     const Vec2 p = ring.points[i];
     if (!std::isfinite(p.x) || !std::isfinite(p.y))
-      fail("block {}: its {} has a non-finite vertex", block, what);
+      fail("block {}: its {} has a non-finite vertex", shown(block), what);
     if (p == ring.points[(i + 1) % n])
-      fail("block {}: its {} repeats vertex ({}, {})", block, what, p.x, p.y);
+      fail("block {}: its {} repeats vertex ({}, {})", shown(block), what, p.x, p.y);
   }
 }
 
@@ -384,9 +389,9 @@ void check_block(const Block& block, const SizeField& field, int index) {
   for (const Ring& hole : block.holes) check_ring(hole, index, "hole");
   // The labelling and the boundary walk rely on the block lying left of every ring.
   if (!(ring_area(block.outer) > 0.0))
-    fail("block {}: its outer boundary must be counter-clockwise", index);
+    fail("block {}: its outer boundary must be counter-clockwise", shown(index));
   for (const Ring& hole : block.holes)
-    if (!(ring_area(hole) < 0.0)) fail("block {}: its holes must be clockwise", index);
+    if (!(ring_area(hole) < 0.0)) fail("block {}: its holes must be clockwise", shown(index));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -624,10 +629,27 @@ void insert_neighbours(Cdt& cdt, const BlockSet& blocks, const Group& group,
         for (size_t i = 0; i < handles.size(); ++i)
           cdt.insert_constraint(handles[i], handles[(i + 1) % handles.size()]);
       } catch (const Cdt::Intersection_of_constraints_exception&) {
-        fail("block {}: its boundary crosses a block glued to block {} and cannot be zoned", b,
-             group.front());
+        fail("block {}: its boundary crosses a block glued to block {} and cannot be zoned",
+             shown(b), shown(group.front()));
       }
     }
+}
+
+// Four points around everything in the CDT, so that the triangulation outside the group, too,
+// has something to follow. Where a cut ends on a straight outer edge of the model, its end point
+// is rounded a hair off that edge; rounded inside, with nothing beyond the edge, it lets Delaunay
+// join the edge's two ends outside the blocks: a sliver as thin as the rounding. A lid's end
+// (lop_point()) rounded onto either half of the edge can then land beyond the sliver's long side
+// and turn it over. A frame point lies beyond every edge of the convex hull, inside any such
+// sliver's vast circumcircle, so the outside is triangulated towards the frame instead.
+void insert_frame(Cdt& cdt) {
+  Polygon points;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    points.push_back(to_vec(v->point()));
+  const Box box = bounding_box(points);
+  const double margin = std::max(box.x1 - box.x0, box.y1 - box.y0);
+  for (const double x : {box.x0 - margin, box.x1 + margin})
+    for (const double y : {box.y0 - margin, box.y1 + margin}) cdt.insert(Point(x, y));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -741,7 +763,8 @@ std::vector<double> lop_radii(const Cdt& cdt, const std::vector<Lop>& lops,
 
 // Whether the faces around v are all counter-clockwise. A lop point is rounded off its edge by
 // a unit in the last place; next to a sliver that could turn a face over, which would leave
-// CGAL working on a broken triangulation.
+// CGAL working on a broken triangulation (insert_neighbours() and insert_frame() keep such
+// slivers off the group's outline).
 bool star_turns_left(const Cdt& cdt, VertexHandle v) {
   auto face = cdt.incident_faces(v);
   const auto first = face;
@@ -765,7 +788,7 @@ std::vector<Lop> lop_sharp_corners(Cdt& cdt, const BlockSet& blocks, const Group
     lop.b = lop_point(cdt, lop.apex, lop.back, radius[l]);
     if (!star_turns_left(cdt, lop.a) || !star_turns_left(cdt, lop.b))
       fail("block {}: zoning could not cut off its sharp corner at ({}, {}) (an internal error)",
-           group[lop.k], lop.apex->point().x(), lop.apex->point().y());
+           shown(group[lop.k]), lop.apex->point().x(), lop.apex->point().y());
     cdt.insert_constraint(lop.a, lop.b);
   }
   return lops;
@@ -793,10 +816,11 @@ void flood_block(const Cdt& cdt, FaceHandle seed, int k, const Group& group) {
   flood(seed, [&](FaceHandle face) {
     const int block = face->info().block;
     if (block == k) return false;
-    if (block >= 0) fail("blocks {} and {} overlap and cannot be zoned", group[block], group[k]);
+    if (block >= 0)
+      fail("blocks {} and {} overlap and cannot be zoned", shown(group[block]), shown(group[k]));
     if (cdt.is_infinite(face))
       fail("block {}: its rings do not enclose it (is a hole outside its outer boundary?)",
-           group[k]);
+           shown(group[k]));
     face->info().block = k;
     return true;
   });
@@ -943,8 +967,8 @@ BoundaryLoop walk_ring(const Cdt& cdt, const Ring& ring, const std::vector<Verte
     for (size_t step = 0; v != target; ++step) {
       const VertexHandle w = next_boundary_vertex(cdt, v, along, k);
       if (w == VertexHandle() || step > max_steps)
-        fail("block {}: lost the boundary after ({}, {}); the block outline is not simple", block,
-             v->point().x(), v->point().y());
+        fail("block {}: lost the boundary after ({}, {}); the block outline is not simple",
+             shown(block), v->point().x(), v->point().y());
       loop.gridpoints.push_back(number(v));
       loop.edges.push_back(ring.edges[i]);
       v = w;
@@ -1047,8 +1071,8 @@ BlockZones read_block(const Cdt& cdt, const Block& block, int k, int index,
   if (sharpest >= kShapeBoundAngle) named = group.front();
   const std::string what =
       group.size() == 1
-          ? fmt::format("block {}: zoning it", named)
-          : fmt::format("block {} and the {} {} glued to it: zoning them together", named,
+          ? fmt::format("block {}: zoning it", shown(named))
+          : fmt::format("block {} and the {} {} glued to it: zoning them together", shown(named),
                         group.size() - 1, group.size() == 2 ? "block" : "blocks");
   if (sharpest < kShapeBoundAngle)
     fail(
@@ -1069,9 +1093,9 @@ std::vector<RingHandles> insert_rings(Cdt& cdt, const BlockSet& blocks, const Gr
         rings[k].push_back(insert_ring(cdt, ring_of(block, r), static_cast<int>(k)));
     } catch (const Cdt::Intersection_of_constraints_exception&) {
       if (group.size() == 1)
-        fail("block {}: its boundary crosses itself and cannot be zoned", group[k]);
+        fail("block {}: its boundary crosses itself and cannot be zoned", shown(group[k]));
       fail("block {}: its boundary crosses itself or a block glued to it and cannot be zoned",
-           group[k]);
+           shown(group[k]));
     }
   }
   return rings;
@@ -1102,6 +1126,7 @@ void mesh_group(const BlockSet& blocks, const Group& group,
   if (group.size() > 1) {
     mark_vertices_on_other_rings(cdt);
     insert_neighbours(cdt, blocks, group, blocks_at);
+    insert_frame(cdt);
     lops = lop_sharp_corners(cdt, blocks, group, rings, size);
   }
   label_blocks(cdt, blocks, group, rings, lops);
@@ -1113,7 +1138,8 @@ void mesh_group(const BlockSet& blocks, const Group& group,
   for (auto face = cdt.finite_faces_begin(); face != cdt.finite_faces_end(); ++face) {
     // The mesher kept its own domain marks while refining; they must agree with the labels.
     if (refinable(cdt, face) != face->is_in_domain())
-      fail("block {}: zoning lost track of the block's faces (an internal error)", group.front());
+      fail("block {}: zoning lost track of the block's faces (an internal error)",
+           shown(group.front()));
     if (face->info().block >= 0) faces[face->info().block].push_back(face);
   }
   for (size_t k = 0; k < group.size(); ++k)

@@ -936,5 +936,51 @@ TEST(ZoningGlued, RandomGluedRegionsAndJointsKeepTheRules) {
   }
 }
 
+// A disc (a 96-gon, radius 0.5 m) cut by a joint set whose outermost joint leaves a sliver a
+// little narrower than the zone edge at the rim: corners of about 17 deg where the joint meets
+// the polygon's chords, a polygon vertex 0.01 m from each apex. The joint's end points are
+// rounded a hair off the chords; on the convex hull that once left a sliver face outside the
+// disc which the lid of a lopped corner turned over ("could not cut off its sharp corner").
+TEST(ZoningGlued, DiscCutNearItsRim) {
+  for (const double angle : {0.0, 90.0})
+    for (const double spacing : {0.05, 0.06, 0.07})
+      for (const double turn : {0.0, 1.875}) {
+        SCOPED_TRACE("joints at " + std::to_string(angle) + " deg, spacing " +
+                     std::to_string(spacing) + " m, vertices turned by " + std::to_string(turn) +
+                     " deg");
+        Polygon disc;
+        for (int k = 0; k < 96; ++k) {
+          const double t = (3.75 * k + turn) * kPi / 180.0;
+          disc.push_back({0.5 * std::cos(t), 0.5 * std::sin(t)});
+        }
+        CutInput input;
+        input.bases = {disc};
+        input.tolerance = 1e-9 * bounding_box(disc).diagonal();  // model{}'s default
+        for (int k = -10; k <= 10; ++k) {
+          const double c = k * spacing;
+          const Vec2 from = angle == 0.0 ? Vec2{-1, c} : Vec2{c, -1};
+          const Vec2 to = angle == 0.0 ? Vec2{1, c} : Vec2{c, 1};
+          input.cuts.push_back({from, to, {EdgeKind::joint, 0, k, false}});
+        }
+        const BlockSet blocks = cut_blocks(input);
+        const SizeField field = uniform(0.025);
+        const std::vector<const SizeField*> fields(blocks.blocks.size(), &field);
+        Mesh mesh;
+        try {
+          mesh = zone_blocks(blocks, fields);
+        } catch (const Error& error) {
+          ADD_FAILURE() << error.what();
+          continue;
+        }
+        for (int z = 0; z < mesh.zone_count(); ++z) EXPECT_GT(mesh.zone_area(z), 0.0) << z;
+        const double area = signed_area(disc);
+        EXPECT_NEAR(total_zone_area(mesh), area, 1e-9 * area);
+        for (size_t b = 0; b < blocks.blocks.size(); ++b) {
+          SCOPED_TRACE("block " + std::to_string(b));
+          check_block(mesh, blocks.blocks[b], field, static_cast<int>(b), &blocks);
+        }
+      }
+}
+
 }  // namespace
 }  // namespace edem
