@@ -36,6 +36,7 @@ int run_info(lua_State* L, Context& context, const Args&) {
   set_field(L, "cracks", info.cracks);
   set_field(L, "shear_cracks", info.shear_cracks);
   set_field(L, "tension_cracks", info.tension_cracks);
+  set_field(L, "stage", info.stage);
   set_field(L, "title", model.title());
   set_field(L, "cycle", static_cast<long long>(solver.cycle));
   set_field(L, "time", solver.time);
@@ -142,6 +143,7 @@ void push_zone(lua_State* L, const Model& model, size_t index) {
   set_field(L, "s3", view.s3);
   set_field(L, "state", zone_state_name(view.state));
   if (!view.material.empty()) set_field(L, "material", view.material);
+  if (view.excavated > 0) set_field(L, "excavated", view.excavated);
 }
 
 void push_gridpoint(lua_State* L, const Model& model, size_t index) {
@@ -278,7 +280,7 @@ const Command& info_command() {
       .returns =
           "a table: blocks, zones, gridpoints, joint_edges, dropped_cuts, regions, "
           "joint_sets, crack_seeds, sections (potential-crack sections), intact_sections, "
-          "cracks, shear_cracks, tension_cracks, title, cycle (cycles run so far), time (model time [s]; static mode: "
+          "cracks, shear_cracks, tension_cracks, stage (excavations so far), title, cycle (cycles run so far), time (model time [s]; static mode: "
           "the cycle count), step (time step [s]), ratio (last unbalanced-force ratio), "
           "contacts (as last found: 0 until the first cycle or contact query), late_contacts "
           "(contacts found already pressed in by more than a tenth of their reach, since the "
@@ -316,7 +318,8 @@ const Command& zones_command() {
           "(its block's id), region (innermost region's name or nil), sxx, syy, sxy, szz "
           "(stresses [Pa], compression negative), s1, s3 (in-plane principal stresses, s1 <= "
           "s3), state (\"elastic\", \"shear\", \"tension\", ... with \"-past\" for failure "
-          "in the past), material (name, nil when none is assigned)",
+          "in the past), material (name, nil when none is assigned), excavated (the stage "
+          "that excavated it, nil while in place)",
       .usage = "for z in zones() do total = total + z.area end",
   };
   return command;

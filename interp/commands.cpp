@@ -30,6 +30,9 @@ const std::vector<const Command*>& commands() {
       &cycle_command(),          //
       &solve_command(),          //
       &reset_command(),          //
+      &excavate_command(),       // cmd_excavation.cpp
+      &fill_command(),           //
+      &stage_command(),          //
       &every_command(),          //
       &cancel_command(),         //
       &history_command(),        // cmd_history.cpp

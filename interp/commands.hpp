@@ -49,6 +49,9 @@ const Command& cracks_command();
 const Command& sections_command();
 const Command& contact_near_command();
 const Command& plot_command();
+const Command& excavate_command();
+const Command& fill_command();
+const Command& stage_command();
 
 // Every command of the language, in reference order.
 const std::vector<const Command*>& commands();

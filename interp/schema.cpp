@@ -467,6 +467,12 @@ void check_table_keys(lua_State* L, const Command& command, int table) {
 
 void read_table(lua_State* L, const Command& command, Args& args) {
   if (lua_gettop(L) == 0 && command.bare_call) lua_newtable(L);
+  if (lua_gettop(L) == 1 && !lua_istable(L, 1) && command.item_call) {
+    lua_createtable(L, 1, 0);
+    lua_pushvalue(L, 1);
+    lua_rawseti(L, -2, 1);
+    lua_replace(L, 1);
+  }
   const int count = lua_gettop(L);
   if (count != 1 || !lua_istable(L, 1)) {
     if (count == 0) fail("expects a table, like {}", usage_of(command));

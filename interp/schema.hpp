@@ -126,6 +126,7 @@ struct Command {
   std::string_view returns = {};  // what it returns, if anything
   std::string_view usage = {};    // example calls, one a line; generated when empty
   bool bare_call = false;         // table form: f() is accepted as f{}
+  bool item_call = false;         // table form: f(x), x not a table, is accepted as f{x}
 };
 
 // A Lua function argument: its absolute stack index while the command runs (a function given

@@ -86,6 +86,7 @@ struct ModelInfo {
   int cracks = 0;           // sections broken, in either mode
   int shear_cracks = 0;
   int tension_cracks = 0;
+  int stage = 0;            // excavations so far
 };
 
 }  // namespace edem

@@ -256,6 +256,7 @@ ModelInfo Model::info() const {
   info.joint_sets = static_cast<int>(inputs_.joint_sets.size());
   info.crack_seeds = static_cast<int>(inputs_.crack_seeds.size());
   add_crack_counts(info);
+  info.stage = stage();
   return info;
 }
 

@@ -69,6 +69,11 @@ class Model {
   void set_solver(const SolverSettings& settings);
   const SolverSettings& solver_settings() const;
   void set_threads(int threads);  // OpenMP threads for cycling; 0: OpenMP's default
+  // Excavation (solver/excavation.cpp): the zones of a region turn null and the stage count
+  // goes up; fill{} gives excavated zones of a region a material again, stress-free.
+  void excavate(const ExcavateDef& def);
+  void fill(const FillDef& def);
+  int stage() const;  // excavations so far (0: none)
   // Zero displacements / velocities / plastic state flags of every gridpoint or zone.
   void reset(bool displacement, bool velocity, bool state);
 

@@ -76,6 +76,18 @@ struct AssignDef {
   RegionRef region;
 };
 
+// Excavation of a region (solver/excavation.cpp): its zones turn null, as UDEC 7 does.
+struct ExcavateDef {
+  RegionRef region;
+  long release = 0;  // cycles over which the excavated zones' forces are taken off (0: at once)
+};
+
+// Backfill of excavated zones in a region with a material, stress-free.
+struct FillDef {
+  RegionRef region;
+  std::string material;
+};
+
 // Initial stresses. Either a field sxx.. + ygrad * y, or (from_surface) the lithostatic state
 // sv = -(surcharge + density * g * (surface - y)), sh = szz = k0 * sv.
 struct InsituDef {
@@ -174,6 +186,7 @@ struct ZoneView {
   double s1 = 0, s3 = 0;                      // in-plane principal, s1 <= s3 [Pa]
   std::uint8_t state = 0;
   std::string material;  // "" when none assigned
+  int excavated = 0;     // the stage that excavated it (0: in place)
 };
 
 // How a potential-crack section broke (crack/criteria.hpp).

@@ -302,13 +302,13 @@ const std::vector<std::string>& Model::history_point_quantities() {
 const std::vector<std::string>& Model::history_model_quantities() {
   static const std::vector<std::string> names{"ratio", "time",    "kinetic",  "cycle",
                                               "contacts", "slipping", "open", "max_slip",
-                                              "cracks", "shear_cracks", "tension_cracks"};
+                                              "cracks", "shear_cracks", "tension_cracks", "stage"};
   return names;
 }
 
 std::string Model::history_unit(std::string_view quantity) {
   if (quantity == "ratio" || quantity == "cycle" || quantity == "contacts" ||
-      quantity == "slipping" || quantity == "open" || quantity.ends_with("cracks"))
+      quantity == "slipping" || quantity == "open" || quantity.ends_with("cracks") || quantity == "stage")
     return "-";
   if (quantity == "time") return "s";
   if (quantity == "kinetic") return "J/m";
@@ -368,6 +368,7 @@ std::function<double()> Model::history_sampler(std::string_view quantity,
     if (quantity == "time") return [m] { return m->info.time; };
     if (quantity == "kinetic") return [m] { return m->info.kinetic; };
     if (quantity == "cycle") return [m] { return static_cast<double>(m->info.cycle); };
+    if (quantity == "stage") return [m] { return static_cast<double>(m->stage); };
     if (quantity.ends_with("cracks")) {
       const CrackMode mode = quantity == "shear_cracks"     ? CrackMode::shear
                              : quantity == "tension_cracks" ? CrackMode::tension
@@ -514,6 +515,7 @@ ZoneView Model::zone_view(int id) const {
   view.state = m.zone_state[static_cast<size_t>(id)];
   const int material = m.zone_material[static_cast<size_t>(id)];
   if (material >= 0) view.material = m.materials[static_cast<size_t>(material)].name;
+  view.excavated = m.zone_excavated.empty() ? 0 : m.zone_excavated[static_cast<size_t>(id)];
   return view;
 }
 

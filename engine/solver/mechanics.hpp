@@ -74,6 +74,16 @@ struct AdaptiveDamping {
   bool have_r_start = false;
 };
 
+// The forces excavated zones exerted on the nodes they shared with the rock left in place,
+// held as loads and taken off linearly over `cycles` (excavate{ release = n }).
+struct ReleaseLoad {
+  std::vector<int> dof;        // node components that carry a share
+  std::vector<double> force;   // the share at excavation [N/m]
+  long cycles = 0;             // over how many cycles it goes
+  long done = 0;               // cycles run since
+  double factor = 0.0;         // the fraction of `force` in Mechanics::load now
+};
+
 struct Mechanics {
   // ---- inputs
   std::vector<MaterialDef> materials;
@@ -128,6 +138,8 @@ struct Mechanics {
   std::vector<CrackView> cracks;          // in the order they broke
   JudgeDef judge;
   int stage = 0;                          // excavation stage (0: before any)
+  std::vector<int> zone_excavated;        // per mesh zone: the stage that excavated it (0: none)
+  ReleaseLoad release;
   bool fresh_cracks = false;              // broken since the last contact detection
 
   // ---- derived by prepare()

@@ -233,6 +233,7 @@ void reset_for_mesh(Mechanics& m, const Mesh& mesh) {
   m.stress.assign(zones, Stress{});
   m.mean_stress_ref.assign(zones, 0.0);
   m.zone_state.assign(zones, 0);
+  m.zone_excavated.assign(zones, 0);
   SectionLayout layout = find_sections(mesh);
   m.sections = std::move(layout.sections);
   m.edge_section = std::move(layout.edge_section);
@@ -332,7 +333,7 @@ void prepare(Mechanics& m, const Mesh& mesh) {
            c.x, c.y);
     }
     const MaterialModel model = m.params[static_cast<size_t>(material)].model;
-    if (model == MaterialModel::null) continue;
+    if (model == MaterialModel::null || m.zone_excavated[static_cast<size_t>(z)] > 0) continue;
     m.active.push_back(z);
   }
 

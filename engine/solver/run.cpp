@@ -11,6 +11,7 @@
 #include "contact/detect.hpp"
 #include "crack/judge.hpp"
 #include "solver/cycle.hpp"
+#include "solver/excavation.hpp"
 #include "solver/prepare.hpp"
 
 namespace edem {
@@ -179,7 +180,7 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
   CyclingFlag flag(m.cycling_now);
   SolveResult result;
   double speed = 0.0;  // fastest gridpoint at the last measurement [m/s]
-  if (target_ratio > 0.0) {
+  if (target_ratio > 0.0 && m.release.dof.empty()) {
     const Measure now = measure_state(m);
     m.info.ratio = now.applied > 0.0 ? now.unbalanced / now.applied : 0.0;
     if (m.info.ratio <= target_ratio) {
@@ -194,7 +195,9 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
       start_adaptive(m);
     }
     const long cycle = m.info.cycle;
-    const long batch = std::min(max_cycles - result.cycles, next_due(m, cycle) - cycle);
+    // An excavation's loads come off a step every cycle while its release runs.
+    const bool releasing = step_release(m);
+    const long batch = releasing ? 1 : std::min(max_cycles - result.cycles, next_due(m, cycle) - cycle);
     // Contacts are found again before anything can move a quarter of a reach from where they
     // were found (allowing twice the last speed over the batch).
     if (contacts_due(m, 2.0 * speed * m.step * static_cast<double>(batch))) {
@@ -213,7 +216,8 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
     if (m.settings.damping == Damping::adaptive) adapt_damping(m, measure);
     // A model that has just cracked is not in equilibrium, whatever the ratio said before.
     const bool cracked = run_due(m, mesh, m.info.cycle);
-    if (target_ratio > 0.0 && m.info.ratio <= target_ratio && !cracked) {
+    // Nor is one whose excavation loads are still coming off.
+    if (target_ratio > 0.0 && m.info.ratio <= target_ratio && !cracked && !releasing) {
       result.converged = true;
       break;
     }

@@ -1,0 +1,110 @@
+// Excavation: excavate{} turns a region's zones null, fill{} puts material back, stage() counts.
+#include <lua.hpp>
+
+#include "commands.hpp"
+#include "context.hpp"
+#include "core/error.hpp"
+
+namespace edem {
+namespace {
+
+// A region given as item 1 (a name) or as region = (a name or a polygon); not both, not neither.
+RegionRef region_of(const Args& args, const char* usage) {
+  const bool item = args.has("name"), key = args.has("region");
+  if (item == key)
+    fail("{}: give the region as item 1 or as region =, like {}", item ? "both given" : "no region", usage);
+  if (item) return RegionRef{args.string("name"), {}};
+  return args.get<RegionRef>("region");
+}
+
+int run_excavate(lua_State*, Context& context, const Args& args) {
+  ExcavateDef def;
+  def.region = region_of(args, "excavate(\"stage1\")");
+  def.release = static_cast<long>(args.integer("release"));
+  context.model().excavate(def);
+  return 0;
+}
+
+int run_fill(lua_State*, Context& context, const Args& args) {
+  FillDef def;
+  def.region = region_of(args, "fill{ \"stage1\", material = \"concrete\" }");
+  def.material = args.string("material");
+  context.model().fill(def);
+  return 0;
+}
+
+int run_stage(lua_State* L, Context& context, const Args&) {
+  lua_pushinteger(L, context.model().stage());
+  return 1;
+}
+
+}  // namespace
+
+const Command& excavate_command() {
+  static const Command command{
+      .name = "excavate",
+      .help =
+          "Excavates a region: its zones turn null, as in UDEC 7 (the geometry stays: fill{} "
+          "can put material back), the new surface is free and contacts with the excavated "
+          "blocks go; the stage count (stage()) goes up by one and cracks and histories carry "
+          "it. With release = n, the pull of the excavated zones (their stress and weight) on "
+          "the new surface is held as a load and taken off linearly over the next n cycles, so "
+          "that the rock unloads gradually instead of ringing; solve{} does not stop before it "
+          "is off. The region must take whole blocks: a name cut earlier with region{}, or a "
+          "polygon along block outlines. assign{} later changes excavated zones' material "
+          "without filling them.",
+      .positional =
+          {
+              {"name", Type::string, "", any_value, kOptional, "a region's name",
+               "or region"},
+          },
+      .keys =
+          {
+              {"region", Type::region, "", any_value, kOptional,
+               "the region (a name or a polygon)", "or item 1"},
+              {"release", Type::integer, "cycles", ge(0), "0",
+               "cycles over which the excavated zones' forces come off the new surface (0: at once)"},
+          },
+      .run = run_excavate,
+      .usage = "excavate(\"stage1\")\nexcavate{ region = \"stage2\", release = 2000 }",
+      .item_call = true,
+  };
+  return command;
+}
+
+const Command& fill_command() {
+  static const Command command{
+      .name = "fill",
+      .help =
+          "Backfills the excavated zones of a region with a material, stress-free (they take "
+          "load as the rock around them moves on).",
+      .positional =
+          {
+              {"name", Type::string, "", any_value, kOptional, "a region's name",
+               "or region"},
+          },
+      .keys =
+          {
+              {"region", Type::region, "", any_value, kOptional,
+               "the region (a name or a polygon)", "or item 1"},
+              {"material", Type::string, "", any_value, kRequired, "a material's name"},
+          },
+      .run = run_fill,
+      .usage = "fill{ \"stage1\", material = \"concrete\" }",
+  };
+  return command;
+}
+
+const Command& stage_command() {
+  static const Command command{
+      .name = "stage",
+      .help = "The excavation stage: how many excavate{} calls so far (0 before any).",
+      .form = Form::call,
+      .run = run_stage,
+      .returns = "an integer",
+      .usage = "if stage() == 3 then ... end",
+  };
+  return command;
+}
+
+}  // namespace edem

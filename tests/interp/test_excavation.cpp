@@ -1,0 +1,98 @@
+// excavate{}, fill{} and stage(): what they change, what they keep, and the stage bookkeeping.
+#include "interp_test.hpp"
+
+namespace edem::test {
+namespace {
+
+// Two blocks stacked, jointed, under gravity; the upper one a region that can be excavated.
+const char* kStack = R"(
+  model{ title = "stack" }
+  block{ x = {0, 4}, y = {0, 2} }
+  block{ x = {0, 4}, y = {2, 4} }
+  region{ name = "cut", polygon = {{1, 0}, {3, 0}, {3, 1}, {1, 1}} }
+  zone{ edge = 0.5 }
+  material{ "rock", density = 2500, young = 1e9, poisson = 0.25 }
+  material{ "fill", density = 1800, young = 1e8, poisson = 0.3 }
+  assign{ material = "rock" }
+  joint_material{ "joint", kn = 1e10, ks = 1e10, friction = 30 }
+  jassign{ material = "joint" }
+  gravity{ 0, -9.81 }
+  boundary{ side = "bottom", fix = "xy" }
+)";
+
+TEST(Excavation, ZonesTurnNullAndTheStageCounts) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, std::string(kStack) + R"(
+    history{ "stage", every = 10 }
+    assert(stage() == 0 and info().stage == 0)
+    solve{ ratio = 1e-6 }
+    local cut = 0
+    for z in zones() do if z.region == "cut" then cut = cut + 1 end end
+    excavate("cut")
+    assert(stage() == 1 and info().stage == 1)
+    local gone = 0
+    for z in zones() do
+      if z.excavated then
+        gone = gone + 1
+        assert(z.excavated == 1 and z.region == "cut" and z.sxx == 0 and z.syy == 0, "stress-free")
+      end
+    end
+    assert(gone == cut and cut > 0, ("%d of %d zones excavated"):format(gone, cut))
+    solve{ ratio = 1e-6 }
+    -- The rock over the cut now spans it: the roof above its middle sags.
+    assert(gp_near(2, 1).uy < 0)
+    fill{ "cut", material = "fill" }
+    for z in zones() do
+      if z.region == "cut" then assert(not z.excavated and z.material == "fill" and z.syy == 0) end
+    end
+    assert(stage() == 1, "fill is no stage")
+    solve{ ratio = 1e-6 }
+    local load = 0
+    for z in zones() do if z.region == "cut" then load = load + z.syy * z.area end end
+    assert(load < 0, "the fill carries its weight")
+  )");
+}
+
+TEST(Excavation, ContactsWithAnExcavatedBlockGo) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, std::string(kStack) + R"(
+    region{ name = "upper", polygon = {{0, 2}, {4, 2}, {4, 4}, {0, 4}} }
+    zone{ edge = 0.5 }
+    assign{ material = "rock" }
+    jassign{ material = "joint" }
+    solve{ ratio = 1e-6 }
+    local before = 0
+    for c in contacts() do before = before + 1 end
+    assert(before > 0)
+    excavate("upper")
+    cycle(1)
+    for c in contacts() do error("a contact with the excavated block is left: at " .. c.x .. ", " .. c.y) end
+  )");
+}
+
+TEST(Excavation, CracksCarryTheStage) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, R"(
+    block{ x = {-0.5, 0.5}, y = {0, 2} }
+    region{ name = "notch", polygon = {{0.3, 1.4}, {0.5, 1.4}, {0.5, 1.6}, {0.3, 1.6}} }
+    crackseed{ angle = 0, spacing = 10, origin = {0, 0.5}, material = "strength", after = "crack" }
+    zone{ edge = 0.1 }
+    material{ "rock", young = 1e9, poisson = 0.2 }
+    material{ "strength", model = "mohr", young = 1e9, poisson = 0.2, cohesion = 1e6, friction = 30,
+              tension = 1e4 }
+    assign{ material = "rock" }
+    joint_material{ "crack", kn = 1e10, ks = 1e10, friction = 30 }
+    boundary{ side = "bottom", fix = "y" }
+    excavate("notch")
+    boundary{ side = "top", yvel = 1e-7 }
+    cycle(3000)
+    assert(info().cracks > 0, "the bar cracked")
+    for c in cracks() do assert(c.stage == 1, "crack stage " .. c.stage) end
+  )");
+}
+
+}  // namespace
+}  // namespace edem::test
