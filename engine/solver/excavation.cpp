@@ -159,6 +159,7 @@ bool step_release(Mechanics& m) {
   if (next == 0.0) {
     r = ReleaseLoad{};
     lump_boundary_loads(m);  // exactly the boundary's own loads again
+    m.dirty = true;          // the applied load the ratio is measured against changed
   }
   return true;
 }
