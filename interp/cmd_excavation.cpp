@@ -38,6 +38,11 @@ int run_stage(lua_State* L, Context& context, const Args&) {
   return 1;
 }
 
+// The region of excavate{} and fill{}: item 1 (a name) or region = (a name or a polygon).
+const Key kRegionItem{"name", Type::string, "", any_value, kOptional, "a region's name", "or region"};
+const Key kRegionKey{"region", Type::region, "", any_value, kOptional, "the region (a name or a polygon)",
+                     "or item 1"};
+
 }  // namespace
 
 const Command& excavate_command() {
@@ -53,15 +58,10 @@ const Command& excavate_command() {
           "is off. The region must take whole blocks: a name cut earlier with region{}, or a "
           "polygon along block outlines. assign{} later changes excavated zones' material "
           "without filling them.",
-      .positional =
-          {
-              {"name", Type::string, "", any_value, kOptional, "a region's name",
-               "or region"},
-          },
+      .positional = {kRegionItem},
       .keys =
           {
-              {"region", Type::region, "", any_value, kOptional,
-               "the region (a name or a polygon)", "or item 1"},
+              kRegionKey,
               {"release", Type::integer, "cycles", ge(0), "0",
                "cycles over which the excavated zones' forces come off the new surface (0: at once)"},
           },
@@ -78,15 +78,10 @@ const Command& fill_command() {
       .help =
           "Backfills the excavated zones of a region with a material, stress-free (they take "
           "load as the rock around them moves on).",
-      .positional =
-          {
-              {"name", Type::string, "", any_value, kOptional, "a region's name",
-               "or region"},
-          },
+      .positional = {kRegionItem},
       .keys =
           {
-              {"region", Type::region, "", any_value, kOptional,
-               "the region (a name or a polygon)", "or item 1"},
+              kRegionKey,
               {"material", Type::string, "", any_value, kRequired, "a material's name"},
           },
       .run = run_fill,

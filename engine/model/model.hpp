@@ -50,6 +50,9 @@ class Model {
   const std::vector<RegionDef>& regions() const { return inputs_.regions; }
   int region_index(std::string_view name) const;  // throws, with a did-you-mean hint
   Polygon resolve(const RegionRef& ref) const;     // the polygon of a name or polygon
+  // Zones of a region: of the blocks inside a named region, or whose centroid lies inside a
+  // polygon; every zone for an empty reference (solver/mechanics.cpp).
+  std::vector<int> zones_in(const RegionRef& ref) const;
 
   int joint_set_count() const { return static_cast<int>(inputs_.joint_sets.size()); }
   double tolerance() const;  // absolute geometric tolerance [m]

@@ -6,9 +6,6 @@
 // shared. Removing those zones at once is a sudden load that rings; with release = n the same
 // forces (stress and weight) are held as loads on those nodes and taken off linearly over the
 // next n cycles, so the new surface unloads the way a face advancing past it would.
-#include <algorithm>
-#include <cmath>
-
 #include "core/error.hpp"
 #include "core/names.hpp"
 #include "model/model.hpp"
@@ -20,38 +17,24 @@
 namespace edem {
 namespace {
 
-// The zones of a named region's blocks, or those whose centroid lies in a polygon, which must
-// take whole blocks: the contacts and the new surface follow block outlines.
+// The zones of a region, which must take whole blocks: the contacts and the new surface follow
+// block outlines (a named region does; a polygon must not cut through a block).
 std::vector<int> region_zones(const Model& model, const RegionRef& ref) {
+  const std::vector<int> zones = model.zones_in(ref);
+  if (zones.empty()) {
+    if (!ref.name.empty()) fail("region '{}' holds no zones", ref.name);
+    fail("no zone lies inside the polygon");
+  }
+  if (!ref.name.empty()) return zones;
   const Mesh& mesh = model.mesh();
-  const BlockSet& blocks = model.blocks();
-  std::vector<int> zones;
-  if (!ref.name.empty()) {
-    const int region = model.region_index(ref.name);
-    for (int z = 0; z < mesh.zone_count(); ++z) {
-      const auto& regions = blocks.blocks[static_cast<size_t>(mesh.zone_block[static_cast<size_t>(z)])].regions;
-      if (std::find(regions.begin(), regions.end(), region) != regions.end()) zones.push_back(z);
-    }
-    if (zones.empty()) fail("region '{}' holds no zones", ref.name);
-    return zones;
-  }
-  const Polygon polygon = model.resolve(ref);
-  std::vector<int> inside(blocks.blocks.size(), 0), outside(blocks.blocks.size(), 0);
-  for (int z = 0; z < mesh.zone_count(); ++z) {
-    const size_t b = static_cast<size_t>(mesh.zone_block[static_cast<size_t>(z)]);
-    if (contains(polygon, mesh.zone_centroid(z))) {
-      zones.push_back(z);
-      ++inside[b];
-    } else {
-      ++outside[b];
-    }
-  }
-  for (size_t b = 0; b < blocks.blocks.size(); ++b)
-    if (inside[b] > 0 && outside[b] > 0)
+  std::vector<int> inside(model.blocks().blocks.size(), 0), all(inside.size(), 0);
+  for (const int z : zones) ++inside[static_cast<size_t>(mesh.zone_block[static_cast<size_t>(z)])];
+  for (const int b : mesh.zone_block) ++all[static_cast<size_t>(b)];
+  for (size_t b = 0; b < inside.size(); ++b)
+    if (inside[b] > 0 && inside[b] < all[b])
       fail("the polygon cuts through block {} (it was never cut into the model): name it with "
            "region{{ name = ..., polygon = ... }} before zone{{}} and excavate that name",
            b + 1);
-  if (zones.empty()) fail("no zone lies inside the polygon");
   return zones;
 }
 

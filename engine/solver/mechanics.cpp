@@ -81,24 +81,29 @@ std::vector<std::string> Model::material_names() const {
   return names;
 }
 
-void Model::assign(const AssignDef& def) {
-  Mechanics& m = *mechanics_;
-  const int material = index_of_name(m.materials, def.material, "material", "material{...}");
-  if (mesh_.zone_count() == 0) fail("there are no zones to assign to: zone{{...}} the blocks first");
+std::vector<int> Model::zones_in(const RegionRef& ref) const {
   std::vector<int> zones;
-  if (def.region.empty()) {
+  if (ref.empty()) {
     for (int z = 0; z < mesh_.zone_count(); ++z) zones.push_back(z);
-  } else if (!def.region.name.empty()) {
-    const int region = region_index(def.region.name);
+  } else if (!ref.name.empty()) {
+    const int region = region_index(ref.name);
     for (int z = 0; z < mesh_.zone_count(); ++z) {
       const auto& regions = blocks_.blocks[static_cast<size_t>(mesh_.zone_block[static_cast<size_t>(z)])].regions;
       if (std::find(regions.begin(), regions.end(), region) != regions.end()) zones.push_back(z);
     }
   } else {
-    const Polygon polygon = resolve(def.region);
+    const Polygon polygon = resolve(ref);
     for (int z = 0; z < mesh_.zone_count(); ++z)
       if (contains(polygon, mesh_.zone_centroid(z))) zones.push_back(z);
   }
+  return zones;
+}
+
+void Model::assign(const AssignDef& def) {
+  Mechanics& m = *mechanics_;
+  const int material = index_of_name(m.materials, def.material, "material", "material{...}");
+  if (mesh_.zone_count() == 0) fail("there are no zones to assign to: zone{{...}} the blocks first");
+  const std::vector<int> zones = zones_in(def.region);
   if (zones.empty()) fail("no zone lies in the region");
   const bool null = m.params[static_cast<size_t>(material)].model == MaterialModel::null;
   for (const int z : zones) {

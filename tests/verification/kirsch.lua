@@ -8,20 +8,9 @@
 -- the ring around the hole cut into glued blocks changes u_r by <= 1 %.
 local check = require "edem.check"
 local shapes = require "edem.shapes"
+local kirsch = require "edem.kirsch"
 
 local a, R, p1, G, K = 1.0, 40.0, 30e6, 2.8e9, 3.9e9
-local nu = (3 * K - 2 * G) / (2 * (3 * K + G))
-
--- Kirsch, compression positive, theta from the vertical (the direction of p1).
-local function kirsch(p2, r, theta)
-  local q = a * a / (r * r)
-  local c2, s2 = math.cos(2 * theta), math.sin(2 * theta)
-  local sr = (p1 + p2) / 2 * (1 - q) + (p1 - p2) / 2 * (1 - 4 * q + 3 * q * q) * c2
-  local st = (p1 + p2) / 2 * (1 + q) - (p1 - p2) / 2 * (1 + 3 * q * q) * c2
-  local srt = -(p1 - p2) / 2 * (1 + 2 * q - 3 * q * q) * s2
-  local ur = (p1 + p2) / (4 * G) * a * a / r + (p1 - p2) / (4 * G) * a * a / r * (4 * (1 - nu) - q) * c2
-  return sr, st, srt, ur
-end
 
 local function run(k0, glued)
   local p2 = k0 * p1
@@ -44,26 +33,11 @@ local function run(k0, glued)
   local result = solve{ ratio = 1e-7, max_cycles = 200000 }
   print(("  %s: %d zones, %d cycles to ratio %.2g"):format(info().title, info().zones, result.cycles, result.ratio))
 
-  local worst, worst_at = 0, ""
-  for z in zones() do
-    local r = math.sqrt(z.x * z.x + z.y * z.y)
-    if r >= 1.2 * a and r <= 5 * a then
-      local theta = math.atan(z.x, z.y)  -- from the vertical
-      local sr, st, srt = kirsch(p2, r, theta)
-      -- numerical stresses in polar components, compression positive
-      -- e_r = (sin t, cos t), e_t = (cos t, -sin t); EDEM's stresses are tension positive
-      local c, s = math.sin(theta), math.cos(theta)
-      local nsr = -(z.sxx * c * c + z.syy * s * s + 2 * z.sxy * s * c)
-      local nst = -(z.sxx * s * s + z.syy * c * c - 2 * z.sxy * s * c)
-      local nsrt = -((z.sxx - z.syy) * c * s + z.sxy * (s * s - c * c))
-      for _, e in ipairs({ math.abs(nsr - sr), math.abs(nst - st), math.abs(nsrt - srt) }) do
-        if e / p1 > worst then worst, worst_at = e / p1, ("r = %.2f, theta = %.0f"):format(r, math.deg(theta)) end
-      end
-    end
-  end
+  local hole = kirsch.new{ a = a, p1 = p1, p2 = p2, shear = G, bulk = K }
+  local worst, worst_at = hole.worst_stress(1.2, 5)
   local crown, spring = gp_near(0, a), gp_near(a, 0)
-  local _, _, _, ur_crown = kirsch(p2, a, 0)
-  local _, _, _, ur_spring = kirsch(p2, a, math.pi / 2)
+  local _, _, _, ur_crown = hole.at(a, 0)
+  local _, _, _, ur_spring = hole.at(a, math.pi / 2)
   return { worst = worst, worst_at = worst_at, crown = -crown.uy, spring = -spring.ux,
            expected_crown = ur_crown, expected_spring = ur_spring }
 end
