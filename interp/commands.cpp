@@ -33,6 +33,10 @@ const std::vector<const Command*>& commands() {
       &excavate_command(),       // cmd_excavation.cpp
       &fill_command(),           //
       &stage_command(),          //
+      &bolt_material_command(),  // cmd_bolts.cpp
+      &bolt_command(),           //
+      &bolt_head_command(),      //
+      &bolts_command(),          //
       &every_command(),          //
       &cancel_command(),         //
       &history_command(),        // cmd_history.cpp

@@ -52,6 +52,10 @@ const Command& plot_command();
 const Command& excavate_command();
 const Command& fill_command();
 const Command& stage_command();
+const Command& bolt_material_command();
+const Command& bolt_command();
+const Command& bolt_head_command();
+const Command& bolts_command();
 
 // Every command of the language, in reference order.
 const std::vector<const Command*>& commands();

@@ -144,8 +144,11 @@ void update_segments(BoltSet& set) {
     const Vec2 d = (n.x[b] + n.u[b]) - (n.x[a] + n.u[a]);
     const double length = norm(d);
     g.direction[s] = (1.0 / length) * d;
-    if (g.state[s] == SegmentState::broken) continue;  // its force stays 0
     const double elongation = length - g.rest[s];
+    if (g.state[s] == SegmentState::broken) {  // its force stays 0
+      g.elongation[s] = elongation;
+      continue;
+    }
     const SegmentUpdate up = segment_law(set.laws[index(g.material[s])], g.rest[s], g.force[s],
                                          g.state[s], g.elongation[s], elongation);
     g.force[s] = up.force;

@@ -77,6 +77,14 @@ class Model {
   void excavate(const ExcavateDef& def);
   void fill(const FillDef& def);
   int stage() const;  // excavations so far (0: none)
+  // Bolts (bolt/model_bolts.cpp). A bolt is laid in the rock as it stands now, and goes out of
+  // service when its ground is excavated; forces are per metre of thickness (/ spacing).
+  void add_bolt_material(const BoltMaterialDef& def);  // redefining a name is an error
+  int add_bolt(const BoltDef& def);                    // returns the bolt's index (0-based)
+  void bolt_head(const BoltHeadDef& def);
+  int bolt_count() const;
+  BoltView bolt(int id) const;
+  std::vector<std::string> bolt_material_names() const;
   // Zero displacements / velocities / plastic state flags of every gridpoint or zone.
   void reset(bool displacement, bool velocity, bool state);
 

@@ -88,6 +88,59 @@ struct FillDef {
   std::string material;
 };
 
+// A bolt material (bolt/bolt_law.hpp): one bolt's values, as a user gives them [SI]; forces and
+// stiffnesses in the model are these divided by `spacing` (per metre of thickness).
+struct BoltMaterialDef {
+  std::string name;
+  double young = kUnset;              // [Pa]
+  double area = kUnset;               // [m^2]
+  double density = 7850.0;            // [kg/m^3]
+  double yield_tension = kUnset;      // [N]
+  double yield_compression = kUnset;  // [N], positive; unset: yield_tension
+  double failure_strain = kUnset;     // [-]
+  double bond_stiffness = kUnset;     // [N/m per m of bolt]
+  double bond_strength = kUnset;      // [N/m]
+  double spacing = 1.0;               // out of the plane [m]
+};
+
+// A straight grouted bolt from its head (`from`, at the wall) to its end (`to`, in the rock).
+struct BoltDef {
+  Vec2 from, to;
+  int segments = 0;                // over the grouted length; 0: from segment_length
+  double segment_length = kUnset;  // [m]
+  double free_length = 0.0;        // ungrouted length from the head [m]
+  std::string material;
+};
+
+// What holds a bolt's head: a jack pulling it out of the hole at `velocity` [m/s; m per cycle in
+// static mode], a constant pull `force` [N per bolt], or nothing (both unset: free again).
+struct BoltHeadDef {
+  int bolt = -1;  // 0-based
+  double velocity = kUnset;
+  double force = kUnset;
+};
+
+// A bolt segment as bolts() shows it.
+struct BoltSegmentView {
+  Vec2 a, b;              // current positions of its ends [m]
+  double force = 0.0;     // axial, tension positive [N per m of thickness]
+  double strain = 0.0;    // elongation / rest length [-]
+  double slip = 0.0;      // bolt against rock along the axis, mean of its ends [m]
+  double plastic_slip = 0.0;  // the grout's plastic part of it [m]
+  std::string state;      // "elastic", "yielded", "broken"
+};
+
+struct BoltView {
+  int id = -1;              // 0-based
+  std::string material;
+  int stage = 0;            // the excavation stage when it was installed
+  Vec2 head, end;           // as installed [m]
+  double length = 0.0;      // [m]
+  double head_force = 0.0;  // axial pull on the head [N per m of thickness]
+  bool removed = false;     // its ground was excavated: out of service
+  std::vector<BoltSegmentView> segments;
+};
+
 // Initial stresses. Either a field sxx.. + ygrad * y, or (from_surface) the lithostatic state
 // sv = -(surcharge + density * g * (surface - y)), sh = szz = k0 * sv.
 struct InsituDef {

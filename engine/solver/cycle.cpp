@@ -35,6 +35,7 @@
 #include <cmath>
 
 #include "contact/contact_force.hpp"
+#include "solver/bolt_coupling.hpp"
 
 namespace edem {
 namespace {
@@ -217,15 +218,6 @@ void contact_pass(Mechanics& m, int begin, int end, Partials& partials) {
   }
 }
 
-// Velocity update coefficients of one cycle.
-struct Motion {
-  double dt = 1.0;
-  bool local = false;   // local damping
-  double alpha = 0.0;   // its coefficient
-  double keep = 1.0;    // viscous: v' = keep v + push F / m
-  double push = 1.0;
-};
-
 template <bool kMeasure>
 void node_motion_pass(Mechanics& m, int begin, int end, const Motion& motion, bool record_start,
                       Partials& partials) {
@@ -236,6 +228,7 @@ void node_motion_pass(Mechanics& m, int begin, int end, const Motion& motion, bo
   const int* contact_first = m.contacts.gather_first.data();
   const int* contact_gather = m.contacts.gather.data();
   const Contact* contacts = m.contacts.list.data();
+  const bool with_bolts = !m.bolt_hosts.gather.empty();
   double unbalanced = 0.0, kinetic = 0.0, num = 0.0, den = 0.0, speed = -1.0;
   int fastest = -1;
   bool finite = true;
@@ -266,6 +259,7 @@ void node_motion_pass(Mechanics& m, int begin, int end, const Motion& motion, bo
         f[1] += w * c.fy;
       }
     }
+    if (with_bolts) add_grout_forces(m, nn, f);
     const double mass = m.mass[nn];
     if (mass > 0.0) {
       const double inv_mass = 1.0 / mass;
@@ -380,6 +374,7 @@ Measure run_cycles(Mechanics& m, int count) {
   const Motion motion = motion_of(m);
   const bool record = !m.adaptive.have_r_start;
   const bool grouped = !m.mates.empty();
+  Measure bolt_measure;
 
 #pragma omp parallel num_threads(ranges)
   {
@@ -396,6 +391,8 @@ Measure run_cycles(Mechanics& m, int count) {
         const int cb = contact_begin[static_cast<size_t>(r)], ce = contact_begin[static_cast<size_t>(r) + 1];
         if (cb < ce) measure ? contact_pass<true>(m, cb, ce, partials) : contact_pass<false>(m, cb, ce, partials);
       }
+      // The bolts read the nodes' displacements, as the zones do, and move only their own nodes.
+      if (me == 0) bolt_cycle(m, motion, record && cycle == 0, measure, bolt_measure);
 #pragma omp barrier
       for (int r = me; r < ranges; r += team) {
         const int b = part.node_begin[static_cast<size_t>(r)], e = part.node_begin[static_cast<size_t>(r) + 1];
@@ -436,6 +433,12 @@ Measure run_cycles(Mechanics& m, int count) {
       out.fastest_node = partials.fastest[c];
     }
   }
+  out.unbalanced += bolt_measure.unbalanced;
+  out.applied += bolt_measure.applied;
+  out.kinetic += bolt_measure.kinetic;
+  out.rayleigh_num += bolt_measure.rayleigh_num;
+  out.rayleigh_den += bolt_measure.rayleigh_den;
+  out.finite = out.finite && bolt_measure.finite;
   out.max_speed = speed > 0.0 ? std::sqrt(speed) : 0.0;
   if (!std::isfinite(out.unbalanced) || !std::isfinite(out.kinetic)) out.finite = false;
   return out;
@@ -486,6 +489,10 @@ Measure measure_state(const Mechanics& m) {
     f[2 * b + 1] -= now.t * now.fy;
     out.applied += 2.0 * std::hypot(now.fx, now.fy);
   }
+  // The bolts as their last cycle left them.
+  if (!m.bolt_hosts.gather.empty())
+    for (size_t n = 0; n < static_cast<size_t>(m.node_count); ++n) add_grout_forces(m, n, &f[2 * n]);
+  measure_bolts(m, out);
   for (size_t n = 0; n < static_cast<size_t>(m.node_count); ++n) {
     if (!(m.mass[n] > 0.0)) continue;
     for (size_t c = 0; c < 2; ++c)

@@ -6,6 +6,15 @@
 
 namespace edem {
 
+// Velocity update coefficients of one cycle (the damping), for the rock's nodes and the bolts'.
+struct Motion {
+  double dt = 1.0;
+  bool local = false;   // local damping
+  double alpha = 0.0;   // its coefficient
+  double keep = 1.0;    // viscous: v' = keep v + push F / m
+  double push = 1.0;
+};
+
 // What the last cycle of a batch measured.
 struct Measure {
   double unbalanced = 0.0;   // sum of |F| over free components [N/m]

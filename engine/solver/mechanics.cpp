@@ -14,6 +14,7 @@
 #include "core/error.hpp"
 #include "core/names.hpp"
 #include "model/model.hpp"
+#include "solver/bolt_coupling.hpp"
 #include "solver/run.hpp"
 #include "solver/loads.hpp"
 #include "solver/prepare.hpp"
@@ -231,6 +232,7 @@ void Model::set_threads(int threads) {
 void Model::reset(bool displacement, bool velocity, bool state) {
   Mechanics& m = *mechanics_;
   if (displacement) {
+    reset_bolt_displacements(m);
     for (size_t dof = 0; dof < m.u.size(); ++dof) m.origin[dof] += m.u[dof];  // nodes stay put
     std::fill(m.u.begin(), m.u.end(), 0.0);
   }

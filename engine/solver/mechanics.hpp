@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "bolt/bolt_law.hpp"
 #include "constitutive/material.hpp"
 #include "constitutive/mohr_coulomb.hpp"
 #include "contact/contacts.hpp"
@@ -84,6 +85,34 @@ struct ReleaseLoad {
   double factor = 0.0;         // the fraction of `force` in Mechanics::load now
 };
 
+// How a bolt's head is held (bolt_head{}).
+enum class HeadDrive : std::uint8_t { none, velocity, force };
+
+// The bolts' ties to the rock (solver/bolt_coupling.cpp). Each bolt node is tied to a material
+// point of a host zone, at fixed shape-function weights: across the bolt's axis the node moves
+// with that point (a bolt has no bending stiffness of its own), along it the node slides against
+// it by `slide`, resisted by the grout. Per bolt node unless said otherwise.
+struct BoltHosts {
+  std::vector<int> zone;                      // host mesh zone; -1: none (outside the rock, ungrouted)
+  std::vector<std::array<double, 3>> weight;  // its shape functions at the material point
+  std::vector<Vec2> u0;        // the point's displacement (its corners' u) when it became the host [m]
+  std::vector<Vec2> host_u;    // the point's displacement since the bolt's installation [m]
+  std::vector<double> slide;   // along the axis against the point [m]
+  std::vector<double> rate;    // d slide / dt [m/s]
+  std::vector<double> mass;    // cycling mass (scaled in static mode) [kg/m]
+  std::vector<double> slide_start, r_start;  // adaptive damping: as for the rock's nodes
+  // Per bolt.
+  std::vector<int> material;   // bolt material
+  std::vector<int> stage;      // installed at this excavation stage
+  std::vector<char> removed;   // its ground was excavated: out of service
+  std::vector<HeadDrive> drive;
+  std::vector<double> drive_value;  // velocity [m/s], or force per metre of thickness [N/m]
+  std::vector<double> head_force;   // axial pull on the head at the last cycle [N/m]
+  // Per solver node + 1: the bolt node corners it takes grout forces from (bolt node * 3 + corner).
+  std::vector<int> gather_first, gather;
+  std::vector<double> rows;    // per solver node: grout stiffness in its Gershgorin row [N/m per m]
+};
+
 struct Mechanics {
   // ---- inputs
   std::vector<MaterialDef> materials;
@@ -140,6 +169,10 @@ struct Mechanics {
   int stage = 0;                          // excavation stage (0: before any)
   std::vector<int> zone_excavated;        // per mesh zone: the stage that excavated it (0: none)
   ReleaseLoad release;
+  // ---- bolts (bolt/bolt_law.hpp, solver/bolt_coupling.cpp)
+  std::vector<BoltMaterialDef> bolt_materials;  // same order as bolts.laws
+  BoltSet bolts;
+  BoltHosts bolt_hosts;
   bool fresh_cracks = false;              // broken since the last contact detection
 
   // ---- derived by prepare()

@@ -11,6 +11,7 @@
 #include "core/error.hpp"
 #include "contact/detect.hpp"
 #include "crack/judge.hpp"
+#include "solver/bolt_coupling.hpp"
 #include "solver/loads.hpp"
 #include "solver/zone_groups.hpp"
 
@@ -188,15 +189,18 @@ Partition make_partition(const Mechanics& m, int threads) {
 void update_masses(Mechanics& m) {
   const size_t nodes = static_cast<size_t>(m.node_count);
   const bool contacts = m.contacts.rows.size() == nodes;
+  const bool bolts = m.bolt_hosts.rows.size() == nodes;
   m.stiffness.assign(nodes, 0.0);
   double critical = INFINITY;
   for (size_t n = 0; n < nodes; ++n) {
-    m.stiffness[n] = m.zone_rows[n] + (contacts ? m.contacts.rows[n] : 0.0);
+    m.stiffness[n] = m.zone_rows[n] + (contacts ? m.contacts.rows[n] : 0.0) + (bolts ? m.bolt_hosts.rows[n] : 0.0);
     if (m.stiffness[n] > 0.0 && m.real_mass[n] > 0.0)
       critical = std::min(critical, 2.0 * std::sqrt(m.real_mass[n] / m.stiffness[n]));
   }
-  m.critical_step = std::isfinite(critical) ? critical : 0.0;
   const double fraction = m.settings.step_fraction;
+  const double amplification = m.settings.damping == Damping::local ? 1.0 + m.settings.local_damping : 1.0;
+  critical = std::min(critical, bolt_masses(m, m.settings.mode == SolverMode::dynamic, amplification, fraction));
+  m.critical_step = std::isfinite(critical) ? critical : 0.0;
   if (m.settings.mode == SolverMode::dynamic) {
     m.mass = m.real_mass;
     m.step = m.settings.step > 0.0 ? m.settings.step : fraction * m.critical_step;
@@ -205,8 +209,6 @@ void update_masses(Mechanics& m) {
     // Local damping can add up to alpha |F| to a force (when F opposes the velocity), which
     // acts like a stiffness (1 + alpha) times larger: the masses grow with it.
     m.step = 1.0;
-    const double amplification =
-        m.settings.damping == Damping::local ? 1.0 + m.settings.local_damping : 1.0;
     m.mass.resize(nodes);
     for (size_t n = 0; n < nodes; ++n)
       m.mass[n] = amplification * m.stiffness[n] / (4.0 * fraction * fraction);
@@ -263,6 +265,8 @@ void reset_for_mesh(Mechanics& m, const Mesh& mesh) {
   m.geometry.resize(zones);
   for (size_t z = 0; z < zones; ++z) m.geometry[z] = zone_geometry(m, mesh, static_cast<int>(z));
   m.insitu.clear();
+  m.bolts = BoltSet{m.bolts.laws, {}, {}, {0}, {0}};  // bolts are laid in zones: they go with them
+  m.bolt_hosts = BoltHosts{};
   m.dirty = true;
 }
 
@@ -343,6 +347,7 @@ void prepare(Mechanics& m, const Mesh& mesh) {
   m.keep_fits = false;
   assign_joint_materials(m);
   m.contacts.detected = false;  // materials or zones may have changed
+  tie_bolts(m);
 
   const size_t nodes = static_cast<size_t>(m.node_count);
   std::vector<double> rows(2 * nodes, 0.0);

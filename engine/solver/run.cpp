@@ -10,6 +10,7 @@
 #include "core/error.hpp"
 #include "contact/detect.hpp"
 #include "crack/judge.hpp"
+#include "solver/bolt_coupling.hpp"
 #include "solver/cycle.hpp"
 #include "solver/excavation.hpp"
 #include "solver/prepare.hpp"
@@ -158,6 +159,7 @@ void start_adaptive(Mechanics& m) {
   m.adaptive.r_start.assign(m.u.size(), 0.0);
   m.adaptive.have_r_start = false;
   m.adaptive.c = 0.0;
+  start_bolt_damping(m);
   m.last_kinetic = 0.0;
   m.growth_span = 0;
   m.growth_checks = 0;
@@ -202,6 +204,11 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
     // were found (allowing twice the last speed over the batch).
     if (contacts_due(m, 2.0 * speed * m.step * static_cast<double>(batch))) {
       detect_contacts(m);
+      update_masses(m);
+    }
+    // Bolt nodes that slid out of their zone take the one they are in now.
+    if (!m.bolts.nodes.x.empty() && rehost_bolts(m)) {
+      tie_bolts(m);
       update_masses(m);
     }
     const Measure measure = run_cycles(m, static_cast<int>(batch));

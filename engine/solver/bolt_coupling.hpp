@@ -1,0 +1,64 @@
+// Bolts in a zoned model: each bolt node tied to a material point of a host zone, the grout's
+// reaction spread back over that zone's nodes, the bolts' share of the time step, and their
+// part of a cycle (DESIGN.md §5; the laws are bolt/bolt_law.hpp).
+//
+// Across its axis a bolt node moves with its host point (a 2D bolt has no bending stiffness, so
+// nothing else would hold it there); along the axis it slides against the point, by `slide`,
+// integrated like a rock node with the same damping and resisted by the grout and its segments.
+// A node that has slid out of its host zone is tied again, at the next contact detection, to the
+// zone it is in now, in whichever block: bolts cross joints and cracks.
+#pragma once
+
+#include "solver/cycle.hpp"
+#include "solver/mechanics.hpp"
+
+namespace edem {
+
+// Adds a bolt at the current state (its ends as the rock stands now) and returns its index.
+// Every grouted node must lie in a rock zone (material not null, not excavated); an ungrouted
+// node (the free length) may lie outside. Throws naming the first node that does not, and then
+// changes nothing.
+int install_bolt(Mechanics& m, const BoltLine& line, int material);
+
+// Takes out of service the bolts with a node in a zone that is no longer rock (excavated or
+// null), as structural elements in null zones go in UDEC; then ties the rest to the rock's
+// nodes (the gather lists and the grout's share of each node's stiffness). After `active` is
+// known (prepare()).
+void tie_bolts(Mechanics& m);
+
+// The bolt nodes' cycling masses: with a step of 1 and the rock's rule in static mode
+// (`amplification`, `fraction`), their real masses in dynamic mode. Returns the bolts' critical
+// step with real masses [s] (infinity without bolts).
+double bolt_masses(Mechanics& m, bool dynamic, double amplification, double fraction);
+
+// The bolts' part of a cycle, before the rock's nodes move: host displacements, segment and grout
+// forces, head drives, and the slide of every node. `measure`: adds the bolts' unbalanced force,
+// applied force, kinetic energy and Rayleigh sums to `out`.
+void bolt_cycle(Mechanics& m, const Motion& motion, bool record_start, bool measure, Measure& out);
+
+// Adds the bolts' unbalanced and applied forces as their last cycle left them (no step).
+void measure_bolts(const Mechanics& m, Measure& out);
+
+// The grout's force on rock node `n` [N/m], from the forces of the last bolt_cycle.
+inline void add_grout_forces(const Mechanics& m, size_t n, double f[2]) {
+  const BoltHosts& h = m.bolt_hosts;
+  const BoltNodes& b = m.bolts.nodes;
+  for (int s = h.gather_first[n]; s < h.gather_first[n + 1]; ++s) {
+    const size_t node = static_cast<size_t>(h.gather[static_cast<size_t>(s)] / 3);
+    const double w = h.weight[node][static_cast<size_t>(h.gather[static_cast<size_t>(s)] % 3)] * b.grout_force[node];
+    f[0] += w * b.axis[node].x;
+    f[1] += w * b.axis[node].y;
+  }
+}
+
+// Ties again the nodes that slid out of their host zone; true if any moved (the ties and the
+// stiffnesses are then out of date: tie_bolts() and the masses again).
+bool rehost_bolts(Mechanics& m);
+
+// reset{ displacement }: the rock's u restarts from 0; the bolts' ties follow so that nothing moves.
+void reset_bolt_displacements(Mechanics& m);
+
+// The bolts' start of a cycling command (adaptive damping), like the rock's.
+void start_bolt_damping(Mechanics& m);
+
+}  // namespace edem
