@@ -1,0 +1,168 @@
+// Bolts in a model: the same bits on any thread count, out of service in excavated ground,
+// re-hosted across a joint without a jump, untouched by reset{ displacement }, replayed with a
+// re-zone.
+#include <lua.hpp>
+
+#include "interp_test.hpp"
+
+namespace edem::test {
+namespace {
+
+// Two blocks under gravity, the joint between them dipping 45 deg: the lower-left one held by its
+// left side, the upper-right one resting on the joint (friction 25 deg, so it would slide) and
+// held by a bolt across it.
+const char* kBolted = R"(
+  model{ title = "bolted" }
+  block{ x = {0, 4}, y = {0, 2} }
+  crack{ from = {0.5, 2.5}, to = {3.5, -0.5} }
+  region{ name = "right", polygon = {{3, 0}, {4, 0}, {4, 2}, {1, 2}} }
+  zone{ edge = 0.25 }
+  material{ "rock", density = 2500, young = 1e9, poisson = 0.25 }
+  assign{ material = "rock" }
+  joint_material{ "joint", kn = 5e9, ks = 5e9, friction = 25 }
+  jassign{ material = "joint" }
+  gravity{ 0, -9.81 }
+  boundary{ side = "left", fix = "xy" }
+  bolt_material{ "rebar", young = 200e9, area = 4.9e-4, yield_tension = 0.156e6, failure_strain = 0.035,
+                 bond_stiffness = 50e6, bond_strength = 0.2e6, spacing = 1.5 }
+  bolt{ from = {0.5, 0.8}, to = {3.5, 1.4}, segments = 24, material = "rebar" }
+)";
+
+// Runs kBolted + `tail` and returns what the script printed through `report`.
+std::string run_with(int threads, const std::string& tail) {
+  Interpreter interpreter({.quiet = true, .threads = threads, .stdlib_dirs = {}});
+  // Zones small enough for two threads' worth of work.
+  std::string model = kBolted;
+  model.replace(model.find("edge = 0.25"), 11, "edge = 0.05");
+  expect_runs(interpreter, model + R"(
+    local out = {}
+    function report(...) for _, v in ipairs({...}) do out[#out + 1] = ("%.17g"):format(v) end end
+  )" + tail + R"(
+    result = table.concat(out, " ")
+  )");
+  lua_getglobal(interpreter.state(), "result");
+  std::string result = lua_isstring(interpreter.state(), -1) ? lua_tostring(interpreter.state(), -1) : "";
+  lua_pop(interpreter.state(), 1);
+  return result;
+}
+
+TEST(Bolts, TwoThreadsGiveTheSameBitsAsOne) {
+  const std::string tail = R"(
+    cycle(400)
+    for b in bolts() do
+      report(b.head_force)
+      for _, s in ipairs(b.segments) do report(s.force, s.slip, s.x, s.y) end
+    end
+    for g in gridpoints() do report(g.ux, g.uy) end
+  )";
+  const std::string one = run_with(1, tail), two = run_with(2, tail);
+  EXPECT_FALSE(one.empty());
+  EXPECT_EQ(one, two);
+}
+
+TEST(Bolts, HoldTheBlockAndCarryItsPull) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, std::string(kBolted) + R"(
+    local r = solve{ ratio = 1e-7, max_cycles = 200000 }
+    assert(r.converged, "solved")
+    local b
+    for x in bolts() do b = x end
+    -- The segment across the joint carries the pull; the grout takes it off towards the ends.
+    local largest, ends = 0, math.max(math.abs(b.segments[1].force), math.abs(b.segments[24].force))
+    for _, s in ipairs(b.segments) do largest = math.max(largest, s.force) end
+    assert(largest > 0 and ends < 0.5 * largest, ("largest %g, at the ends %g"):format(largest, ends))
+    assert(b.broken == 0 and b.yielded == 0 and not b.removed)
+  )");
+}
+
+TEST(Bolts, GoOutOfServiceInExcavatedGround) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, std::string(kBolted) + R"(
+    boundary{ side = "right", fix = "xy" }
+    solve{ ratio = 1e-6 }
+    excavate("right")
+    cycle(10)
+    local b
+    for x in bolts() do b = x end
+    assert(b.removed, "the bolt's end was in the excavated region")
+    for _, s in ipairs(b.segments) do assert(s.force == 0 and s.state == "removed") end
+    assert(b.head_force == 0)
+    -- And a bolt cannot be laid there now.
+    local ok, err = pcall(bolt, { from = {3.2, 1}, to = {3.8, 1}, segments = 2, material = "rebar" })
+    assert(not ok and err:find("not in the rock"), err)
+  )");
+}
+
+TEST(Bolts, ResetDisplacementLeavesTheirForces) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, std::string(kBolted) + R"(
+    solve{ ratio = 1e-7, max_cycles = 200000 }
+    local function forces()
+      local f = {}
+      for b in bolts() do for _, s in ipairs(b.segments) do f[#f + 1] = s.force end end
+      return f
+    end
+    local before = forces()
+    reset{ "displacement" }
+    cycle(50)
+    local after, largest = forces(), 0
+    for i = 1, #before do largest = math.max(largest, math.abs(before[i])) end
+    for i = 1, #before do
+      assert(math.abs(after[i] - before[i]) <= 1e-5 * largest,
+             ("segment %d: %g before, %g after"):format(i, before[i], after[i]))
+    end
+  )");
+}
+
+TEST(Bolts, NodesSlidingIntoTheNextBlockKeepTheirGrout) {
+  // Rigid ground in two blocks; a bolt in the right one with its head at the joint, pulled out
+  // through the left one: the nodes cross the joint into the left block and the pull-out load
+  // goes on smoothly (a node re-hosted with its grout's force and slip).
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, R"(
+    model{ title = "two blocks" }
+    block{ x = {-1, 1}, y = {-0.05, 0.05} }
+    crack{ from = {0, -1}, to = {0, 1} }
+    zone{ edge = 0.1 }
+    material{ "rock", young = 30e9, poisson = 0.25, density = 2600 }
+    assign{ material = "rock" }
+    joint_material{ "joint", kn = 1e10, ks = 1e10, friction = 30 }
+    jassign{ material = "joint" }
+    boundary{ polygon = {{-2, -2}, {2, -2}, {2, 2}, {-2, 2}}, fix = "xy" }
+    bolt_material{ "b", young = 190e9, area = 446e-6, yield_tension = 1e6, failure_strain = 0.5,
+                   bond_stiffness = 50e6, bond_strength = 0.2e6 }
+    local id = bolt{ from = {-0.05, 0}, to = {0.5, 0}, free_length = 0.05, segments = 20, material = "b" }
+    local loads = {}
+    for step = 1, 30 do
+      bolt_head{ bolt = id, velocity = 1e-7 }
+      cycle(10000)  -- 1 mm a step: the nodes (0.025 m apart) cross the joint one after another
+      bolt_head{ bolt = id, velocity = 0 }
+      solve{ ratio = 1e-9, max_cycles = 100000 }
+      for b in bolts() do loads[step] = b.head_force end
+    end
+    -- Past the peak the whole bond slips: the load stays at s_b L = 0.1 MN while nodes change
+    -- blocks (a node that lost its grout would drop it by s_b dx = 5 kN).
+    for step = 10, 30 do
+      assert(math.abs(loads[step] - 0.1e6) < 0.002e6, ("step %d: %g"):format(step, loads[step]))
+    end
+  )");
+}
+
+TEST(Bolts, LaidBeforeARezoneAreLaidAgain) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, std::string(kBolted) + R"(
+    jset{ angle = 0, spacing = 10, origin = {0, 1.0} }  -- re-cuts and re-zones
+    local n = 0
+    for b in bolts() do n = n + 1; assert(#b.segments == 24) end
+    assert(n == 1, ("%d bolts after the re-zone"):format(n))
+    solve{ ratio = 1e-6, max_cycles = 100000 }
+  )");
+}
+
+}  // namespace
+}  // namespace edem::test
