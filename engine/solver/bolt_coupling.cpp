@@ -282,6 +282,7 @@ double bolt_masses(Mechanics& m, bool dynamic, double amplification, double frac
     critical = std::min(critical, 2.0 * std::sqrt(set.nodes.mass[i] / k[i]));
     h.mass[i] = dynamic ? set.nodes.mass[i] : amplification * k[i] / (4.0 * fraction * fraction);
   }
+  h.critical_step = critical;
   return critical;
 }
 

@@ -12,6 +12,7 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -111,6 +112,7 @@ struct BoltHosts {
   // Per solver node + 1: the bolt node corners it takes grout forces from (bolt node * 3 + corner).
   std::vector<int> gather_first, gather;
   std::vector<double> rows;    // per solver node: grout stiffness in its Gershgorin row [N/m per m]
+  double critical_step = std::numeric_limits<double>::infinity();  // the bolts' own, real masses [s]
 };
 
 struct Mechanics {

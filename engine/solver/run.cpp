@@ -179,6 +179,13 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
     detect_contacts(m);
     update_masses(m);
   }
+  // Past its critical step a bolt's segments chatter between their yield forces: bounded, so the
+  // watchdog would not see it grow, and the answer would be garbage. Refused up front.
+  if (m.settings.mode == SolverMode::dynamic && m.settings.step > 0.0 && m.settings.step >= m.bolt_hosts.critical_step)
+    fail("the forced time step {:.6g} s is above the critical step {:.6g} s of the bolts' stiffest node: their "
+         "segments would ring between their yield forces; leave set{{ step }} out to get the automatic step, or "
+         "give the bolts longer segments",
+         m.settings.step, m.bolt_hosts.critical_step);
   CyclingFlag flag(m.cycling_now);
   SolveResult result;
   double speed = 0.0;  // fastest gridpoint at the last measurement [m/s]

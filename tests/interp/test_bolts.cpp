@@ -152,6 +152,44 @@ TEST(Bolts, NodesSlidingIntoTheNextBlockKeepTheirGrout) {
   )");
 }
 
+TEST(Bolts, TheirStiffnessSetsTheDynamicTimeStep) {
+  // A stiff bolt (short segments of steel) in soft rock: the automatic step is the bolt's, and
+  // a step forced above it is refused before it runs (its segments would ring between their
+  // yield forces, bounded, so the watchdog would not see it).
+  const std::string model = std::string(kBolted) + R"(
+    material{ "rock", density = 2500, young = 1e8, poisson = 0.25 }
+    boundary{ side = "right", fix = "xy" }
+    set{ mode = "dynamic" }
+    cycle(1)
+    local bolt_only = info().step
+    -- Segments 0.1285 m, 5 kg/m over 1.5 m: a node's own bound 2 sqrt(m / k), k = 4 EA / L / 1.5
+    -- (two segments, both ends moving) + the grout.
+    local ea = 200e9 * 4.9e-4 / 1.5
+    local l = math.sqrt(3 ^ 2 + 0.6 ^ 2) / 24
+    local m = 7850 * 4.9e-4 / 1.5 * l
+    local k = 4 * ea / l + 2 * 50e6 / 1.5 * l
+    local bound = 2 * math.sqrt(m / k)
+    assert(bolt_only <= 0.9 * bound * (1 + 1e-9) and bolt_only > 0.5 * bound,
+           ("step %g, a bolt node's bound %g"):format(bolt_only, bound))
+    step_used = bolt_only
+  )";
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, model + R"(
+    cycle(2000)
+    for b in bolts() do assert(b.max_force == b.max_force, "finite") end
+  )");
+  Interpreter forced;
+  forced.context().quiet = true;
+  const std::string error = error_of(forced, model + R"(
+    set{ step = 3 * step_used }
+    cycle(5000)
+  )");
+  EXPECT_TRUE(contains(error, "test.lua:")) << error;
+  EXPECT_TRUE(contains(error, "above the critical step")) << error;
+  EXPECT_TRUE(contains(error, "bolts' stiffest node")) << error;
+}
+
 TEST(Bolts, LaidBeforeARezoneAreLaidAgain) {
   Interpreter interpreter;
   interpreter.context().quiet = true;
