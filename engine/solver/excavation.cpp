@@ -6,6 +6,9 @@
 // shared. Removing those zones at once is a sudden load that rings; with release = n the same
 // forces (stress and weight) are held as loads on those nodes and taken off linearly over the
 // next n cycles, so the new surface unloads the way a face advancing past it would.
+#include <map>
+#include <utility>
+
 #include "core/error.hpp"
 #include "core/names.hpp"
 #include "model/model.hpp"
@@ -80,6 +83,54 @@ void hold_release(Mechanics& m, const std::vector<int>& gone, long cycles) {
   r.factor = r.dof.empty() ? 0.0 : 1.0;
 }
 
+// Glued edges (region outlines, intact potential cracks) between blocks with no rock left and
+// blocks still in place: a new surface that other blocks must be able to touch (a wedge sliding
+// out of the wall onto the bench below). Unglued on both sides; true if any was.
+bool unglue_excavated(Mechanics& m, const Mesh& mesh) {
+  std::vector<char> live(mesh.block_boundary.size(), 0);
+  for (int z = 0; z < mesh.zone_count(); ++z)
+    if (m.zone_excavated[static_cast<size_t>(z)] == 0 && m.zone_material[static_cast<size_t>(z)] >= 0 &&
+        m.params[static_cast<size_t>(m.zone_material[static_cast<size_t>(z)])].model != MaterialModel::null)
+      live[static_cast<size_t>(mesh.zone_block[static_cast<size_t>(z)])] = 1;
+  // Glued half-edges by their ends (shared corners are the same numbers on both sides).
+  using Key = std::pair<std::pair<double, double>, std::pair<double, double>>;
+  std::map<Key, std::vector<std::pair<size_t, int>>> sides;  // -> (flat edge, block)
+  size_t flat = 0;
+  for (size_t block = 0; block < mesh.block_boundary.size(); ++block)
+    for (const BoundaryLoop& loop : mesh.block_boundary[block])
+      for (size_t i = 0; i < loop.gridpoints.size(); ++i, ++flat) {
+        if (!m.edge_glued[flat]) continue;
+        const Vec2 a = mesh.gp_position[static_cast<size_t>(loop.gridpoints[i])];
+        const Vec2 b = mesh.gp_position[static_cast<size_t>(loop.gridpoints[(i + 1) % loop.gridpoints.size()])];
+        const auto pa = std::make_pair(a.x, a.y), pb = std::make_pair(b.x, b.y);
+        sides[pa < pb ? Key{pa, pb} : Key{pb, pa}].push_back({flat, static_cast<int>(block)});
+      }
+  bool changed = false;
+  for (const auto& [key, edges] : sides) {
+    bool dead = false, alive = false;
+    for (const auto& [edge, block] : edges) (live[static_cast<size_t>(block)] ? alive : dead) = true;
+    if (!(dead && alive)) continue;
+    for (const auto& [edge, block] : edges) m.edge_glued[edge] = 0;
+    changed = true;
+  }
+  return changed;
+}
+
+// After reconnect(): the release's shares move from the old nodes to the new nodes of the rock
+// in place at the same gridpoints (`old_node`: gridpoint -> node before).
+void follow_release(Mechanics& m, const Mesh& mesh, const std::vector<int>& old_node) {
+  std::vector<int> moved(old_node.size() > 0 ? static_cast<size_t>(m.node_count) : 0, -1);
+  for (int z = 0; z < mesh.zone_count(); ++z) {
+    if (m.zone_excavated[static_cast<size_t>(z)] > 0) continue;
+    for (const int gp : mesh.zone_gp[static_cast<size_t>(z)])
+      moved[static_cast<size_t>(old_node[static_cast<size_t>(gp)])] = m.gp_node[static_cast<size_t>(gp)];
+  }
+  for (int& dof : m.release.dof) {
+    const int node = moved[static_cast<size_t>(dof / 2)];
+    if (node >= 0) dof = 2 * node + dof % 2;
+  }
+}
+
 }  // namespace
 
 void Model::excavate(const ExcavateDef& def) {
@@ -107,6 +158,13 @@ void Model::excavate(const ExcavateDef& def) {
     m.zone_state[static_cast<size_t>(z)] = 0;
   }
   lump_boundary_loads(m);  // with the release's share
+  const std::vector<int> old_node = m.gp_node;
+  if (unglue_excavated(m, mesh_)) {
+    reconnect(m, mesh_);
+    m.keep_fits = false;  // the zones changed, not only the nodes: sections are fitted again
+    follow_release(m, mesh_, old_node);
+    lump_boundary_loads(m);
+  }
   m.dirty = true;
 }
 

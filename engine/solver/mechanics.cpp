@@ -461,12 +461,25 @@ void Model::write_histories(const std::string& path) const {
 // ---- views ----------------------------------------------------------------------------------
 
 int Model::gridpoint_near(Vec2 point) const {
+  // Of gridpoints at one place (both sides of a joint, or of a wall excavate{} freed), the one
+  // of a block with rock in place.
+  const Mechanics& m = *mechanics_;
+  std::vector<char> rock(blocks_.blocks.size(), 0);
+  for (int z = 0; z < mesh_.zone_count(); ++z) {
+    const int material = m.zone_material.empty() ? -1 : m.zone_material[static_cast<size_t>(z)];
+    if (material >= 0 && m.zone_excavated[static_cast<size_t>(z)] == 0 &&
+        m.params[static_cast<size_t>(material)].model != MaterialModel::null)
+      rock[static_cast<size_t>(mesh_.zone_block[static_cast<size_t>(z)])] = 1;
+  }
   int best = -1;
   double best_distance = INFINITY;
+  bool best_rock = false;
   for (int gp = 0; gp < mesh_.gp_count(); ++gp) {
     const Vec2 d = mesh_.gp_position[static_cast<size_t>(gp)] - point;
     const double distance = dot(d, d);
-    if (distance < best_distance) best_distance = distance, best = gp;
+    const bool in_rock = rock[static_cast<size_t>(mesh_.gp_block[static_cast<size_t>(gp)])] != 0;
+    if (distance < best_distance || (distance == best_distance && in_rock && !best_rock))
+      best_distance = distance, best = gp, best_rock = in_rock;
   }
   return best;
 }

@@ -94,5 +94,34 @@ TEST(Excavation, CracksCarryTheStage) {
   )");
 }
 
+TEST(Excavation, TheNewSurfaceCanBeTouched) {
+  // A glued region across a block, excavated: the rock above it must land on the rock below
+  // (the region's outline was glued; excavate{} frees it on both sides), not fall through.
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, R"(
+    block{ x = {0, 10}, y = {0, 10} }
+    region{ name = "gap", polygon = {{0, 3}, {10, 3}, {10, 5}, {0, 5}} }
+    zone{ edge = 1 }
+    material{ "rock", density = 2500, young = 1e9, poisson = 0.2 }
+    assign{ material = "rock" }
+    joint_material{ "j", kn = 1e9, ks = 1e9, friction = 30 }
+    jassign{ material = "j" }
+    gravity{ 0, -9.81 }
+    boundary{ side = "bottom", fix = "xy" }
+    boundary{ side = "left", fix = "x" }
+    boundary{ side = "right", fix = "x" }
+    solve{ ratio = 1e-5 }
+    excavate{ region = "gap" }
+    cycle(8000)
+    local top = gp_near(5, 10).uy
+    assert(info().contacts > 0, "the upper rock touches the lower")
+    assert(top < -1.99 and top > -2.01, ("the top moved %g m: it should drop the gap's 2 m"):format(top))
+    -- The freed surface's gridpoints are the rock's own: gp_near picks the rock's side.
+    assert(math.abs(gp_near(5, 5).uy - top) < 0.01, "the upper rock's underside moved with it")
+    assert(math.abs(gp_near(5, 3).uy) < 0.01, "the lower rock's top stayed")
+  )");
+}
+
 }  // namespace
 }  // namespace edem::test

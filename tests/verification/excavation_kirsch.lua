@@ -47,9 +47,10 @@ local function build(label)
 end
 
 local function state()
-  local u, s = {}, {}
-  for g in gridpoints() do  -- those of the rock left in place: the wall and beyond
-    if math.sqrt(g.x ^ 2 + g.y ^ 2) >= (1 - 1e-6) * a then u[#u + 1] = { g.ux, g.uy } end
+  local u, s, rock = {}, {}, {}
+  for z in zones() do if not z.excavated then rock[z.block] = true end end
+  for g in gridpoints() do  -- those of the rock left in place (the hole's wall is its own since
+    if rock[g.block] then u[#u + 1] = { g.ux, g.uy } end  -- excavate unglued it)
   end
   for z in zones() do s[#s + 1] = { z.sxx, z.syy, z.sxy, z.excavated } end
   return { u = u, s = s, crown = -gp_near(0, a).uy, spring = -gp_near(a, 0).ux }
