@@ -19,7 +19,12 @@ RegionRef region_of(const Args& args, const char* usage) {
 
 int run_excavate(lua_State*, Context& context, const Args& args) {
   ExcavateDef def;
-  def.region = region_of(args, "excavate(\"stage1\")");
+  if (args.has("block")) {
+    if (args.has("name") || args.has("region")) fail("give a region or a block, not both");
+    def.block = static_cast<int>(args.integer("block")) - 1;
+  } else {
+    def.region = region_of(args, "excavate(\"stage1\")");
+  }
   def.release = static_cast<long>(args.integer("release"));
   context.model().excavate(def);
   return 0;
@@ -57,11 +62,14 @@ const Command& excavate_command() {
           "that the rock unloads gradually instead of ringing; solve{} does not stop before it "
           "is off. The region must take whole blocks: a name cut earlier with region{}, or a "
           "polygon along block outlines. assign{} later changes excavated zones' material "
-          "without filling them.",
+          "without filling them. excavate{ block = id } takes out one block wherever it is now, as a fallen "
+          "block is mucked out (UDEC's delete); that is no new stage.",
       .positional = {kRegionItem},
       .keys =
           {
               kRegionKey,
+              {"block", Type::integer, "", ge(1), kOptional,
+               "or a block's id (blocks()): a loose block taken out wherever it has moved to", "a region"},
               {"release", Type::integer, "cycles", ge(0), "0",
                "cycles over which the excavated zones' forces come off the new surface (0: at once)"},
           },

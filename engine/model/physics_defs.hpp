@@ -79,6 +79,7 @@ struct AssignDef {
 // Excavation of a region (solver/excavation.cpp): its zones turn null, as UDEC 7 does.
 struct ExcavateDef {
   RegionRef region;
+  int block = -1;    // or a block (0-based): a loose block taken out (mucked out) wherever it is
   long release = 0;  // cycles over which the excavated zones' forces are taken off (0: at once)
 };
 

@@ -6,6 +6,9 @@
 // shared. Removing those zones at once is a sudden load that rings; with release = n the same
 // forces (stress and weight) are held as loads on those nodes and taken off linearly over the
 // next n cycles, so the new surface unloads the way a face advancing past it would.
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <map>
 #include <utility>
 
@@ -137,22 +140,32 @@ void Model::excavate(const ExcavateDef& def) {
   Mechanics& m = *mechanics_;
   if (mesh_.zone_count() == 0) fail("there are no zones to excavate: zone{{...}} the blocks first");
   if (def.release < 0) fail("release must be >= 0 cycles, got {}", def.release);
-  const std::vector<int> zones = region_zones(*this, def.region);
+  const bool by_block = def.block >= 0;
+  if (by_block && def.block >= static_cast<int>(mesh_.block_boundary.size()))
+    fail("there is no block {} ({} blocks)", def.block + 1, mesh_.block_boundary.size());
+  const std::string label = by_block ? fmt::format("block {}", def.block + 1) : region_label(def.region);
+  std::vector<int> zones;
+  if (by_block) {
+    for (int z = mesh_.block_first_zone[static_cast<size_t>(def.block)]; z < mesh_.block_first_zone[static_cast<size_t>(def.block) + 1]; ++z)
+      zones.push_back(z);
+    if (zones.empty()) fail("{} holds no zones", label);
+  } else {
+    zones = region_zones(*this, def.region);
+  }
   for (const int z : zones) {
     const int stage = m.zone_excavated[static_cast<size_t>(z)];
-    if (stage > 0) fail("{} was excavated already (stage {})", region_label(def.region), stage);
+    if (stage > 0) fail("{} was excavated already (stage {})", label, stage);
   }
   for (const int z : zones)
     if (m.zone_material[static_cast<size_t>(z)] < 0)
-      fail("{} has zones without material: assign{{}} the rock before excavating it",
-           region_label(def.region));
+      fail("{} has zones without material: assign{{}} the rock before excavating it", label);
   if (def.release > 0) {
     prepare(m, mesh_);  // the zone geometry and the active list of now
     hold_release(m, zones, def.release);
   }
-  m.stage += 1;
+  if (!by_block) m.stage += 1;  // mucking out a fallen block is no excavation stage
   for (const int z : zones) {
-    m.zone_excavated[static_cast<size_t>(z)] = m.stage;
+    m.zone_excavated[static_cast<size_t>(z)] = std::max(m.stage, 1);
     m.stress[static_cast<size_t>(z)] = Stress{};
     m.mean_stress_ref[static_cast<size_t>(z)] = 0.0;
     m.zone_state[static_cast<size_t>(z)] = 0;

@@ -32,8 +32,9 @@
 --   Returns the list of the bolt ids laid, in order along the surface, and their count.
 --   The normal: a head inside a segment takes the segment's normal; a head on a vertex between
 --   two segments takes the mean of their unit normals (the bisector of the corner). The rock's
---   side is found at each head: zone_at() a hair's breadth (1e-6 of the surface's and bolt's
---   size) off the wall on both sides along the normal; a point is rock when a zone holds it that
+--   side is found at each head: zone_at() a tenth of the bolt's length off the wall on both
+--   sides along the normal (not nearer: a model{ tolerance } can bend the blocks' outlines off
+--   the drawn outline by a fraction of a metre); a point is rock when a zone holds it that
 --   is not excavated and has a material other than "null". Exactly one side must be rock, else
 --   the script stops: "bolts.pattern: the wall at (x, y) has rock on both sides" (or "on
 --   neither side"). Every head is placed and checked before any bolt is laid; bolt{}'s own
@@ -271,7 +272,7 @@ function bolts.pattern(t)
 
   -- Place every head and find its rock side before laying any bolt.
   local size = math.max(extent(lines), o.length)
-  local tol, probe = 1e-9 * size, 1e-6 * size
+  local tol, probe = 1e-9 * size, 0.1 * o.length
   local heads = {}
   for _, line in ipairs(lines) do heads_along(line, first, o.spacing, tol, heads) end
   local plan = {}

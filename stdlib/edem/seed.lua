@@ -10,6 +10,18 @@
 -- and Coulomb joints of Set P, gravity, in-situ stress with the cavern roof (y = 24) `depth`
 -- below the ground (default 158 m) and K0 (default 0.6), rollers on the sides and the base, the
 -- top loaded by the in-situ stress.
+--
+-- Optional keys for an excavation in the region (none given: the uniform model above):
+--   regions  list of { name = ..., polygon = ... } (e.g. edem.cavern's stages), each cut with
+--            region{} (glued outlines) after the joints, before zoning
+--   near     zone{}'s near: region names or polygons where zones are `edge`; with `far` (default
+--            edge) and `growth` (default zone{}'s 0.2) they coarsen with distance from them
+--   far, growth   zone{}'s keys
+--   tolerance     model{}'s (relative to the region's diagonal, 269 m): cuts passing closer than
+--            that to a vertex are bent through it, so no block has a shorter edge
+--
+--   local c = require("edem.cavern").warhead{}
+--   seed.region{ regions = c.stages, near = { c.outline }, edge = 1.5, far = 10 }
 local seed = {}
 
 -- Set P, the physically consistent prototype (VERIFICATION.md S.3): the model material's stresses
@@ -25,11 +37,13 @@ function seed.region(t)
   local cross, edge = t.cross_spacing or 16, t.edge or 4
   local depth, k0 = t.depth or 158, t.k0 or 0.6
   local rock, joint = seed.P.rock, seed.P.joint
-  model{ title = ("seed region, Case 3 joints, cross joints every %g m"):format(cross) }
+  model{ title = ("seed region, Case 3 joints, cross joints every %g m"):format(cross),
+         tolerance = t.tolerance }
   block{ x = {-100, 100}, y = {-90, 90} }
   jset{ angle = 60, spacing = {16, 12, 8} }
   jset{ angle = -30, spacing = cross }
-  zone{ edge = edge }
+  for _, r in ipairs(t.regions or {}) do region{ name = r.name, polygon = r.polygon } end
+  zone{ edge = edge, near = t.near, far = t.far, growth = t.growth }
   material{ "rock", density = rock.density, young = rock.young, poisson = rock.poisson }
   assign{ material = "rock" }
   joint_material{ "joint", kn = joint.kn, ks = joint.ks, friction = joint.friction }

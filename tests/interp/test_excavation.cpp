@@ -123,5 +123,25 @@ TEST(Excavation, TheNewSurfaceCanBeTouched) {
   )");
 }
 
+TEST(Excavation, AFallenBlockIsMuckedOut) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, std::string(kStack) + R"(
+    solve{ ratio = 1e-6 }
+    local upper
+    for z in zones() do if z.y > 2 then upper = z.block end end
+    excavate{ block = upper }
+    assert(stage() == 0, "mucking out is no stage")
+    for z in zones() do
+      if z.block == upper then assert(z.excavated == 1 and z.sxx == 0) else assert(not z.excavated) end
+    end
+    local ok, err = pcall(excavate, { block = upper })
+    assert(not ok and err:find("block " .. upper .. " was excavated already"), err)
+    ok, err = pcall(excavate, { block = 99 })
+    assert(not ok and err:find("there is no block 99"), err)
+    solve{ ratio = 1e-6 }
+  )");
+}
+
 }  // namespace
 }  // namespace edem::test

@@ -1,0 +1,202 @@
+-- Issue 6, acceptance: the seed cavern (the 24 m x 48 m warhead of stdlib/edem/cavern.lua, crown
+-- at y = 24) in the seed region (stdlib/edem/seed.lua: 200 m x 180 m, Case 3 joints, 60 deg at
+-- 16, 12, 8 m, and the cross set at -30 deg every 16 m; Set P: elastic rock, Coulomb joints
+-- kn = 83.9 MPa/m, ks = 3.60 MPa/m, phi = 31.2 deg, c = 0; gravity; roof H = 158 m deep, K0 = 0.6)
+-- is excavated in the seed's 16 steps (arch centre, left, right, 13 benches), each solved to
+-- equilibrium. Measured from the in-situ state (displacements reset after it is solved): the crown
+-- settlement (the gridpoint of the rock left in place nearest to the crown), the contacts in state
+-- "slip", the cracks (none expected: no crackseed{}) and the run time.
+--   run(false): no support; must run to the end without an error.
+--   run(true):  pattern 1 bolts (5 m long at 1.5 m spacing) installed after each stage; must give
+--               a lower crown settlement and fewer slipping contacts than run(false), and reach
+--               equilibrium at every stage.
+-- Label "long": ctest -L long -R seed_cavern_stages. Optional arguments for trying other settings:
+--   edem run seed_cavern_stages.lua [edge near the cavern [m]] [release [cycles]] [ratio]
+local check = require "edem.check"
+local seed = require "edem.seed"
+local cavern = require "edem.cavern"
+local rockbolts = require "edem.bolts"
+
+local EDGE = tonumber(arg and arg[1]) or 1.5      -- zone edge near the cavern [m]
+local FAR = 10                                    -- zone edge far away [m]
+local RELEASE = tonumber(arg and arg[2]) or 1000  -- cycles over which each stage's pull comes off
+local RATIO = tonumber(arg and arg[3]) or 1e-5    -- equilibrium: unbalanced-force ratio per stage
+local MAX_CYCLES = 40000                          -- per stage (see the note on run(false) below)
+-- Cuts passing within 1e-3 of the diagonal (0.27 m) of a vertex are bent through it. With the
+-- default 1e-9 a cross joint passes 0.17 m above the arch's right foot (4, 16) and leaves a
+-- 0.024 m2 sliver whose 0.17 m edges let the joint close (0.13 m at 11 MPa under kn = 83.9 MPa/m)
+-- past the overlap watchdog's limit, half the shortest edge, in stage 2.
+local TOLERANCE = 1e-3
+
+-- Pattern 1: 5 m bolts at 1.5 m spacing (in the plane and out of it) normal to the permanent walls
+-- a stage exposes (edem.bolts.exposed: the arch after the arch steps, the side walls after each
+-- bench, the floor after the last), laid once that stage is solved, 10 segments each. The steel is
+-- the seed's (VERIFICATION.md S.3: E = 190 GPa, A = 446 mm^2, rho = 6083 kg/m^3, yield force
+-- 0.156 MN, failure strain 3.5 %); its grout values do not read as cable inputs, so the bond is
+-- VERIFICATION.md §7a's reference grout (k_b = 50 MN/m/m, s_b = 0.2 MN/m).
+local function install_bolts(c, stage)
+  if stage == 1 then
+    bolt_material{ "pattern1", young = 190e9, area = 446e-6, density = 6083, yield_tension = 0.156e6,
+                   failure_strain = 0.035, bond_stiffness = 50e6, bond_strength = 0.2e6, spacing = 1.5 }
+  end
+  local _, count = rockbolts.pattern{ surface = rockbolts.exposed(c.stages[stage], c.outline), spacing = 1.5,
+                                      length = 5, segments = 10, material = "pattern1" }
+  return count
+end
+
+-- The blocks inside the cavern (any of its stages).
+local function cavern_blocks(c)
+  local names, inside = {}, {}
+  for _, s in ipairs(c.stages) do names[s.name] = true end
+  for b in blocks() do
+    for _, r in ipairs(b.regions) do
+      if names[r] then inside[b.id] = true end
+    end
+  end
+  return inside
+end
+
+-- The gridpoints of the rock left in place nearest to the crown (several when joints meet there;
+-- their settlement is averaged), as a list of ids.
+local function crown_gridpoints(c)
+  local inside = cavern_blocks(c)
+  local best, ids = math.huge, {}
+  for g in gridpoints() do
+    if not inside[g.block] then
+      local d = math.sqrt((g.x - c.crown[1]) ^ 2 + (g.y - c.crown[2]) ^ 2)
+      if d < best - 1e-9 then best, ids = d, { g.id }
+      elseif d <= best + 1e-9 then ids[#ids + 1] = g.id end
+    end
+  end
+  return ids, best
+end
+
+-- Downward displacement of those gridpoints since the in-situ state [m], averaged.
+local function settlement(ids)
+  local want, sum = {}, 0
+  for _, id in ipairs(ids) do want[id] = true end
+  for g in gridpoints() do
+    if want[g.id] then sum = sum - g.uy end
+  end
+  return sum / #ids
+end
+
+-- Contacts slipping now (state "slip"), and those that have slipped at some time (slip > 0).
+local function slipping()
+  local now, ever = 0, 0
+  for c in contacts() do
+    if c.state == "slip" then now = now + 1 end
+    if c.slip > 0 then ever = ever + 1 end
+  end
+  return now, ever
+end
+
+-- Blocks falling into the opening (moved down more than FALLEN on average) are taken out while
+-- they fall, every MUCK cycles, as a fallen block is mucked out (excavate{ block }); their number
+-- is reported. Left in, a wedge sliding out of the wall lands on the bench below, and the impact
+-- of a fall in static mode (its masses scaled for equilibrium, not for motion) closes the soft
+-- Set P joint at the bench's corner past the overlap watchdog's limit.
+local FALLEN = 1.0  -- [m]
+local MUCK = 200    -- [cycles]
+local function muck_out()
+  local drop, count = {}, {}
+  for g in gridpoints() do
+    drop[g.block] = (drop[g.block] or 0) - g.uy
+    count[g.block] = (count[g.block] or 0) + 1
+  end
+  local gone = {}
+  for z in zones() do if z.excavated then gone[z.block] = true end end
+  local n = 0
+  for block, d in pairs(drop) do
+    if not gone[block] and d / count[block] > FALLEN then
+      excavate{ block = block }
+      n = n + 1
+    end
+  end
+  return n
+end
+
+-- Builds the model from scratch, excavates the 16 stages, solves each; returns the measurements.
+local function run(bolted)
+  local label = bolted and "pattern 1 bolts" or "no support"
+  local clock0, wall0 = os.clock(), os.time()
+  local c = cavern.warhead{}
+  local n = seed.region{ regions = c.stages, near = { c.outline }, edge = EDGE, far = FAR,
+                         tolerance = TOLERANCE }
+  print(("%s: %d blocks, %d zones, %d gridpoints (edge %g m near the cavern, %g m far)"):format(
+    label, n.blocks, n.zones, n.gridpoints, EDGE, FAR))
+  local r = solve{ ratio = 1e-6, max_cycles = 20000 }
+  if not r.converged then error(("%s: the in-situ state did not converge (ratio %.3g)"):format(label, r.ratio)) end
+  reset{ "displacement", "velocity" }
+  local crown, off = crown_gridpoints(c)
+  print(("  crown: %d gridpoint(s) %.3g m from (%g, %g)"):format(#crown, off, c.crown[1], c.crown[2]))
+  print(("  %5s %-20s %7s %9s %12s %6s %8s %8s"):format("stage", "name", "cycles", "ratio",
+                                                      "crown [m]", "slip", "slipped", "cpu [s]"))
+  local out = { label = label, unconverged = {}, cycles = 0, fallen = 0 }
+  local mucking = every(MUCK, function() out.fallen = out.fallen + muck_out() end)
+  for i, s in ipairs(c.stages) do
+    excavate{ region = s.name, release = RELEASE }
+    local ok, result = pcall(solve, { ratio = RATIO, max_cycles = MAX_CYCLES })
+    if not ok then
+      print(("  stage %d (%s) failed after %.1f s cpu:"):format(i, s.name, os.clock() - clock0))
+      error(result, 0)
+    end
+    if not result.converged then out.unconverged[#out.unconverged + 1] = i end
+    out.cycles = out.cycles + result.cycles
+    if bolted then out.bolts = (out.bolts or 0) + install_bolts(c, i) end
+    local now, ever = slipping()
+    print(("  %5d %-20s %7d %9.2e %12.5f %6d %8d %8.1f%s"):format(i, s.name, result.cycles,
+      result.ratio, settlement(crown), now, ever, os.clock() - clock0,
+      result.converged and "" or "  NOT CONVERGED"))
+  end
+  cancel(mucking)
+  if bolted then  -- how the bolts fared
+    local yielded, broken, removed, largest, n = 0, 0, 0, 0, 0
+    for b in bolts() do
+      n = n + 1
+      if b.yielded > 0 then yielded = yielded + 1 end
+      if b.broken > 0 then broken = broken + 1 end
+      if b.removed then removed = removed + 1 end
+      largest = math.max(largest, b.max_force)
+    end
+    print(("  bolts: %d laid, %d with a yielded segment, %d broken, %d out of service; largest force %.4g N/m"):format(
+      n, yielded, broken, removed, largest))
+  end
+  out.settlement = settlement(crown)
+  out.slipping, out.slipped = slipping()
+  out.cracks = info().cracks
+  out.cpu = os.clock() - clock0
+  out.wall = os.time() - wall0
+  print(("%s: %d stages, %d cycles, crown settlement %.4f m, %d contacts slipping (%d have "
+         .. "slipped), %d blocks fallen, %d bolts, %d cracks, %.1f s cpu, %d s wall"):format(label, stage(),
+    out.cycles, out.settlement, out.slipping, out.slipped, out.fallen or 0, out.bolts or 0, out.cracks, out.cpu,
+    out.wall))
+  return out
+end
+
+-- Without support a stage may stop at MAX_CYCLES short of equilibrium: the wedge on the right wall
+-- between the 60 deg joint from (12, 5.2) and a cross joint from (12, 11.8) (9.5 m2, its apex
+-- 2.9 m into the rock) is free to slide into the cavern on the 60 deg joint (phi = 31.2 deg, c = 0)
+-- once the benches below it are gone, as the seed's UDEC run shows the right wall collapsing (its
+-- Figure 8c). Such stages are listed, not failed; the run must end without an error. With bolts
+-- every stage must reach equilibrium.
+local plain = run(false)
+print(("no support: stages stopped short of equilibrium: %s"):format(
+  #plain.unconverged > 0 and table.concat(plain.unconverged, ", ") or "none"))
+check.report("no support: cracks (no crackseed)", plain.cracks, 0, 0, { absolute = true })
+
+-- Measured 2026-11-22 (edge 1.5 m, 2 threads): no support 0.6566 m, 8 slipping, 3 blocks fallen,
+-- 10 s wall; pattern 1 (87 bolts) 0.6567 m, 10 slipping, 3 fallen, stage 12 short of equilibrium
+-- (a block creeping on yielded bolts), 26 s wall. The bolts do not change the crown's settlement:
+-- with Set P's soft joints the roof settles with the rock mass well beyond their 5 m, and their
+-- yield force spread over 1.5 m (70 kPa) is small against 4 MPa of overburden. These checks fail.
+local bolted = run(true)
+check.report("bolts: stages left short of equilibrium", #bolted.unconverged, 0, 0, { absolute = true })
+check.report("bolts: cracks (no crackseed)", bolted.cracks, 0, 0, { absolute = true })
+check.report("bolts: crown settlement lower than without (1 = yes)",
+             bolted.settlement < plain.settlement and 1 or 0, 1, 0, { absolute = true })
+check.report("bolts: fewer slipping contacts than without (1 = yes)",
+             bolted.slipping < plain.slipping and 1 or 0, 1, 0, { absolute = true })
+print(("crown settlement %.4f m -> %.4f m with bolts, slipping contacts %d -> %d"):format(
+  plain.settlement, bolted.settlement, plain.slipping, bolted.slipping))
+check.finish()
