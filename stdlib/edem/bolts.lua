@@ -65,74 +65,19 @@ setmetatable(bolts, { __call = function(_, ...) return iterate(...) end })
 
 -- Reading and checking the arguments -----------------------------------------------------------
 
-local function show(v, depth)
-  if type(v) == "string" then return ("%q"):format(v) end
-  if type(v) == "number" then return ("%.10g"):format(v) end
-  if type(v) == "table" and (depth or 0) < 2 and #v <= 4 then  -- a point, a short list
-    local items = {}
-    for i, x in ipairs(v) do items[i] = show(x, (depth or 0) + 1) end
-    local more = next(v, #v > 0 and #v or nil) ~= nil
-    return "{" .. table.concat(items, ", ") .. (more and (#v > 0 and ", ...}" or "...}") or "}")
-  end
-  return tostring(v)
-end
+local args = require "edem.args"
+local show, as_point = args.show, args.point
 
-local function finite(v)
-  return type(v) == "number" and v == v and v > -math.huge and v < math.huge
-end
-
-local function as_point(v)
-  if type(v) ~= "table" then return nil end
-  local x, y = v[1], v[2]
-  if x == nil and y == nil then x, y = v.x, v.y end
-  return finite(x) and finite(y) and { x, y } or nil
-end
-
+-- The keys of its own; the rest are edem.args's.
 local kinds = {
-  positive = { says = "a number > 0",
-               read = function(v) return finite(v) and v > 0 and v or nil end },
-  nonnegative = { says = "a number >= 0",
-                  read = function(v) return finite(v) and v >= 0 and v or nil end },
-  count = { says = "an integer >= 1",
-            read = function(v)
-              return finite(v) and v >= 1 and v < 2 ^ 31 and math.tointeger(v) or nil
-            end },
-  name = { says = "a non-empty string",
-           read = function(v) return type(v) == "string" and v ~= "" and v or nil end },
   ["function"] = { says = "a function(x, y) returning true for the heads to keep",
                    read = function(v) return type(v) == "function" and v or nil end },
   surface = { says = "a polyline { {x, y}, ... } or a list of them",
               read = function(v) return type(v) == "table" and v or nil end },
 }
 
--- Reads t against spec, a list of { key, kind, default }; an unknown key or a wrong value raises
--- an error blamed on the caller of the public function (which calls read directly).
-local function read(fn, t, spec)
-  if type(t) ~= "table" then
-    error(("bolts.%s: takes a table of named keys, got %s"):format(fn, show(t)), 3)
-  end
-  local known, keys = {}, {}
-  for _, s in ipairs(spec) do known[s[1]] = true; keys[#keys + 1] = s[1] end
-  for k in pairs(t) do
-    if not known[k] then
-      error(("bolts.%s: unknown key %s (keys: %s)"):format(fn, show(k), table.concat(keys, ", ")),
-            3)
-    end
-  end
-  local o = {}
-  for _, s in ipairs(spec) do
-    local key, kind, v = s[1], s[2], t[s[1]]
-    if v == nil then
-      o[key] = s[3]
-    else
-      o[key] = kinds[kind].read(v)
-      if o[key] == nil then
-        error(("bolts.%s: %s = %s: must be %s"):format(fn, key, show(v), kinds[kind].says), 3)
-      end
-    end
-  end
-  return o
-end
+-- Reads t against spec (edem.args); errors are blamed on the caller of the public function.
+local function read(fn, t, spec) return args.read("bolts", fn, t, spec, kinds) end
 
 -- A polyline's points, copied, or nil and what is wrong with it (`label` names it).
 local function read_polyline(v, label, least)

@@ -76,68 +76,11 @@ local pi = math.pi
 
 -- Reading and checking the arguments -----------------------------------------------------------
 
-local function show(v)
-  if type(v) == "string" then return ("%q"):format(v) end
-  if type(v) == "number" then return ("%.10g"):format(v) end
-  return tostring(v)
-end
+local args = require "edem.args"
+local show = args.show
 
-local function finite(v)
-  return type(v) == "number" and v == v and v > -math.huge and v < math.huge
-end
-
-local kinds = {
-  positive = { says = "a number > 0",
-               read = function(v) return finite(v) and v > 0 and v or nil end },
-  count = { says = "an integer >= 1",
-            read = function(v)
-              return finite(v) and v >= 1 and v < 2 ^ 31 and math.tointeger(v) or nil
-            end },
-  point = { says = "a point {x, y}", read = function(v)
-    if type(v) ~= "table" then return nil end
-    local x, y = v[1] or v.x, v[2] or v.y
-    return finite(x) and finite(y) and { x, y } or nil
-  end },
-  name = { says = "a non-empty string",
-           read = function(v) return type(v) == "string" and v ~= "" and v or nil end },
-}
-
--- Reads t against spec, a list of { key, kind, default }, the kind a name in `kinds` or a list
--- of allowed strings. Returns a table of the values (the defaults filled in, nil when none); an
--- unknown key or a wrong value raises an error blamed on the caller of the public function.
-local function read(fn, t, spec)
-  if t == nil then t = {} end
-  if type(t) ~= "table" then
-    error(("cavern.%s: takes a table of named keys, got %s"):format(fn, show(t)), 3)
-  end
-  local known, keys = {}, {}
-  for _, s in ipairs(spec) do known[s[1]] = true; keys[#keys + 1] = s[1] end
-  for k in pairs(t) do
-    if not known[k] then
-      error(("cavern.%s: unknown key %s (keys: %s)"):format(fn, show(k), table.concat(keys, ", ")),
-            3)
-    end
-  end
-  local o = {}
-  for _, s in ipairs(spec) do
-    local key, kind, v = s[1], s[2], t[s[1]]
-    if v == nil then
-      o[key] = s[3]
-    elseif type(kind) == "table" then
-      for _, allowed in ipairs(kind) do if v == allowed then o[key] = v end end
-      if o[key] == nil then
-        error(("cavern.%s: %s = %s: must be one of \"%s\""):format(fn, key, show(v),
-          table.concat(kind, "\", \"")), 3)
-      end
-    else
-      o[key] = kinds[kind].read(v)
-      if o[key] == nil then
-        error(("cavern.%s: %s = %s: must be %s"):format(fn, key, show(v), kinds[kind].says), 3)
-      end
-    end
-  end
-  return o
-end
+-- Reads t against spec (edem.args); errors are blamed on the caller of the public function.
+local function read(fn, t, spec) return args.read("cavern", fn, t, spec) end
 
 -- Geometry ---------------------------------------------------------------------------------------
 --
