@@ -61,11 +61,22 @@ TEST(Bolts, TwoThreadsGiveTheSameBitsAsOne) {
 }
 
 TEST(Bolts, HoldTheBlockAndCarryItsPull) {
+  {  // Without the bolt the block slides off the joint: the grout's pull on the rock is what holds it.
+    std::string model = kBolted;
+    model.erase(model.find("  bolt{ from"));
+    Interpreter loose;
+    loose.context().quiet = true;
+    expect_runs(loose, model + R"(
+      local r = solve{ ratio = 1e-7, max_cycles = 20000 }
+      assert(not r.converged and gp_near(4, 2).uy < -1, "the block slides without the bolt")
+    )");
+  }
   Interpreter interpreter;
   interpreter.context().quiet = true;
   expect_runs(interpreter, std::string(kBolted) + R"(
     local r = solve{ ratio = 1e-7, max_cycles = 200000 }
     assert(r.converged, "solved")
+    assert(gp_near(4, 2).uy > -0.02, "held within 2 cm")
     local b
     for x in bolts() do b = x end
     -- The segment across the joint carries the pull; the grout takes it off towards the ends.
