@@ -181,11 +181,11 @@ void retire(Mechanics& m, int bolt) {
   }
 }
 
-// The force on node `node` of bolt `b` along its axis (towards the bolt's end), with the pull of a
-// force-driven head [N/m].
+// The force on node `node` of bolt `b` along the direction it slides in (towards the bolt's end),
+// with the pull of a force-driven head [N/m].
 double axial_force(const Mechanics& m, int b, int node) {
   const BoltHosts& h = m.bolt_hosts;
-  double force = dot(m.bolts.nodes.force[at(node)], m.bolts.nodes.axis[at(node)]);
+  double force = dot(m.bolts.nodes.force[at(node)], h.dir[at(node)]);
   if (node == m.bolts.bolt_first_node[at(b)] && h.drive[at(b)] == HeadDrive::force) force -= h.drive_value[at(b)];
   return force;
 }
@@ -224,6 +224,7 @@ int install_bolt(Mechanics& m, const BoltLine& given, int material) {
     h.u0.push_back(hits[i].zone >= 0 ? host_point_u(m, hits[i].zone, hits[i].weight) : Vec2{});
     h.host_u.push_back({});
     h.slide.push_back(0.0);
+    h.dir.push_back(alone.nodes.axis[i]);
     h.rate.push_back(0.0);
     h.mass.push_back(0.0);
   }
@@ -298,7 +299,7 @@ void bolt_cycle(Mechanics& m, const Motion& motion, bool record_start, bool meas
   }
   for (size_t i = 0; i < count; ++i) {
     if (h.zone[i] >= 0) h.host_u[i] = host_point_u(m, h.zone[i], h.weight[i]) - h.u0[i];
-    n.u[i] = h.host_u[i] + h.slide[i] * n.axis[i];
+    n.u[i] = h.host_u[i] + h.slide[i] * h.dir[i];
   }
   bolt_forces(set, h.host_u);
 
@@ -377,12 +378,14 @@ bool rehost_bolts(Mechanics& m) {
   bool moved = false;
   for (size_t i = 0; i < n.size(); ++i) {
     if (h.zone[i] < 0 || (n.bond_length[i] > 0.0 && n.grout_stiffness[i] == 0.0)) continue;  // none, or out
+    // Still within reach of its host zone (inside it, or just outside the rock's edge as a
+    // head at a wall is): nothing to do, and no search (this runs every batch).
     const Vec2 p = n.x[i] + n.u[i];
-    const std::array<double, 3> w = barycentric(m, h.zone[i], p);
-    if (std::min({w[0], w[1], w[2]}) >= -1e-9) continue;
+    const double reach = kReachOfZone * std::sqrt(2.0 * m.geometry[at(h.zone[i])].area);
+    if (nearest_in(m, h.zone[i], p).second <= reach) continue;
     if (!grid) grid = std::make_unique<ZoneGrid>(m);
-    const Hit hit = grid->locate(p, kReachOfZone * grid->zone_size());
-    if (hit.zone == h.zone[i]) continue;  // just outside the rock's edge, as at a wall
+    const Hit hit = grid->locate(p, reach);
+    if (hit.zone == h.zone[i]) continue;
     moved = true;
     if (hit.zone < 0) {
       // Pulled out of the hole: nothing to grip. Across the axis it still follows its last
@@ -397,6 +400,7 @@ bool rehost_bolts(Mechanics& m) {
     h.host_u[i] = n.u[i];
     if (h.slide_start.size() == n.size()) h.slide_start[i] -= h.slide[i];
     h.slide[i] = 0.0;
+    h.dir[i] = n.axis[i];
     n.grout_rel[i] = {};
   }
   return moved;

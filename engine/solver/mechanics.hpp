@@ -98,7 +98,11 @@ struct BoltHosts {
   std::vector<std::array<double, 3>> weight;  // its shape functions at the material point
   std::vector<Vec2> u0;        // the point's displacement (its corners' u) when it became the host [m]
   std::vector<Vec2> host_u;    // the point's displacement since the bolt's installation [m]
-  std::vector<double> slide;   // along the axis against the point [m]
+  std::vector<double> slide;   // along `dir` against the point [m]
+  // The direction it slides in: the bolt's axis when the node was tied to its point. Fixed
+  // between ties: following the axis as it turns would move the node across it by slide x turn,
+  // which turns the axis further.
+  std::vector<Vec2> dir;
   std::vector<double> rate;    // d slide / dt [m/s]
   std::vector<double> mass;    // cycling mass (scaled in static mode) [kg/m]
   std::vector<double> slide_start, r_start;  // adaptive damping: as for the rock's nodes

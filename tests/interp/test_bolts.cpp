@@ -160,6 +160,11 @@ TEST(Bolts, NodesSlidingIntoTheNextBlockKeepTheirGrout) {
     for step = 10, 30 do
       assert(math.abs(loads[step] - 0.1e6) < 0.002e6, ("step %d: %g"):format(step, loads[step]))
     end
+    -- And the bolt stays straight: the nodes slide along it, not off it (a slide along an axis
+    -- that follows its own turning would feed back on itself).
+    for b in bolts() do
+      for _, s in ipairs(b.segments) do assert(math.abs(s.y) < 1e-9, ("a node off the axis: y = %g"):format(s.y)) end
+    end
   )");
 }
 
