@@ -152,9 +152,13 @@ class ZoneGrid {
   std::vector<int> first_, list_;
 };
 
-// How far outside the rock a bolt node may be given and still be tied to it: a fraction of a
-// zone, for heads placed on a wall that has moved since the outline was drawn.
+// How far outside the rock a bolt node may be given and still be tied to it: a fraction of the
+// zone's size, for heads placed on a wall that has moved since the outline was drawn.
 constexpr double kReachOfZone = 0.25;
+
+double reach_of(const Mechanics& m, int zone) {
+  return kReachOfZone * std::sqrt(2.0 * m.geometry[at(zone)].area);
+}
 
 Vec2 host_point_u(const Mechanics& m, int zone, const std::array<double, 3>& w) {
   const auto& node = m.geometry[at(zone)].node;
@@ -210,6 +214,7 @@ int install_bolt(Mechanics& m, const BoltLine& given, int material) {
   for (size_t i = 0; i < count; ++i) {
     const Vec2 p = alone.nodes.x[i];
     hits[i] = grid.locate(p, kReachOfZone * grid.zone_size());
+    if (hits[i].zone >= 0 && nearest_in(m, hits[i].zone, p).second > reach_of(m, hits[i].zone)) hits[i] = {};
     if (hits[i].zone < 0 && alone.nodes.bond_length[i] > 0.0)
       fail("the bolt's point ({:.6g}, {:.6g}), {:.4g} m from its head, is not in the rock (outside the "
            "model, or in excavated or null zones): a grouted bolt must lie in rock",
@@ -381,7 +386,7 @@ bool rehost_bolts(Mechanics& m) {
     // Still within reach of its host zone (inside it, or just outside the rock's edge as a
     // head at a wall is): nothing to do, and no search (this runs every batch).
     const Vec2 p = n.x[i] + n.u[i];
-    const double reach = kReachOfZone * std::sqrt(2.0 * m.geometry[at(h.zone[i])].area);
+    const double reach = reach_of(m, h.zone[i]);
     if (nearest_in(m, h.zone[i], p).second <= reach) continue;
     if (!grid) grid = std::make_unique<ZoneGrid>(m);
     const Hit hit = grid->locate(p, reach);

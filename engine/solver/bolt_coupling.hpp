@@ -5,8 +5,9 @@
 // Across its axis a bolt node moves with its host point (a 2D bolt has no bending stiffness, so
 // nothing else would hold it there); along the axis it slides against the point, by `slide`,
 // integrated like a rock node with the same damping and resisted by the grout and its segments.
-// A node that has slid out of its host zone is tied again, at the next contact detection, to the
-// zone it is in now, in whichever block: bolts cross joints and cracks.
+// A node that has slid out of its host zone (beyond a quarter of the zone's size) is tied again,
+// before the next batch of cycles, to the zone it is in now, in whichever block: bolts cross
+// joints and cracks. One drawn out of the rock loses its grout.
 #pragma once
 
 #include "solver/cycle.hpp"
