@@ -145,8 +145,9 @@ const Command& bolt_command() {
   static const Command command{
       .name = "bolt",
       .help =
-          "Lays a straight grouted bolt in the rock as it stands now, from its head (at the "
-          "wall) to its end, as a line of segments with nodes: axial force EA/L with tensile "
+          "Lays a straight grouted bolt from its head (at the wall) to its end, as a line of "
+          "segments with nodes; the ends are points as the model was drawn, like every point a "
+          "script gives, and the bolt is laid, stress-free, where that rock is now: axial force EA/L with tensile "
           "and compressive yield, broken past the failure strain; the grout ties each node to "
           "the rock around it along the bolt (bond stiffness and strength), and the node follows "
           "the rock across the bolt, into the next block when it slides there. Every grouted "

@@ -21,26 +21,31 @@ bool rock_zone(const Mechanics& m, int z) {
   return material >= 0 && m.params[at(material)].model != MaterialModel::null && m.zone_excavated[at(z)] == 0;
 }
 
-Vec2 node_now(const Mechanics& m, int n) {
+// Where points are looked for: as the model was drawn (the mesh's positions, the frame of every
+// point a script gives: regions, gp_near, zone_at, bolt{}'s ends), or as the rock stands now.
+enum class Frame { drawn, now };
+
+Vec2 node_at(const Mechanics& m, int n, Frame frame) {
+  if (frame == Frame::drawn) return {m.position[2 * at(n)], m.position[2 * at(n) + 1]};
   return {m.origin[2 * at(n)] + m.u[2 * at(n)], m.origin[2 * at(n) + 1] + m.u[2 * at(n) + 1]};
 }
 
 Vec2 node_u(const Mechanics& m, int n) { return {m.u[2 * at(n)], m.u[2 * at(n) + 1]}; }
 
-// Barycentric coordinates of p in zone z as it stands now.
-std::array<double, 3> barycentric(const Mechanics& m, int z, Vec2 p) {
+// Barycentric coordinates of p in zone z.
+std::array<double, 3> barycentric(const Mechanics& m, int z, Vec2 p, Frame frame) {
   const auto& node = m.geometry[at(z)].node;
-  const Vec2 a = node_now(m, node[0]), b = node_now(m, node[1]), c = node_now(m, node[2]);
+  const Vec2 a = node_at(m, node[0], frame), b = node_at(m, node[1], frame), c = node_at(m, node[2], frame);
   const double twice = cross(b - a, c - a);
   return {cross(b - p, c - p) / twice, cross(c - p, a - p) / twice, cross(a - p, b - p) / twice};
 }
 
 // The point of zone z nearest to p, as barycentric weights, and its distance from p.
-std::pair<std::array<double, 3>, double> nearest_in(const Mechanics& m, int z, Vec2 p) {
-  const std::array<double, 3> w = barycentric(m, z, p);
+std::pair<std::array<double, 3>, double> nearest_in(const Mechanics& m, int z, Vec2 p, Frame frame) {
+  const std::array<double, 3> w = barycentric(m, z, p, frame);
   if (std::min({w[0], w[1], w[2]}) >= 0.0) return {w, 0.0};
   const auto& node = m.geometry[at(z)].node;
-  const Vec2 corner[3] = {node_now(m, node[0]), node_now(m, node[1]), node_now(m, node[2])};
+  const Vec2 corner[3] = {node_at(m, node[0], frame), node_at(m, node[1], frame), node_at(m, node[2], frame)};
   std::array<double, 3> best{};
   double best_distance = std::numeric_limits<double>::infinity();
   for (int i = 0; i < 3; ++i) {
@@ -62,10 +67,10 @@ struct Hit {
   std::array<double, 3> weight{};
 };
 
-// Rock zones bucketed by their bounding boxes in the current configuration.
+// Rock zones bucketed by their bounding boxes in one frame.
 class ZoneGrid {
  public:
-  explicit ZoneGrid(const Mechanics& m) : m_(m) {
+  ZoneGrid(const Mechanics& m, Frame frame) : m_(m), frame_(frame) {
     double area = 0.0;
     std::vector<int> zones;
     lo_ = {INFINITY, INFINITY};
@@ -75,7 +80,7 @@ class ZoneGrid {
       zones.push_back(z);
       area += m.geometry[at(z)].area;
       for (const int n : m.geometry[at(z)].node) {
-        const Vec2 p = node_now(m, n);
+        const Vec2 p = node_at(m, n, frame);
         lo_ = {std::min(lo_.x, p.x), std::min(lo_.y, p.y)};
         hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
       }
@@ -118,7 +123,7 @@ class ZoneGrid {
       for (int i = std::max(0, ci - ring); i <= std::min(nx_ - 1, ci + ring); ++i)
         for (int k = first_[at(j * nx_ + i)]; k < first_[at(j * nx_ + i) + 1]; ++k) {
           const int z = list_[at(k)];
-          const auto [w, distance] = nearest_in(m_, z, p);
+          const auto [w, distance] = nearest_in(m_, z, p, frame_);
           if (distance < best || (distance == best && z < hit.zone)) {
             best = distance;
             hit = {z, w};
@@ -137,7 +142,7 @@ class ZoneGrid {
   std::array<int, 4> box(int z) const {
     Vec2 a{INFINITY, INFINITY}, b{-INFINITY, -INFINITY};
     for (const int n : m_.geometry[at(z)].node) {
-      const Vec2 p = node_now(m_, n);
+      const Vec2 p = node_at(m_, n, frame_);
       a = {std::min(a.x, p.x), std::min(a.y, p.y)};
       b = {std::max(b.x, p.x), std::max(b.y, p.y)};
     }
@@ -146,6 +151,7 @@ class ZoneGrid {
   }
 
   const Mechanics& m_;
+  Frame frame_;
   Vec2 lo_;
   double cell_ = 1.0, zone_size_ = 0.0;
   int nx_ = 0, ny_ = 0;
@@ -199,6 +205,45 @@ bool driven(const Mechanics& m, int b, int node) {
   return node == m.bolts.bolt_first_node[at(b)] && m.bolt_hosts.drive[at(b)] == HeadDrive::velocity;
 }
 
+// A bolt's nodes, laid out along the points as drawn, moved to where their material points are
+// now (a node without one, on the free tail outside the rock, moves as its nearest hosted node),
+// its segments stress-free at their lengths there.
+void lay_where_the_rock_is(Mechanics& m, int bolt, const std::vector<Hit>& hits) {
+  BoltSet& set = m.bolts;
+  BoltNodes& n = set.nodes;
+  const size_t first = at(set.bolt_first_node[at(bolt)]), count = hits.size();
+  std::vector<Vec2> shift(count);
+  std::vector<char> known(count, 0);
+  for (size_t i = 0; i < count; ++i) {
+    if (hits[i].zone < 0) continue;
+    const auto& node = m.geometry[at(hits[i].zone)].node;
+    Vec2 now{};
+    for (int c = 0; c < 3; ++c) now = now + hits[i].weight[at(c)] * node_at(m, node[at(c)], Frame::now);
+    shift[i] = now - n.x[first + i];
+    known[i] = 1;
+  }
+  for (size_t i = 0; i < count; ++i) {
+    if (known[i]) continue;
+    size_t best = count;
+    for (size_t j = 0; j < count; ++j)
+      if (known[j] && (best == count || (j > i ? j - i : i - j) < (best > i ? best - i : i - best))) best = j;
+    if (best < count) shift[i] = shift[best];
+  }
+  for (size_t i = 0; i < count; ++i) n.x[first + i] = n.x[first + i] + shift[i];
+  BoltSegments& g = set.segments;
+  for (int s = set.bolt_first_segment[at(bolt)]; s < set.bolt_first_segment[at(bolt) + 1]; ++s) {
+    const Vec2 d = n.x[at(g.b[at(s)])] - n.x[at(g.a[at(s)])];
+    g.rest[at(s)] = norm(d);
+    g.direction[at(s)] = (1.0 / norm(d)) * d;
+  }
+  for (size_t i = first; i < first + count; ++i) n.axis[i] = {};
+  for (int s = set.bolt_first_segment[at(bolt)]; s < set.bolt_first_segment[at(bolt) + 1]; ++s) {
+    n.axis[at(g.a[at(s)])] = n.axis[at(g.a[at(s)])] + g.direction[at(s)];
+    n.axis[at(g.b[at(s)])] = n.axis[at(g.b[at(s)])] + g.direction[at(s)];
+  }
+  for (size_t i = first; i < first + count; ++i) n.axis[i] = (1.0 / norm(n.axis[i])) * n.axis[i];
+}
+
 }  // namespace
 
 int install_bolt(Mechanics& m, const BoltLine& given, int material) {
@@ -208,13 +253,14 @@ int install_bolt(Mechanics& m, const BoltLine& given, int material) {
   BoltLine line = given;
   line.material = 0;
   add_bolt(alone, line);
-  const ZoneGrid grid(m);
+  const ZoneGrid grid(m, Frame::drawn);
   const size_t count = alone.nodes.size();
   std::vector<Hit> hits(count);
   for (size_t i = 0; i < count; ++i) {
     const Vec2 p = alone.nodes.x[i];
     hits[i] = grid.locate(p, kReachOfZone * grid.zone_size());
-    if (hits[i].zone >= 0 && nearest_in(m, hits[i].zone, p).second > reach_of(m, hits[i].zone)) hits[i] = {};
+    if (hits[i].zone >= 0 && nearest_in(m, hits[i].zone, p, Frame::drawn).second > reach_of(m, hits[i].zone))
+      hits[i] = {};
     if (hits[i].zone < 0 && alone.nodes.bond_length[i] > 0.0)
       fail("the bolt's point ({:.6g}, {:.6g}), {:.4g} m from its head, is not in the rock (outside the "
            "model, or in excavated or null zones): a grouted bolt must lie in rock",
@@ -222,14 +268,16 @@ int install_bolt(Mechanics& m, const BoltLine& given, int material) {
   }
   line.material = material;
   const int bolt = add_bolt(m.bolts, line);
+  lay_where_the_rock_is(m, bolt, hits);
   BoltHosts& h = m.bolt_hosts;
+  const size_t first = at(m.bolts.bolt_first_node[at(bolt)]);
   for (size_t i = 0; i < count; ++i) {
     h.zone.push_back(hits[i].zone);
     h.weight.push_back(hits[i].weight);
     h.u0.push_back(hits[i].zone >= 0 ? host_point_u(m, hits[i].zone, hits[i].weight) : Vec2{});
     h.host_u.push_back({});
     h.slide.push_back(0.0);
-    h.dir.push_back(alone.nodes.axis[i]);
+    h.dir.push_back(m.bolts.nodes.axis[first + i]);
     h.rate.push_back(0.0);
     h.mass.push_back(0.0);
   }
@@ -387,8 +435,8 @@ bool rehost_bolts(Mechanics& m) {
     // head at a wall is): nothing to do, and no search (this runs every batch).
     const Vec2 p = n.x[i] + n.u[i];
     const double reach = reach_of(m, h.zone[i]);
-    if (nearest_in(m, h.zone[i], p).second <= reach) continue;
-    if (!grid) grid = std::make_unique<ZoneGrid>(m);
+    if (nearest_in(m, h.zone[i], p, Frame::now).second <= reach) continue;
+    if (!grid) grid = std::make_unique<ZoneGrid>(m, Frame::now);
     const Hit hit = grid->locate(p, reach);
     if (hit.zone == h.zone[i]) continue;
     moved = true;

@@ -15,10 +15,11 @@
 
 namespace edem {
 
-// Adds a bolt at the current state (its ends as the rock stands now) and returns its index.
-// Every grouted node must lie in a rock zone (material not null, not excavated); an ungrouted
-// node (the free length) may lie outside. Throws naming the first node that does not, and then
-// changes nothing.
+// Adds a bolt and returns its index. Its ends are points as the model was drawn (the frame of
+// every point a script gives); each node is tied to the material point there and laid where that
+// point is now, stress-free. Every grouted node must lie in a rock zone (material not null, not
+// excavated; or within a quarter of one's size, for heads on a wall); an ungrouted node (the free
+// length) may lie outside. Throws naming the first node that does not, and then changes nothing.
 int install_bolt(Mechanics& m, const BoltLine& line, int material);
 
 // Takes out of service the bolts with a node in a zone that is no longer rock (excavated or

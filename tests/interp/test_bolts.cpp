@@ -87,6 +87,30 @@ TEST(Bolts, HoldTheBlockAndCarryItsPull) {
   )");
 }
 
+TEST(Bolts, AreLaidWhereTheDrawnRockIsNow) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, std::string(kBolted) + R"lua(
+    solve{ ratio = 1e-7, max_cycles = 200000 }
+    -- The right block has moved a few mm; a bolt drawn from a gridpoint of it, (x, y) as drawn,
+    -- is laid where that rock is now, stress-free.
+    local g = gp_near(3.7, 0.4)
+    local id = bolt{ from = {g.x, g.y}, to = {g.x, g.y + 1.2}, segments = 6, material = "rebar" }
+    local b
+    for x in bolts() do if x.id == id then b = x end end
+    local a = b.segments[1].a
+    assert(math.abs(a.x - (g.x + g.ux)) < 1e-9 and math.abs(a.y - (g.y + g.uy)) < 1e-9,
+           ("head at (%.9g, %.9g), the rock there at (%.9g, %.9g)"):format(a.x, a.y, g.x + g.ux, g.y + g.uy))
+    assert(math.abs(g.uy) > 1e-3, "the rock had moved")
+    cycle(10)
+    for x in bolts() do
+      if x.id == id then
+        for _, s in ipairs(x.segments) do assert(math.abs(s.force) < 1, ("force %g"):format(s.force)) end
+      end
+    end
+  )lua");
+}
+
 TEST(Bolts, GoOutOfServiceInExcavatedGround) {
   Interpreter interpreter;
   interpreter.context().quiet = true;

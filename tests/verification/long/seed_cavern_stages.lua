@@ -151,16 +151,18 @@ local function run(bolted)
   end
   cancel(mucking)
   if bolted then  -- how the bolts fared
-    local yielded, broken, removed, largest, n = 0, 0, 0, 0, 0
+    local yielded, broken, removed, largest, n, crossing = 0, 0, 0, 0, 0, 0
     for b in bolts() do
       n = n + 1
+      local head, tip = zone_at(b.head.x, b.head.y), zone_at(b.tip.x, b.tip.y)
+      if head and tip and head.block ~= tip.block then crossing = crossing + 1 end
       if b.yielded > 0 then yielded = yielded + 1 end
       if b.broken > 0 then broken = broken + 1 end
       if b.removed then removed = removed + 1 end
       largest = math.max(largest, b.max_force)
     end
-    print(("  bolts: %d laid, %d with a yielded segment, %d broken, %d out of service; largest force %.4g N/m"):format(
-      n, yielded, broken, removed, largest))
+    print(("  bolts: %d laid, %d crossing a joint or outline, %d with a yielded segment, %d broken, %d out of "
+           .. "service; largest force %.4g N/m"):format(n, crossing, yielded, broken, removed, largest))
   end
   out.settlement = settlement(crown)
   out.slipping, out.slipped = slipping()
