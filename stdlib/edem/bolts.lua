@@ -29,7 +29,10 @@
 --   where          function(x, y) -> boolean, optional: lay only the bolts whose head (x, y) it
 --                  accepts; the others keep their places in the spacing
 --   free_length m  >= 0, optional: passed on to bolt{} (the ungrouted length from the head)
---   Returns the list of the bolt ids laid, in order along the surface, and their count.
+--   Returns the list of the bolt ids laid, in order along the surface, and their count. Where the
+--   wall is no longer there (a block fell out of it, or the blocks' outline lies a little off the
+--   drawn one) a bolt starts where the rock begins along its normal, looked for in steps of a
+--   40th of its length up to half of it; a head with no rock that near is left out.
 --   The normal: a head inside a segment takes the segment's normal; a head on a vertex between
 --   two segments takes the mean of their unit normals (the bisector of the corner). The rock's
 --   side is found at each head: zone_at() a tenth of the bolt's length off the wall on both
@@ -230,8 +233,14 @@ function bolts.pattern(t)
         error(("bolts.pattern: the wall at (%s, %s) has rock %s"):format(show(x), show(y),
           plus and "on both sides" or "on neither side"), 2)
       end
-      local sign = plus and 1 or -1
-      plan[#plan + 1] = { x = x, y = y, dx = sign * n[1], dy = sign * n[2] }
+      local dx, dy = (plus and 1 or -1) * n[1], (plus and 1 or -1) * n[2]
+      -- Where the wall has gone (a block fell out of it) the bolt starts where the rock begins.
+      local start = is_rock(x + tol * dx, y + tol * dy) and 0 or nil
+      for k = 1, 20 do
+        if start then break end
+        if is_rock(x + k * o.length / 40 * dx, y + k * o.length / 40 * dy) then start = k * o.length / 40 end
+      end
+      if start then plan[#plan + 1] = { x = x + start * dx, y = y + start * dy, dx = dx, dy = dy } end
     end
   end
 
