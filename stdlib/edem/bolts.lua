@@ -29,18 +29,18 @@
 --   where          function(x, y) -> boolean, optional: lay only the bolts whose head (x, y) it
 --                  accepts; the others keep their places in the spacing
 --   free_length m  >= 0, optional: passed on to bolt{} (the ungrouted length from the head)
---   Returns the list of the bolt ids laid, in order along the surface, and their count. Where the
---   wall is no longer there (a block fell out of it, or the blocks' outline lies a little off the
---   drawn one) a bolt starts where the rock begins along its normal, looked for in steps of a
---   40th of its length up to half of it; a head with no rock that near is left out.
+--   Returns the list of the bolt ids laid, in order along the surface, and their count.
 --   The normal: a head inside a segment takes the segment's normal; a head on a vertex between
 --   two segments takes the mean of their unit normals (the bisector of the corner). The rock's
 --   side is found at each head: zone_at() a tenth of the bolt's length off the wall on both
 --   sides along the normal (not nearer: a model{ tolerance } can bend the blocks' outlines off
 --   the drawn outline by a fraction of a metre); a point is rock when a zone holds it that
---   is not excavated and has a material other than "null". Exactly one side must be rock, else
---   the script stops: "bolts.pattern: the wall at (x, y) has rock on both sides" (or "on
---   neither side"). Every head is placed and checked before any bolt is laid; bolt{}'s own
+--   is not excavated and has a material other than "null". Rock on both sides stops the script:
+--   "bolts.pattern: the wall at (x, y) has rock on both sides". Rock on neither (the wall is
+--   gone there: a block fell out of it) takes the side where rock comes first along the normal,
+--   up to half the bolt's length away, and the bolt starts where the rock begins (found in steps
+--   of a 40th of its length); with none that near: "... has rock on neither side". A bolt also
+--   starts where the rock begins if the blocks' outline lies a little off the drawn wall. Every head is placed and checked before any bolt is laid; bolt{}'s own
 --   refusal (a bolt running out of the rock into a neighbouring opening, an unknown material)
 --   stops the script naming that bolt, with the bolts before it laid.
 --
@@ -227,19 +227,32 @@ function bolts.pattern(t)
   for _, h in ipairs(heads) do
     local x, y, n = h.point[1], h.point[2], h.normal
     if not o.where or o.where(x, y) then
+      -- The rock's side: the one with rock a tenth of the bolt off the wall. With neither (the
+      -- wall has gone: a block fell out of it) the side where rock comes first, up to half the
+      -- bolt's length away; the bolt then starts where the rock begins.
+      local function rock_within(sx, sy)
+        if is_rock(x + tol * sx, y + tol * sy) then return 0 end
+        for k = 1, 20 do
+          if is_rock(x + k * o.length / 40 * sx, y + k * o.length / 40 * sy) then return k * o.length / 40 end
+        end
+      end
       local plus = is_rock(x + probe * n[1], y + probe * n[2])
       local minus = is_rock(x - probe * n[1], y - probe * n[2])
-      if plus == minus then
-        error(("bolts.pattern: the wall at (%s, %s) has rock %s"):format(show(x), show(y),
-          plus and "on both sides" or "on neither side"), 2)
+      if plus and minus then
+        error(("bolts.pattern: the wall at (%s, %s) has rock on both sides"):format(show(x), show(y)), 2)
       end
-      local dx, dy = (plus and 1 or -1) * n[1], (plus and 1 or -1) * n[2]
-      -- Where the wall has gone (a block fell out of it) the bolt starts where the rock begins.
-      local start = is_rock(x + tol * dx, y + tol * dy) and 0 or nil
-      for k = 1, 20 do
-        if start then break end
-        if is_rock(x + k * o.length / 40 * dx, y + k * o.length / 40 * dy) then start = k * o.length / 40 end
+      local sign, start = plus and 1 or -1, nil
+      if plus or minus then
+        start = rock_within(sign * n[1], sign * n[2])
+      else
+        local ahead, behind = rock_within(n[1], n[2]), rock_within(-n[1], -n[2])
+        if not ahead and not behind then
+          error(("bolts.pattern: the wall at (%s, %s) has rock on neither side"):format(show(x), show(y)), 2)
+        end
+        sign = (ahead and (not behind or ahead <= behind)) and 1 or -1
+        start = sign == 1 and ahead or behind
       end
+      local dx, dy = sign * n[1], sign * n[2]
       if start then plan[#plan + 1] = { x = x + start * dx, y = y + start * dy, dx = dx, dy = dy } end
     end
   end

@@ -331,6 +331,39 @@ do
   check.report("free_length = 0.5 + 4 segments: bolts without 5 segments", free, 0, 0, { absolute = true })
 end
 
+-- 4b. A wall with a hole in it (a block fell out of it: a 1 m deep pocket behind the right wall,
+--     excavated too): the bolts whose heads fall in the pocket's mouth start where the rock begins,
+--     at its back (within the search's step, a 40th of the bolt's length), the rest on the wall.
+do
+  local r = cavern.rectangle{ width = 8, height = 6 }
+  model{ title = "a wall with a pocket" }
+  block{ x = { -15, 15 }, y = { -15, 15 } }
+  region(r.stages[1])
+  region{ name = "pocket", polygon = { { 4, -1 }, { 5, -1 }, { 5, 1 }, { 4, 1 } } }
+  zone{ edge = 0.25, far = 3, near = { r.stages[1].name, "pocket" } }
+  material{ "rock", young = 10e9, poisson = 0.25, density = 2600 }
+  assign{ material = "rock" }
+  bolt_material{ "rebar", young = 200e9, area = 4.9e-4, yield_tension = 0.156e6,
+                 failure_strain = 0.035, bond_stiffness = 50e6, bond_strength = 0.2e6 }
+  excavate(r.stages[1].name)
+  excavate("pocket")
+  local _, n = bolts.pattern{ surface = { { 4, -3 }, { 4, 3 } }, spacing = 1, length = 4, segments = 8,
+                              material = "rebar" }
+  local moved, on_wall = 0, 0
+  for b in bolts() do
+    if math.abs(b.head.y) < 1 then
+      if b.head.x >= 5 - 1e-9 and b.head.x <= 5 + 0.1 + 1e-9 and math.abs(b.tip.x - b.head.x - 4) < 1e-9 then
+        moved = moved + 1
+      end
+    elseif math.abs(b.head.x - 4) < 1e-9 then
+      on_wall = on_wall + 1
+    end
+  end
+  check.report("pocket: bolts laid along the wall", n, 6, 0, { absolute = true })
+  check.report("pocket: bolts starting at its back", moved, 2, 0, { absolute = true })
+  check.report("pocket: bolts on the wall elsewhere", on_wall, 4, 0, { absolute = true })
+end
+
 -- 5. The seed's sequence in small: in-situ stress, each stage excavated with a release and
 --    solved, then bolted; the bolts laid early take tension as the benches go down, none goes
 --    out of service.
