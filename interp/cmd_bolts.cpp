@@ -35,8 +35,6 @@ int run_bolt(lua_State* L, Context& context, const Args& args) {
   def.to = args.point("to");
   if (args.has("segments")) def.segments = static_cast<int>(args.integer("segments"));
   if (args.has("segment_length")) def.segment_length = args.number("segment_length");
-  const bool count = args.has("segments"), length = args.has("segment_length");
-  if (count == length) fail("give segments = n or segment_length = l (one of them)");
   def.free_length = args.number("free_length");
   def.material = args.string("material");
   lua_pushinteger(L, context.model().add_bolt(def) + 1);
@@ -48,7 +46,6 @@ int run_bolt_head(lua_State*, Context& context, const Args& args) {
   def.bolt = static_cast<int>(args.integer("bolt")) - 1;
   if (args.has("velocity")) def.velocity = args.number("velocity");
   if (args.has("force")) def.force = args.number("force");
-  if (args.has("velocity") && args.has("force")) fail("give velocity = v or force = f, not both");
   context.model().bolt_head(def);
   return 0;
 }

@@ -157,20 +157,24 @@ void update_segments(BoltSet& set) {
   }
 }
 
-void update_grout(BoltSet& set, std::span<const Vec2> host_u) {
+void update_axes(BoltSet& set) {
   BoltNodes& n = set.nodes;
   const BoltSegments& g = set.segments;
-  if (host_u.size() != n.size())
-    fail("bolt grout: {} host displacements for {} bolt nodes", host_u.size(), n.size());
-  // Axis at a node: the mean direction of its (one or two) segments.
   std::fill(n.axis.begin(), n.axis.end(), Vec2{});
   for (size_t s = 0; s < g.size(); ++s) {
     const size_t a = index(g.a[s]), b = index(g.b[s]);
     n.axis[a] = n.axis[a] + g.direction[s];
     n.axis[b] = n.axis[b] + g.direction[s];
   }
+  for (size_t i = 0; i < n.size(); ++i) n.axis[i] = (1.0 / norm(n.axis[i])) * n.axis[i];
+}
+
+void update_grout(BoltSet& set, std::span<const Vec2> host_u) {
+  BoltNodes& n = set.nodes;
+  if (host_u.size() != n.size())
+    fail("bolt grout: {} host displacements for {} bolt nodes", host_u.size(), n.size());
+  update_axes(set);
   for (size_t i = 0; i < n.size(); ++i) {
-    n.axis[i] = (1.0 / norm(n.axis[i])) * n.axis[i];
     const Vec2 rel = n.u[i] - host_u[i];
     const double ds = dot(rel - n.grout_rel[i], n.axis[i]);
     n.grout_rel[i] = rel;

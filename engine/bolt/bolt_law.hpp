@@ -160,7 +160,10 @@ int add_bolt(BoltSet& set, const BoltLine& line);
 // Segment directions, forces and states from the nodes' current positions (x + u).
 void update_segments(BoltSet& set);
 
-// Node axes (from the segment directions) and grout forces from the nodes' displacements and the
+// Node axes: the mean direction of each node's (one or two) segments, as last updated.
+void update_axes(BoltSet& set);
+
+// Node axes (update_axes) and grout forces from the nodes' displacements and the
 // rock's at each node (`host_u`: one per node, since the bolt's installation [m]; the grout force
 // grows as the node moves towards the bolt's end relative to the rock).
 void update_grout(BoltSet& set, std::span<const Vec2> host_u);

@@ -236,12 +236,7 @@ void lay_where_the_rock_is(Mechanics& m, int bolt, const std::vector<Hit>& hits)
     g.rest[at(s)] = norm(d);
     g.direction[at(s)] = (1.0 / norm(d)) * d;
   }
-  for (size_t i = first; i < first + count; ++i) n.axis[i] = {};
-  for (int s = set.bolt_first_segment[at(bolt)]; s < set.bolt_first_segment[at(bolt) + 1]; ++s) {
-    n.axis[at(g.a[at(s)])] = n.axis[at(g.a[at(s)])] + g.direction[at(s)];
-    n.axis[at(g.b[at(s)])] = n.axis[at(g.b[at(s)])] + g.direction[at(s)];
-  }
-  for (size_t i = first; i < first + count; ++i) n.axis[i] = (1.0 / norm(n.axis[i])) * n.axis[i];
+  update_axes(set);  // the other bolts' are what their last cycle made them anyway
 }
 
 }  // namespace
