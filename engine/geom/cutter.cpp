@@ -160,9 +160,11 @@ class BaseCutter {
       if (fixes == 0) break;
       out.snapped_vertices += fixes;
       if (round + 1 == kMaxSnapRounds)
-        fail("cannot resolve geometry features smaller than the tolerance ({:.3g} m) in block {}; "
-             "move the cuts apart or change model{{tolerance=}}",
-             tolerance_, base_index_ + 1);
+        fail("cannot resolve geometry features smaller than the tolerance ({:.3g} m) in block {}: "
+             "near ({:.4g}, {:.4g}) {} keep coming closer than that after being bent together "
+             "(cuts crossing at a shallow angle?); move the cuts apart or change "
+             "model{{tolerance=}}",
+             tolerance_, base_index_ + 1, last_fix_.x, last_fix_.y, describe_pieces(last_bent_));
     }
     out.dropped_cuts += dropped_;
     extract(out);
@@ -340,15 +342,47 @@ class BaseCutter {
     return changed;
   }
 
+  // "joint set 1 and crackseed 2": the inputs the pieces come from, as a script names them.
+  std::string describe_pieces(const std::vector<int>& ids) const {
+    std::vector<std::string> names;
+    for (int id : ids) {
+      const EdgeOrigin& o = pieces_[id].origin;
+      std::string name;
+      switch (o.kind) {
+        case EdgeKind::boundary: name = "the block's outline"; break;
+        case EdgeKind::joint: name = fmt::format("joint set {}", o.set + 1); break;
+        case EdgeKind::crack: name = fmt::format("crack {}", o.source + 1); break;
+        case EdgeKind::region: name = fmt::format("region {}", o.source + 1); break;
+        case EdgeKind::potential: name = fmt::format("crackseed {}", o.source + 1); break;
+      }
+      if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+    }
+    if (names.empty()) return "cuts";
+    if (names.size() == 1) return fmt::format("cuts of {}", names[0]);
+    std::string out = names[0];
+    for (size_t i = 1; i + 1 < names.size(); ++i) out += ", " + names[i];
+    return fmt::format("cuts of {} and {}", out, names.back());
+  }
+
+  // Fixes every small feature not near one fixed earlier in this round: there the arrangement
+  // is stale until it is rebuilt (a fix bends whole cuts, but elsewhere by less than the
+  // tolerance, and the last round checks everything afresh). One fix a round ran out of rounds
+  // where a crackseed{} lays its cuts across the joints.
   int snap_small_features() {
     const double slack = 4.0 * tolerance_;
-    int fixes = 0;
+    std::vector<Vec2> fixed_at;
+    auto near_a_fix = [&](Vec2 p) {
+      return std::any_of(fixed_at.begin(), fixed_at.end(), [&](Vec2 q) {
+        return std::abs(p.x - q.x) < 2.0 * slack && std::abs(p.y - q.y) < 2.0 * slack;
+      });
+    };
     for (const FaceRings& face : inside_) {
       std::vector<Halfedge> edges = face.outer;
       for (const auto& hole : face.holes) edges.insert(edges.end(), hole.begin(), hole.end());
       for (const Halfedge& hv : edges) {
         const Vertex v = hv->source();
         const Vec2 pv = to_vec(v->point());
+        if (near_a_fix(pv)) continue;
         for (const Halfedge& he : edges) {
           if (he->source() == v || he->target() == v) continue;
           // Cheap double-precision filter first.
@@ -360,15 +394,18 @@ class BaseCutter {
           if (CGAL::compare(CGAL::squared_distance(v->point(), s), Kernel::FT(tolerance2_)) !=
               CGAL::SMALLER)
             continue;
+          std::vector<int> ids = cut_pieces_at(v);
+          for (int id : he->curve().data()) ids.push_back(id);
           if (fix(v, he)) {
-            ++fixes;
-            // Later checks in this face use stale geometry; rebuild first.
-            return fixes;
+            fixed_at.push_back(pv);
+            last_fix_ = pv;
+            last_bent_ = ids;
+            break;
           }
         }
       }
     }
-    return fixes;
+    return static_cast<int>(fixed_at.size());
   }
 
   Ring make_ring(const std::vector<Halfedge>& halfedges) const {
@@ -442,6 +479,8 @@ class BaseCutter {
   const std::vector<Polygon>& regions_;
   double tolerance2_;
   double tolerance_;
+  Vec2 last_fix_{};             // where the last small feature was, for the error message
+  std::vector<int> last_bent_;  // the pieces its fix bent
   std::vector<Piece> pieces_;
   std::vector<Point> base_vertices_;
   Arrangement arrangement_;
