@@ -30,6 +30,7 @@ const std::vector<const Command*>& commands() {
       &cycle_command(),          //
       &solve_command(),          //
       &reset_command(),          //
+      &prepass_command(),        // cmd_prepass.cpp
       &excavate_command(),       // cmd_excavation.cpp
       &fill_command(),           //
       &stage_command(),          //

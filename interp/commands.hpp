@@ -32,6 +32,7 @@ const Command& boundary_command();
 const Command& set_command();
 const Command& cycle_command();
 const Command& solve_command();
+const Command& prepass_command();
 const Command& reset_command();
 const Command& every_command();
 const Command& cancel_command();

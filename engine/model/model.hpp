@@ -18,6 +18,7 @@
 #include "geom/zoning.hpp"
 #include "model/defs.hpp"
 #include "model/physics_defs.hpp"
+#include "prepass/prepass.hpp"
 
 namespace edem {
 
@@ -93,6 +94,9 @@ class Model {
   // Exceptions thrown by callbacks and history samplers pass through unchanged.
   void cycle(long count);
   SolveResult solve(const SolveDef& def);
+  // The implicit elastoplastic prepass (prepass/model_prepass.cpp): solves the present state and
+  // then each stage excavated in turn, on copies; the model itself is left as it was.
+  PrepassResult prepass(const PrepassDef& def);
   SolverInfo solver_info() const;
   bool cycling_started() const;
   bool cycling_now() const;  // inside cycle() or solve(), e.g. while a callback runs

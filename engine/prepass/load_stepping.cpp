@@ -1,0 +1,214 @@
+#include "prepass/load_stepping.hpp"
+
+#include <kinsol/kinsol.h>
+#include <nvector/nvector_serial.h>
+#include <sunlinsol/sunlinsol_klu.h>
+#include <sunmatrix/sunmatrix_sparse.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+
+#include "core/error.hpp"
+#include "prepass/eigen_linear_solver.hpp"
+
+namespace edem {
+namespace {
+
+// What KINSOL's callbacks see.
+struct System {
+  const Mechanics* m = nullptr;
+  ImplicitProblem* p = nullptr;
+  std::vector<double> r0;     // out-of-balance force at the stage's start, per unknown
+  double load = 0.0;          // load factor a
+  double scale = 1.0;         // force scale
+  std::vector<double> u;      // per node component, the unknowns scattered in
+  std::vector<double> force;  // per node component
+  std::vector<Eigen::Triplet<double, int>> triplets;
+  LoadStep* log = nullptr;
+  std::string error;          // KINSOL's last message
+};
+
+
+int residual(N_Vector x, N_Vector f, void* data) {
+  System& s = *static_cast<System*>(data);
+  scatter_unknowns(*s.p, N_VGetArrayPointer_Serial(x), s.u);
+  evaluate(*s.m, *s.p, s.u, s.force);
+  double* out = N_VGetArrayPointer_Serial(f);
+  sum_to_unknowns(*s.p, s.force, out);
+  bool finite = true;
+  for (size_t k = 0; k < s.r0.size(); ++k) {
+    out[k] -= (1.0 - s.load) * s.r0[k];
+    finite = finite && std::isfinite(out[k]);
+  }
+  return finite ? 0 : 1;  // > 0: recoverable, the line search steps back
+}
+
+int jacobian(N_Vector x, N_Vector f, SUNMatrix jac, void* data, N_Vector, N_Vector) {
+  System& s = *static_cast<System*>(data);
+  const double* fx = N_VGetArrayPointer_Serial(f);
+  const sunindextype n = N_VGetLength_Serial(f);
+  double largest = 0.0;
+  for (sunindextype k = 0; k < n; ++k) largest = std::max(largest, std::abs(fx[k]));
+  s.log->residuals.push_back(largest / s.scale);
+  scatter_unknowns(*s.p, N_VGetArrayPointer_Serial(x), s.u);
+  tangent(*s.m, *s.p, s.u, s.triplets);
+  Eigen::SparseMatrix<double, Eigen::ColMajor, sunindextype> k(n, n);
+  k.setFromTriplets(s.triplets.begin(), s.triplets.end());
+  k.makeCompressed();
+  if (SUNSparseMatrix_NNZ(jac) < k.nonZeros() && SUNSparseMatrix_Reallocate(jac, k.nonZeros()) != 0) return -1;
+  std::memcpy(SUNSparseMatrix_IndexPointers(jac), k.outerIndexPtr(), sizeof(sunindextype) * static_cast<size_t>(n + 1));
+  std::memcpy(SUNSparseMatrix_IndexValues(jac), k.innerIndexPtr(), sizeof(sunindextype) * static_cast<size_t>(k.nonZeros()));
+  std::memcpy(SUNSparseMatrix_Data(jac), k.valuePtr(), sizeof(double) * static_cast<size_t>(k.nonZeros()));
+  return 0;
+}
+
+void keep_error(int, const char*, const char*, char* message, void* data) {
+  static_cast<System*>(data)->error = message;
+}
+
+// SUNDIALS objects of one stage, freed in any case.
+struct Kinsol {
+  SUNContext context = nullptr;
+  void* memory = nullptr;
+  N_Vector x = nullptr, ones = nullptr, fscale = nullptr;
+  SUNMatrix jac = nullptr;
+  SUNLinearSolver linear = nullptr;
+  ~Kinsol() {
+    if (memory) KINFree(&memory);
+    if (linear) SUNLinSolFree(linear);
+    if (jac) SUNMatDestroy(jac);
+    if (x) N_VDestroy(x);
+    if (ones) N_VDestroy(ones);
+    if (fscale) N_VDestroy(fscale);
+    if (context) SUNContext_Free(&context);
+  }
+};
+
+void check(int flag, const char* what) {
+  if (flag < 0) fail("{} failed (SUNDIALS flag {})", what, flag);
+}
+
+std::string flag_name(int flag) {
+  char* name = KINGetReturnFlagName(flag);  // malloc'ed
+  std::string out = name ? name : "?";
+  std::free(name);
+  return out;
+}
+
+double infinity_norm(const std::vector<double>& v) {
+  double largest = 0.0;
+  for (double x : v) largest = std::max(largest, std::abs(x));
+  return largest;
+}
+
+}  // namespace
+
+StageLog solve_stage(const Mechanics& m, ImplicitProblem& p, const NewtonSettings& settings, const std::string& stage,
+                     std::vector<std::uint8_t>& yielded) {
+  const auto start = std::chrono::steady_clock::now();
+  StageLog log;
+  const sunindextype n = p.unknowns;
+  yielded.assign(p.zones.size(), 0);
+  if (n == 0) return log;
+
+  System s;
+  s.m = &m;
+  s.p = &p;
+  s.u = p.u0;
+  evaluate(m, p, p.u0, s.force);
+  s.r0.resize(static_cast<size_t>(n));
+  std::vector<double> applied(static_cast<size_t>(n)), out(static_cast<size_t>(n));
+  sum_to_unknowns(p, s.force, s.r0.data());
+  sum_to_unknowns(p, p.applied, applied.data());
+  // The force scale: the larger of what is released and what is applied, or, for a model with
+  // neither, the forces a zone stress of 1 Pa would give.
+  s.scale = std::max({infinity_norm(s.r0), infinity_norm(applied), 1e-300});
+  log.scale = s.scale;
+
+  Kinsol k;
+  check(SUNContext_Create(nullptr, &k.context), "SUNContext_Create");
+  k.x = N_VNew_Serial(n, k.context);
+  k.ones = N_VNew_Serial(n, k.context);
+  k.fscale = N_VNew_Serial(n, k.context);
+  N_VConst(1.0, k.ones);
+  N_VConst(1.0 / s.scale, k.fscale);
+  // Room for a full 6 x 6 block per zone corner pair: reallocated by the Jacobian if short.
+  k.jac = SUNSparseMatrix(n, n, std::max<sunindextype>(1, 36 * static_cast<sunindextype>(p.zones.size())), CSC_MAT,
+                          k.context);
+  switch (settings.solver) {
+    case PrepassSolver::klu: k.linear = SUNLinSol_KLU(k.x, k.jac, k.context); break;
+    case PrepassSolver::lu: k.linear = make_eigen_linear_solver(k.context, EigenFactorisation::lu); break;
+    case PrepassSolver::ldlt: k.linear = make_eigen_linear_solver(k.context, EigenFactorisation::ldlt); break;
+  }
+  if (!k.x || !k.ones || !k.fscale || !k.jac || !k.linear) fail("out of memory for {} unknowns", n);
+  k.memory = KINCreate(k.context);
+  if (!k.memory) fail("KINCreate failed");
+  check(KINInit(k.memory, residual, k.x), "KINInit");
+  check(KINSetUserData(k.memory, &s), "KINSetUserData");
+  check(KINSetErrHandlerFn(k.memory, keep_error, &s), "KINSetErrHandlerFn");
+  check(KINSetLinearSolver(k.memory, k.linear, k.jac), "KINSetLinearSolver");
+  check(KINSetJacFn(k.memory, jacobian), "KINSetJacFn");
+  check(KINSetMaxSetupCalls(k.memory, 1), "KINSetMaxSetupCalls");  // a fresh tangent every iteration
+  check(KINSetFuncNormTol(k.memory, settings.tolerance), "KINSetFuncNormTol");
+  check(KINSetScaledStepTol(k.memory, 1e-300), "KINSetScaledStepTol");  // converged only on the force
+  check(KINSetNumMaxIters(k.memory, settings.max_iterations), "KINSetNumMaxIters");
+
+  std::vector<double> unknowns(static_cast<size_t>(n));
+  double done = 0.0, size = 1.0 / settings.steps;
+  int halvings = 0;
+  while (done < 1.0) {
+    const double to = done + size >= 1.0 - 1e-9 ? 1.0 : done + size;  // no sliver step from rounding
+    s.load = to;
+    log.steps.push_back({done, to, false, {}});
+    s.log = &log.steps.back();
+    gather_unknowns(p, p.u0, N_VGetArrayPointer_Serial(k.x));
+    s.error.clear();
+    // Full Newton steps first: the return mapping's tangent jumps where a zone's active surface
+    // changes, and a line search on |F| then stalls (measured on Salencon, psi = 0: stuck at 1e-5
+    // of the force scale at small load steps, where full steps converge in 4 or 5 iterations). A
+    // step that fails so is tried again with KINSOL's line search before it is cut back.
+    long iterations = 0;
+    int flag = KINSol(k.memory, k.x, KIN_NONE, k.ones, k.fscale);
+    KINGetNumNonlinSolvIters(k.memory, &iterations);
+    log.iterations += static_cast<int>(iterations);
+    if (flag < 0) {
+      gather_unknowns(p, p.u0, N_VGetArrayPointer_Serial(k.x));
+      s.log->residuals.clear();
+      flag = KINSol(k.memory, k.x, KIN_LINESEARCH, k.ones, k.fscale);
+      KINGetNumNonlinSolvIters(k.memory, &iterations);
+      log.iterations += static_cast<int>(iterations);
+    }
+    // Check the answer on its own terms: KINSOL's step-size stops are not convergence.
+    scatter_unknowns(p, N_VGetArrayPointer_Serial(k.x), s.u);
+    evaluate(m, p, s.u, s.force);
+    sum_to_unknowns(p, s.force, out.data());
+    double largest = 0.0;
+    for (size_t j = 0; j < out.size(); ++j) largest = std::max(largest, std::abs(out[j] - (1.0 - to) * s.r0[j]));
+    const bool ok = flag >= 0 && largest <= settings.tolerance * s.scale;
+    if (ok) {
+      s.log->residuals.push_back(largest / s.scale);
+      s.log->converged = true;
+      p.u0 = s.u;
+      p.stress0 = p.stress;
+      for (size_t z = 0; z < p.zones.size(); ++z) yielded[z] |= p.state[z];
+      done = to;
+      halvings = 0;
+      size = std::min(2.0 * size, 1.0 / settings.steps);
+      continue;
+    }
+    ++log.cutbacks;
+    if (++halvings > settings.max_cutbacks)
+      fail("{}: Newton did not converge from load factor {:.6g} to {:.6g} after {} cut-backs: out-of-balance "
+           "force {:.3g} of the scale {:.3g} N/m (KINSOL: {}); more steps, or a softer load path, may help",
+           stage, done, to, settings.max_cutbacks, largest / s.scale, s.scale,
+           s.error.empty() ? flag_name(flag) : s.error);
+    size = 0.5 * (to - done);  // of the step tried, which may have been clamped at the end
+  }
+  log.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return log;
+}
+
+}  // namespace edem

@@ -1,0 +1,20 @@
+// One stage of the prepass: Newton (KINSOL, with line search) on the implicit problem, its
+// out-of-balance force at the start applied in load steps, cut back when Newton fails.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "prepass/implicit_problem.hpp"
+#include "prepass/prepass.hpp"
+
+namespace edem {
+
+// Solves the problem from its start (p.u0, p.stress0): R0, the out-of-balance force there, is
+// applied in steps; at load factor a the system is force(u) - (1 - a) R0 = 0. On return p.u0 and
+// p.stress0 are the solution, and `yielded` (per problem zone) has the state bits of every
+// converged step or'ed in. Throws edem::Error naming `stage` when a step fails after the cut-backs.
+StageLog solve_stage(const Mechanics& m, ImplicitProblem& p, const NewtonSettings& settings, const std::string& stage,
+                     std::vector<std::uint8_t>& yielded);
+
+}  // namespace edem

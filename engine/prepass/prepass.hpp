@@ -1,0 +1,66 @@
+// The implicit elastoplastic prepass (DESIGN.md §6): the model solved statically, implicitly,
+// from its present state through excavation stages, to find where the rock yields and how the
+// principal stresses point, before the explicit run (which it leaves untouched).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "constitutive/mohr_coulomb.hpp"
+#include "core/vec2.hpp"
+#include "model/defs.hpp"
+
+namespace edem {
+
+enum class PrepassSolver { klu, lu, ldlt };  // KLU, or Eigen's SparseLU / SimplicialLDLT
+
+struct NewtonSettings {
+  int steps = 10;                // load steps per stage
+  double tolerance = 1e-8;       // converged: |out-of-balance force| <= tolerance x force scale, per component
+  int max_iterations = 30;       // Newton iterations per load step before it is cut back
+  int max_cutbacks = 10;         // halvings of one step before the stage fails
+  PrepassSolver solver = PrepassSolver::lu;
+};
+
+struct LoadStep {
+  double from = 0.0, to = 0.0;   // load factor
+  bool converged = false;
+  std::vector<double> residuals;  // |force|_inf / scale at each Newton iterate, the last one converged
+};
+
+struct StageLog {
+  std::vector<LoadStep> steps;    // every attempt, cut-back ones included
+  int iterations = 0;             // Newton iterations, all attempts
+  int cutbacks = 0;
+  double scale = 0.0;             // force scale [N/m]
+  double seconds = 0.0;
+};
+
+
+struct PrepassDef {
+  std::vector<RegionRef> stages;  // excavated in turn after the present state is solved
+  NewtonSettings newton;
+  bool joints = true;             // joints as interface elements (false: the rock mass as one continuum)
+};
+
+struct PrepassStage {
+  std::string name;               // "present state", or the stage's region
+  StageLog log;
+};
+
+struct PrepassResult {
+  std::vector<PrepassStage> stages;   // the present state first
+  std::vector<int> zones;             // mesh zones solved (not null at the start)
+  // Per zone of `zones`, per stage: the state bits (kShearNow | kTensionNow) the zone reached in a
+  // converged load step of that stage; kExcavated once it is excavated.
+  std::vector<std::vector<std::uint8_t>> state;
+  std::vector<Vec2> centroid;         // per zone [m]
+  std::vector<Stress> stress;         // per zone at the end [Pa] (zero once excavated)
+  std::vector<Vec2> gridpoint_u;      // per mesh gridpoint at the end [m]
+  double seconds = 0.0;
+};
+
+inline constexpr std::uint8_t kExcavatedInPrepass = 16;
+
+}  // namespace edem

@@ -1,0 +1,174 @@
+// prepass{}: the implicit elastoplastic prepass (engine/prepass), its result as a Lua table.
+#include <lua.hpp>
+
+#include <cmath>
+#include <numbers>
+
+#include "commands.hpp"
+#include "context.hpp"
+#include "core/error.hpp"
+#include "lua_util.hpp"
+
+namespace edem {
+namespace {
+
+const std::vector<std::string>& solvers() {
+  static const std::vector<std::string> names{"lu", "ldlt", "klu"};
+  return names;
+}
+
+const char* state_name(std::uint8_t bits) {
+  if (bits & kExcavatedInPrepass) return "excavated";
+  const bool shear = bits & kShearNow, tension = bits & kTensionNow;
+  if (shear && tension) return "shear+tension";
+  if (shear) return "shear";
+  if (tension) return "tension";
+  return "none";
+}
+
+// The state over all stages: shear and tension if it ever yielded so, else none.
+std::uint8_t overall(const std::vector<std::uint8_t>& per_stage) {
+  std::uint8_t bits = 0;
+  for (std::uint8_t s : per_stage) bits |= static_cast<std::uint8_t>(s & (kShearNow | kTensionNow));
+  return bits;
+}
+
+void push_stages(lua_State* L, const PrepassResult& r) {
+  lua_createtable(L, static_cast<int>(r.stages.size()), 0);
+  for (size_t i = 0; i < r.stages.size(); ++i) {
+    const PrepassStage& s = r.stages[i];
+    lua_createtable(L, 0, 6);
+    set_field(L, "name", std::string_view(s.name));
+    set_field(L, "iterations", s.log.iterations);
+    set_field(L, "cutbacks", s.log.cutbacks);
+    set_field(L, "seconds", s.log.seconds);
+    set_field(L, "force_scale", s.log.scale);
+    lua_createtable(L, static_cast<int>(s.log.steps.size()), 0);
+    for (size_t j = 0; j < s.log.steps.size(); ++j) {
+      const LoadStep& step = s.log.steps[j];
+      lua_createtable(L, 0, 4);
+      set_field(L, "from", step.from);
+      set_field(L, "to", step.to);
+      lua_pushboolean(L, step.converged);
+      lua_setfield(L, -2, "converged");
+      lua_createtable(L, static_cast<int>(step.residuals.size()), 0);
+      for (size_t k = 0; k < step.residuals.size(); ++k) {
+        lua_pushnumber(L, step.residuals[k]);
+        lua_rawseti(L, -2, static_cast<lua_Integer>(k + 1));
+      }
+      lua_setfield(L, -2, "residuals");
+      lua_rawseti(L, -2, static_cast<lua_Integer>(j + 1));
+    }
+    lua_setfield(L, -2, "steps");
+    lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
+  }
+  lua_setfield(L, -2, "stages");
+}
+
+void push_zones(lua_State* L, const PrepassResult& r) {
+  lua_createtable(L, static_cast<int>(r.zones.size()), 0);
+  for (size_t k = 0; k < r.zones.size(); ++k) {
+    const Stress& s = r.stress[k];
+    const Principal p = in_plane_principal(s);
+    // Direction of the most compressive principal stress, from +x, in (-90, 90] degrees.
+    double angle = 0.5 * std::atan2(2.0 * s.xy, s.xx - s.yy) * 180.0 / std::numbers::pi + 90.0;
+    if (angle > 90.0) angle -= 180.0;
+    lua_createtable(L, 0, 9);
+    set_field(L, "id", static_cast<long long>(r.zones[k]) + 1);
+    set_field(L, "x", r.centroid[k].x);
+    set_field(L, "y", r.centroid[k].y);
+    set_field(L, "state", std::string_view(state_name(overall(r.state[k]))));
+    lua_createtable(L, static_cast<int>(r.state[k].size()), 0);
+    for (size_t i = 0; i < r.state[k].size(); ++i) {
+      lua_pushstring(L, state_name(r.state[k][i]));
+      lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
+    }
+    lua_setfield(L, -2, "states");
+    set_field(L, "sxx", s.xx);
+    set_field(L, "syy", s.yy);
+    set_field(L, "sxy", s.xy);
+    set_field(L, "szz", s.zz);
+    set_field(L, "s1", p.s1);
+    set_field(L, "s3", p.s3);
+    set_field(L, "angle", angle);
+    lua_rawseti(L, -2, static_cast<lua_Integer>(k + 1));
+  }
+  lua_setfield(L, -2, "zones");
+}
+
+void push_gridpoints(lua_State* L, const PrepassResult& r) {
+  lua_createtable(L, static_cast<int>(r.gridpoint_u.size()), 0);
+  for (size_t g = 0; g < r.gridpoint_u.size(); ++g) {
+    lua_createtable(L, 0, 3);
+    set_field(L, "id", static_cast<long long>(g) + 1);
+    set_field(L, "ux", r.gridpoint_u[g].x);
+    set_field(L, "uy", r.gridpoint_u[g].y);
+    lua_rawseti(L, -2, static_cast<lua_Integer>(g + 1));
+  }
+  lua_setfield(L, -2, "gridpoints");
+}
+
+int run_prepass(lua_State* L, Context& context, const Args& args) {
+  PrepassDef def;
+  if (args.has("stages")) def.stages = args.get<std::vector<RegionRef>>("stages");
+  def.newton.steps = static_cast<int>(args.integer("steps"));
+  def.newton.tolerance = args.number("tolerance");
+  def.newton.max_iterations = static_cast<int>(args.integer("iterations"));
+  const std::string solver = args.string("solver");
+  def.newton.solver = solver == "klu" ? PrepassSolver::klu : solver == "ldlt" ? PrepassSolver::ldlt : PrepassSolver::lu;
+  def.joints = args.boolean("joints");
+  const PrepassResult r = context.model().prepass(def);
+  if (!context.quiet) {
+    int iterations = 0;
+    for (const PrepassStage& s : r.stages) iterations += s.log.iterations;
+    fmt::print("prepass: {} stage(s), {} Newton iterations, {:.3g} s\n", r.stages.size(), iterations, r.seconds);
+    std::fflush(stdout);
+  }
+  lua_createtable(L, 0, 4);
+  set_field(L, "seconds", r.seconds);
+  push_stages(L, r);
+  push_zones(L, r);
+  push_gridpoints(L, r);
+  return 1;
+}
+
+}  // namespace
+
+const Command& prepass_command() {
+  static const Command command{
+      .name = "prepass",
+      .help =
+          "The implicit elastoplastic prepass: solves the model statically from its present state (plain "
+          "triangles, small strain, plane strain; elastic and Mohr-Coulomb zones), then excavates each of "
+          "`stages` in turn and solves again, with KINSOL's Newton method and line search on the consistent "
+          "tangent. Each stage's out-of-balance force is applied in `steps` load steps, a step that fails is "
+          "halved (up to 10 times) before the stage fails with a message naming it. The model is left as it "
+          "was. Returns a table: stages (name, iterations, cutbacks, seconds, steps with each Newton "
+          "iterate's residual), zones (id, x, y, state over all stages and states per stage: none, shear, "
+          "tension, shear+tension, excavated; stresses, principal s1 (most compressive) and s3, angle of "
+          "s1 from +x in degrees) and gridpoints (id, ux, uy: displacement the prepass adds). Joints as "
+          "interface elements are not built yet: a jointed model needs joints = false, which ties each "
+          "joint's faces together.",
+      .keys =
+          {
+              {"stages", Type::regions, "", any_value, kOptional,
+               "regions excavated in turn (names or polygons)", "none"},
+              {"steps", Type::integer, "", ge(1), "10", "load steps per stage"},
+              {"tolerance", Type::number, "-", any_value, "1e-8",
+               "converged when every out-of-balance force component is at most this times the stage's force scale"},
+              {"iterations", Type::integer, "", ge(1), "30", "Newton iterations per load step before it is halved"},
+              {"solver", Type::string, "", any_value, "\"lu\"",
+               "sparse direct solver: lu (Eigen's SparseLU), ldlt (Eigen's SimplicialLDLT: symmetric tangents "
+               "only, elastic or associated flow) or klu (SuiteSparse's KLU through SUNDIALS)",
+               "", solvers},
+              {"joints", Type::boolean, "", any_value, "true",
+               "joints as interface elements (not built yet); false: joint faces tied together"},
+          },
+      .run = run_prepass,
+      .returns = "a table: stages, zones, gridpoints, seconds",
+      .usage = "local pre = prepass{ stages = { \"heading\", \"bench\" }, steps = 10 }",
+  };
+  return command;
+}
+
+}  // namespace edem

@@ -1,0 +1,24 @@
+-- The implicit prepass through the seed cavern's 16 stages (tests/bench/RESULTS.md, issue 7):
+-- the seed region (Set P, Case 3 joints tied shut: joints = false), Mohr-Coulomb rock, the
+-- warhead of edem.cavern; seconds and Newton iterations per stage.
+-- Run: cd stdlib && ../build/interp/edem ../tests/bench/prepass_seed_cavern.lua EDGE STEPS SOLVER
+--   EDGE: zone edge at the cavern [m] (1.5: ~7k zones; 0.5: ~50k), STEPS: load steps per stage
+local seed = require "edem.seed"
+local cavern = require "edem.cavern"
+local edge, steps, solver = tonumber(arg[1]) or 1.5, tonumber(arg[2]) or 5, arg[3] or "lu"
+local c = cavern.warhead{}
+local n = seed.region{ regions = c.stages, near = { c.outline }, edge = edge, far = 10, tolerance = 1e-3 }
+local P = seed.P.rock
+material{ "rock", model = "mohr", density = P.density, young = P.young, poisson = P.poisson, cohesion = P.cohesion,
+          friction = P.friction, tension = P.tension }
+local names = {}
+for _, s in ipairs(c.stages) do names[#names + 1] = s.name end
+local pre = prepass{ stages = names, joints = false, steps = steps, solver = solver }
+local yielded, iterations = 0, 0
+for _, z in ipairs(pre.zones) do if z.state ~= "none" then yielded = yielded + 1 end end
+for i, s in ipairs(pre.stages) do
+  iterations = iterations + s.iterations
+  print(("%2d %-22s %4d iterations %2d cut-backs %7.2f s"):format(i - 1, s.name, s.iterations, s.cutbacks, s.seconds))
+end
+print(("%d zones, edge %g m, %d steps a stage, %s: %d iterations, %d zones yielded, %.2f s"):format(
+  n.zones, edge, steps, solver, iterations, yielded, pre.seconds))
