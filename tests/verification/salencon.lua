@@ -11,87 +11,32 @@
 -- Plain triangles (the default): with psi = 0 the mixed discretisation localises more readily
 -- and lands farther from the closed form (measured in engine/solver/cycle.cpp's header).
 local check = require "edem.check"
-local shapes = require "edem.shapes"
-
-local a, R, P0, G, K, c, phi = 1.0, 40.0, 30e6, 2.8e9, 3.9e9, 3.45e6, 30.0
-local nu = (3 * K - 2 * G) / (2 * (3 * K + G))
-local sphi = math.sin(math.rad(phi))
-local Kp = (1 + sphi) / (1 - sphi)
-local sc = 2 * c * math.cos(math.rad(phi)) / (1 - sphi)
-local H = sc / (Kp - 1)
-local Pcr = (2 * P0 - sc) / (1 + Kp)
-local R0 = a * ((2 / (Kp + 1)) * (P0 + H) / H) ^ (1 / (Kp - 1))
-
--- Closed form, compression positive: radial and hoop stress, and inward displacement.
-local function stresses(r)
-  if r <= R0 then return H * (r / a) ^ (Kp - 1) - H, Kp * H * (r / a) ^ (Kp - 1) - H end
-  return P0 - (P0 - Pcr) * (R0 / r) ^ 2, P0 + (P0 - Pcr) * (R0 / r) ^ 2
-end
-
-local function wall_displacement(psi)
-  local spsi = math.sin(math.rad(psi))
-  local Kpsi = (1 + spsi) / (1 - spsi)
-  local A, r = H, a
-  local C1 = (1 - nu) * (1 + Kp * Kpsi) - nu * (Kp + Kpsi)
-  return r / (2 * G) * ((P0 - Pcr) * (R0 / r) ^ (1 + Kpsi)
-    - A * C1 / (Kp + Kpsi) * ((R0 / a) ^ (Kp - 1) * (R0 / r) ^ (Kpsi + 1) - (r / a) ^ (Kp - 1))
-    + (P0 + H) * (1 - 2 * nu) * ((R0 / r) ^ (Kpsi + 1) - 1))
-end
+local salencon = require "edem.salencon"
 
 local function run(psi)
-  model{ title = ("Salencon, psi = %g"):format(psi) }
-  block(shapes.quarter_plate{ hole = a, size = R, segments = 64 })
-  zone{ edge = 0.02, far = 4.0, growth = 0.06, near = { shapes.sector{ r1 = a, from = 0, to = 90, segments = 32 } } }
-  material{ "rock", model = "mohr", density = 2600, bulk = K, shear = G, cohesion = c,
-            friction = phi, dilation = psi, tension = 1e9 }
-  assign{ material = "rock" }
-  insitu{ sxx = -P0, syy = -P0, szz = -P0 }
-  boundary{ side = "left", fix = "x" }
-  boundary{ side = "bottom", fix = "y" }
-  boundary{ side = "right", stress = "insitu" }
-  boundary{ side = "top", stress = "insitu" }
+  salencon.build{ psi = psi, edge = 0.02 }
   local result = solve{ ratio = 1e-6, max_cycles = 400000 }
   print(("  psi = %g: %d zones, %d cycles to ratio %.2g"):format(psi, info().zones, result.cycles, result.ratio))
-
   -- R0: the largest radius of a zone that has yielded in shear. Stresses: each zone against
   -- the closed form at its centroid; the worst zone is printed, and the mean error over
   -- rings of zones (width 0.1 a) at the reference radii is checked.
-  local yielded, worst, worst_at = 0, 0, ""
-  local rings = { [1.25] = { 0, 0, 0 }, [1.5] = { 0, 0, 0 }, [2.0] = { 0, 0, 0 }, [3.0] = { 0, 0, 0 } }
-  for z in zones() do
-    local r = math.sqrt(z.x * z.x + z.y * z.y)
-    if z.state:find("shear") then yielded = math.max(yielded, r) end
-    local sr, st = stresses(r)
-    local cx, sy = z.x / r, z.y / r
-    local nsr = -(z.sxx * cx * cx + z.syy * sy * sy + 2 * z.sxy * cx * sy)
-    local nst = -(z.sxx * sy * sy + z.syy * cx * cx - 2 * z.sxy * cx * sy)
-    if r >= 1.2 * a and r <= 5 * a then
-      for _, e in ipairs({ math.abs(nsr - sr), math.abs(nst - st) }) do
-        if e / P0 > worst then worst, worst_at = e / P0, ("r = %.2f"):format(r) end
-      end
-    end
-    for radius, sums in pairs(rings) do
-      if math.abs(r - radius) <= 0.05 * a then
-        sums[1], sums[2], sums[3] = sums[1] + (nsr - sr) * z.area, sums[2] + (nst - st) * z.area, sums[3] + z.area
-      end
-    end
-  end
+  local list = {}
+  for z in zones() do list[#list + 1] = z end
+  local yielded, ring_error, worst, worst_at = salencon.measure(list)
   print(("  worst single zone, 1.2a <= r <= 5a: |stress error| / P0 = %.3f at %s"):format(worst, worst_at))
-  local ring_error = {}
-  for radius, sums in pairs(rings) do
-    ring_error[radius] = math.max(math.abs(sums[1] / sums[3]), math.abs(sums[2] / sums[3])) / P0
-  end
+  local a = salencon.a
   local u = 0.5 * (-gp_near(a, 0).ux - gp_near(0, a).uy)
   return yielded, ring_error, u
 end
 
 for _, case in ipairs({ { psi = 0, tolerance = 0.05 }, { psi = 30, tolerance = 0.08 } }) do
   local yielded, ring_error, u = run(case.psi)
-  check.report(("psi = %g: plastic radius R0 [m]"):format(case.psi), yielded, R0, 0.03)
+  check.report(("psi = %g: plastic radius R0 [m]"):format(case.psi), yielded, salencon.R0, 0.03)
   for _, radius in ipairs({ 1.25, 1.5, 2.0, 3.0 }) do
     check.report(("psi = %g: mean stress error / P0 over the ring r = %.2f a"):format(case.psi, radius),
                  ring_error[radius], 0, 0.03, { absolute = true })
   end
-  check.report(("psi = %g: wall displacement [m]"):format(case.psi), u, wall_displacement(case.psi), case.tolerance)
+  check.report(("psi = %g: wall displacement [m]"):format(case.psi), u, salencon.wall_displacement(case.psi),
+               case.tolerance)
 end
 check.finish()
