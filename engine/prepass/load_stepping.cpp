@@ -123,8 +123,8 @@ StageLog solve_stage(const Mechanics& m, ImplicitProblem& p, const NewtonSetting
   std::vector<double> applied(static_cast<size_t>(n)), out(static_cast<size_t>(n));
   sum_to_unknowns(p, s.force, s.r0.data());
   sum_to_unknowns(p, p.applied, applied.data());
-  // The force scale: the larger of what is released and what is applied, or, for a model with
-  // neither, the forces a zone stress of 1 Pa would give.
+  // The force scale: the larger of what is released and what is applied (a model with neither is
+  // balanced already, and any positive scale will do).
   s.scale = std::max({infinity_norm(s.r0), infinity_norm(applied), 1e-300});
   log.scale = s.scale;
 
