@@ -13,7 +13,7 @@ namespace edem {
 namespace {
 
 const std::vector<std::string>& solvers() {
-  static const std::vector<std::string> names{"lu", "ldlt", "klu"};
+  static const std::vector<std::string> names{"lu", "ldlt", "klu", "umfpack"};
   return names;
 }
 
@@ -115,7 +115,10 @@ int run_prepass(lua_State* L, Context& context, const Args& args) {
   def.newton.tolerance = args.number("tolerance");
   def.newton.max_iterations = static_cast<int>(args.integer("iterations"));
   const std::string solver = args.string("solver");
-  def.newton.solver = solver == "klu" ? PrepassSolver::klu : solver == "ldlt" ? PrepassSolver::ldlt : PrepassSolver::lu;
+  def.newton.solver = solver == "klu"       ? PrepassSolver::klu
+                      : solver == "ldlt"    ? PrepassSolver::ldlt
+                      : solver == "lu"      ? PrepassSolver::lu
+                                            : PrepassSolver::umfpack;
   def.joints = args.boolean("joints");
   const PrepassResult r = context.model().prepass(def);
   if (!context.quiet) {
@@ -157,9 +160,10 @@ const Command& prepass_command() {
               {"tolerance", Type::number, "-", any_value, "1e-8",
                "converged when every out-of-balance force component is at most this times the stage's force scale"},
               {"iterations", Type::integer, "", ge(1), "30", "Newton iterations per load step before it is halved"},
-              {"solver", Type::string, "", any_value, "\"lu\"",
-               "sparse direct solver: lu (Eigen's SparseLU), ldlt (Eigen's SimplicialLDLT: symmetric tangents "
-               "only, elastic or associated flow) or klu (SuiteSparse's KLU through SUNDIALS)",
+              {"solver", Type::string, "", any_value, "\"umfpack\"",
+               "sparse direct solver (measured in tests/bench/RESULTS.md): umfpack (SuiteSparse's UMFPACK, the "
+               "fastest), lu (Eigen's SparseLU), ldlt (Eigen's SimplicialLDLT: symmetric tangents only, elastic "
+               "or associated flow) or klu (SuiteSparse's KLU through SUNDIALS)",
                "", solvers},
               {"joints", Type::boolean, "", any_value, "true",
                "joints as interface elements (not built yet); false: joint faces tied together"},

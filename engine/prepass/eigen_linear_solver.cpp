@@ -5,6 +5,7 @@
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
+#include <Eigen/UmfPackSupport>
 #include <memory>
 #include <variant>
 
@@ -19,6 +20,7 @@ struct Content {
   EigenFactorisation kind = EigenFactorisation::lu;
   Eigen::SparseLU<CscMatrix, Eigen::COLAMDOrdering<Index>> lu;
   Eigen::SimplicialLDLT<CscMatrix, Eigen::Lower, Eigen::AMDOrdering<Index>> ldlt;
+  Eigen::UmfPackLU<CscMatrix> umfpack;
   bool analysed = false;  // the pattern is the same at every setup: analyse it once
   Index nnz = -1;
 };
@@ -37,19 +39,21 @@ int setup(SUNLinearSolver s, SUNMatrix a) {
   Content& c = content(s);
   const CscMap matrix = view(a);
   if (!c.analysed || c.nnz != SUNSparseMatrix_NNZ(a)) {
-    if (c.kind == EigenFactorisation::lu)
-      c.lu.analyzePattern(matrix);
-    else
-      c.ldlt.analyzePattern(matrix);
+    switch (c.kind) {
+      case EigenFactorisation::lu: c.lu.analyzePattern(matrix); break;
+      case EigenFactorisation::ldlt: c.ldlt.analyzePattern(matrix); break;
+      case EigenFactorisation::umfpack: c.umfpack.analyzePattern(matrix); break;
+    }
     c.analysed = true;
     c.nnz = SUNSparseMatrix_NNZ(a);
   }
-  if (c.kind == EigenFactorisation::lu) {
-    c.lu.factorize(matrix);
-    return c.lu.info() == Eigen::Success ? SUNLS_SUCCESS : SUNLS_PACKAGE_FAIL_REC;
+  Eigen::ComputationInfo info = Eigen::Success;
+  switch (c.kind) {
+    case EigenFactorisation::lu: c.lu.factorize(matrix); info = c.lu.info(); break;
+    case EigenFactorisation::ldlt: c.ldlt.factorize(matrix); info = c.ldlt.info(); break;
+    case EigenFactorisation::umfpack: c.umfpack.factorize(matrix); info = c.umfpack.info(); break;
   }
-  c.ldlt.factorize(matrix);
-  return c.ldlt.info() == Eigen::Success ? SUNLS_SUCCESS : SUNLS_PACKAGE_FAIL_REC;
+  return info == Eigen::Success ? SUNLS_SUCCESS : SUNLS_PACKAGE_FAIL_REC;
 }
 
 int solve(SUNLinearSolver s, SUNMatrix, N_Vector x, N_Vector b, realtype) {
@@ -57,10 +61,11 @@ int solve(SUNLinearSolver s, SUNMatrix, N_Vector x, N_Vector b, realtype) {
   const Index n = N_VGetLength_Serial(b);
   Eigen::Map<const Eigen::VectorXd> rhs(N_VGetArrayPointer_Serial(b), n);
   Eigen::Map<Eigen::VectorXd> out(N_VGetArrayPointer_Serial(x), n);
-  if (c.kind == EigenFactorisation::lu)
-    out = c.lu.solve(rhs);
-  else
-    out = c.ldlt.solve(rhs);
+  switch (c.kind) {
+    case EigenFactorisation::lu: out = c.lu.solve(rhs); break;
+    case EigenFactorisation::ldlt: out = c.ldlt.solve(rhs); break;
+    case EigenFactorisation::umfpack: out = c.umfpack.solve(rhs); break;
+  }
   return out.allFinite() ? SUNLS_SUCCESS : SUNLS_PACKAGE_FAIL_REC;
 }
 

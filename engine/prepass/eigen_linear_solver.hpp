@@ -3,6 +3,7 @@
 //   lu:   Eigen::SparseLU (COLAMD ordering), for any tangent (non-associated flow makes it unsymmetric)
 //   ldlt: Eigen::SimplicialLDLT (AMD ordering), for symmetric tangents only (elastic zones, or
 //         associated flow), reading the lower triangle
+//   umfpack: SuiteSparse's UMFPACK (multifrontal, BLAS) through Eigen's UmfPackSupport, for any tangent
 #pragma once
 
 #include <sundials/sundials_context.h>
@@ -10,7 +11,7 @@
 
 namespace edem {
 
-enum class EigenFactorisation { lu, ldlt };
+enum class EigenFactorisation { lu, ldlt, umfpack };
 
 // The caller frees it with SUNLinSolFree. Setup returns SUNLS_PACKAGE_FAIL_REC when the matrix
 // is singular (a mechanism: KINSOL then reports a failed linear setup).

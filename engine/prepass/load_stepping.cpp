@@ -142,6 +142,7 @@ StageLog solve_stage(const Mechanics& m, ImplicitProblem& p, const NewtonSetting
     case PrepassSolver::klu: k.linear = SUNLinSol_KLU(k.x, k.jac, k.context); break;
     case PrepassSolver::lu: k.linear = make_eigen_linear_solver(k.context, EigenFactorisation::lu); break;
     case PrepassSolver::ldlt: k.linear = make_eigen_linear_solver(k.context, EigenFactorisation::ldlt); break;
+    case PrepassSolver::umfpack: k.linear = make_eigen_linear_solver(k.context, EigenFactorisation::umfpack); break;
   }
   if (!k.x || !k.ones || !k.fscale || !k.jac || !k.linear) fail("out of memory for {} unknowns", n);
   k.memory = KINCreate(k.context);

@@ -46,7 +46,7 @@ PrepassResult Model::prepass(const PrepassDef& def) {
       const MaterialParams& p = m.params[material];
       if (p.model == MaterialModel::mohr && p.npsi != p.nphi)
         fail("solver = \"ldlt\" needs a symmetric tangent, and material '{}' flows non-associated (dilation "
-             "differs from friction); use \"lu\" or \"klu\"",
+             "differs from friction); use \"umfpack\", \"lu\" or \"klu\"",
              m.materials[material].name);
     }
   }

@@ -13,14 +13,14 @@
 
 namespace edem {
 
-enum class PrepassSolver { klu, lu, ldlt };  // KLU, or Eigen's SparseLU / SimplicialLDLT
+enum class PrepassSolver { klu, lu, ldlt, umfpack };  // KLU; Eigen's SparseLU / SimplicialLDLT; UMFPACK
 
 struct NewtonSettings {
   int steps = 10;                // load steps per stage
   double tolerance = 1e-8;       // converged: |out-of-balance force| <= tolerance x force scale, per component
   int max_iterations = 30;       // Newton iterations per load step before it is cut back
   int max_cutbacks = 10;         // halvings of one step before the stage fails
-  PrepassSolver solver = PrepassSolver::lu;
+  PrepassSolver solver = PrepassSolver::umfpack;
 };
 
 struct LoadStep {

@@ -5,7 +5,7 @@
 --   EDGE: zone edge at the cavern [m] (1.5: ~7k zones; 0.5: ~50k), STEPS: load steps per stage
 local seed = require "edem.seed"
 local cavern = require "edem.cavern"
-local edge, steps, solver = tonumber(arg[1]) or 1.5, tonumber(arg[2]) or 5, arg[3] or "lu"
+local edge, steps, solver = tonumber(arg[1]) or 1.5, tonumber(arg[2]) or 5, arg[3] or "umfpack"
 local c = cavern.warhead{}
 local n = seed.region{ regions = c.stages, near = { c.outline }, edge = edge, far = 10, tolerance = 1e-3 }
 local P = seed.P.rock

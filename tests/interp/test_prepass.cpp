@@ -63,7 +63,7 @@ TEST(Prepass, AnElasticStepTakesOneNewtonIteration) {
   Interpreter interpreter;
   interpreter.context().quiet = true;
   expect_runs(interpreter, std::string(kPlate) + R"(
-    for _, solver in ipairs({ "lu", "ldlt", "klu" }) do
+    for _, solver in ipairs({ "lu", "ldlt", "klu", "umfpack" }) do
       local pre = prepass{ stages = { "hole" }, steps = 3, solver = solver }
       assert(pre.stages[2].iterations == 3, solver .. ": " .. pre.stages[2].iterations)
       for _, step in ipairs(pre.stages[2].steps) do assert(step.converged) end
