@@ -91,10 +91,12 @@ PrepassResult Model::prepass(const PrepassDef& def) {
   for (size_t stage = 0; stage <= stage_zones.size(); ++stage) {
     const std::string name = stage == 0 ? "present state" : stage_names[stage - 1];
     if (stage > 0) {
+      std::vector<char> out(stress.size(), 0);
       for (int z : stage_zones[stage - 1]) {
         stress[static_cast<size_t>(z)] = Stress{};
-        zones.erase(std::find(zones.begin(), zones.end(), z));
+        out[static_cast<size_t>(z)] = 1;
       }
+      std::erase_if(zones, [&](int z) { return out[static_cast<size_t>(z)] != 0; });
     }
     ImplicitProblem p = make_problem(m, zones, stress, u, tie);
     std::vector<std::uint8_t> yielded;
