@@ -196,16 +196,22 @@ TEST(Cutter, CutPassingNearAJointCrossingIsSnapped) {
   expect_valid_blocks(set, model.tolerance());
 }
 
-// The seed region's joints with potential cracks across them at a coarse tolerance (0.269 m):
-// dozens of cut crossings lie within the tolerance of another cut. Fixed one a round, they ran
-// out of rounds; fixed together where they are apart, they take a few.
-TEST(Cutter, ManySmallFeaturesAreSnappedTogether) {
+// The seed region's block and its main joint set (60 deg at 16, 12, 8 m), at tolerance 1e-3.
+Model seed_region_coarse() {
   Model model(ModelDef{"", 1e-3});
   model.add_block({box(-100, 100, -90, 90)});
   JointSetDef main_set;
   main_set.angle = 60;
   main_set.spacing = {16, 12, 8};
   model.add_joint_set(main_set);
+  return model;
+}
+
+// The seed region's joints with potential cracks across them at a coarse tolerance (0.269 m):
+// dozens of cut crossings lie within the tolerance of another cut. Fixed one a round, they ran
+// out of rounds; fixed together where they are apart, they take a few.
+TEST(Cutter, ManySmallFeaturesAreSnappedTogether) {
+  Model model = seed_region_coarse();
   JointSetDef cross;
   cross.angle = -30;
   cross.spacing = {16};
@@ -223,12 +229,7 @@ TEST(Cutter, ManySmallFeaturesAreSnappedTogether) {
 // Cuts crossing at 2 degrees stay closer than a coarse tolerance over metres: each fix makes
 // another. The cutter gives up with a message naming the inputs, not after minutes.
 TEST(Cutter, CutsAtAShallowAngleNameTheInputs) {
-  Model model(ModelDef{"", 1e-3});
-  model.add_block({box(-100, 100, -90, 90)});
-  JointSetDef main_set;
-  main_set.angle = 60;
-  main_set.spacing = {16, 12, 8};
-  model.add_joint_set(main_set);
+  Model model = seed_region_coarse();
   const size_t blocks_before = model.blocks().blocks.size();
   try {
     model.add_crackseed({{}, {62, 118}, 4.8, {1.3, 0.7}, "", ""});
