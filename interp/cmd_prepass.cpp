@@ -120,6 +120,7 @@ int run_prepass(lua_State* L, Context& context, const Args& args) {
                       : solver == "lu"      ? PrepassSolver::lu
                                             : PrepassSolver::umfpack;
   def.joints = args.boolean("joints");
+  def.duration = args.number("duration");
   const PrepassResult r = context.model().prepass(def);
   if (!context.quiet) {
     int iterations = 0;
@@ -165,6 +166,9 @@ const Command& prepass_command() {
                "fastest), lu (Eigen's SparseLU), ldlt (Eigen's SimplicialLDLT: symmetric tangents only, elastic "
                "or associated flow) or klu (SuiteSparse's KLU through SUNDIALS)",
                "", solvers},
+              {"duration", Type::number, "s", ge(0), "0",
+               "held gridpoints with a velocity (boundary{ xvel, yvel }) move by velocity x duration in the first "
+               "stage, in its load steps (static mode: velocities are per cycle, so this is cycles)"},
               {"joints", Type::boolean, "", any_value, "true",
                "joints as interface elements (not built yet); false: joint faces tied together"},
           },

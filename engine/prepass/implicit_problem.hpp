@@ -22,6 +22,9 @@ struct ImplicitProblem {
   int unknowns = 0;
   std::vector<double> applied;   // per node component: weight + boundary loads [N/m]
   std::vector<double> base;      // per node component: u when the problem was made; unknowns add to it [m]
+  // Per node component (empty: none): a held component's prescribed displacement over the stage,
+  // applied in proportion to the load factor [m].
+  std::vector<double> drive;
   // The state at the start of the load step.
   std::vector<Stress> stress0;   // per problem zone [Pa]
   std::vector<double> u0;        // per node component [m]

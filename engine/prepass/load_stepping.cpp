@@ -125,7 +125,16 @@ StageLog solve_stage(const Mechanics& m, ImplicitProblem& p, const NewtonSetting
   sum_to_unknowns(p, p.applied, applied.data());
   // The force scale: the larger of what is released and what is applied (a model with neither is
   // balanced already, and any positive scale will do).
-  s.scale = std::max({infinity_norm(s.r0), infinity_norm(applied), 1e-300});
+  // With prescribed displacements, also the forces the whole of them gives on the free nodes.
+  double driven = 0.0;
+  if (!p.drive.empty()) {
+    std::vector<double> u = p.u0;
+    for (size_t i = 0; i < u.size(); ++i) u[i] += p.drive[i];
+    evaluate(m, p, u, s.force);
+    sum_to_unknowns(p, s.force, out.data());
+    for (size_t j = 0; j < out.size(); ++j) driven = std::max(driven, std::abs(out[j] - s.r0[j]));
+  }
+  s.scale = std::max({infinity_norm(s.r0), infinity_norm(applied), driven, 1e-300});
   log.scale = s.scale;
 
   Kinsol k;
@@ -166,6 +175,10 @@ StageLog solve_stage(const Mechanics& m, ImplicitProblem& p, const NewtonSetting
     log.steps.push_back({done, to, false, {}});
     s.log = &log.steps.back();
     gather_unknowns(p, p.u0, N_VGetArrayPointer_Serial(k.x));
+    s.u = p.u0;
+    if (!p.drive.empty())  // held components at their prescribed share of the drive
+      for (size_t i = 0; i < s.u.size(); ++i)
+        if (p.drive[i] != 0.0) s.u[i] = p.base[i] + to * p.drive[i];
     s.error.clear();
     // Full Newton steps first: the return mapping's tangent jumps where a zone's active surface
     // changes, and a line search on |F| then stalls (measured on Salencon, psi = 0: stuck at 1e-5

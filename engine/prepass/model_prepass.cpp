@@ -38,6 +38,7 @@ PrepassResult Model::prepass(const PrepassDef& def) {
   Mechanics& m = *mechanics_;
   if (m.cycling_now) fail("not from inside a callback or history while cycling");
   check_settings(def.newton);
+  if (!(def.duration >= 0.0)) fail("duration must be >= 0, got {}", def.duration);
   if (!zoned()) fail("the model has no zones yet (zone{{}} first)");
   prepare(m, mesh_);
   if (def.newton.solver == PrepassSolver::ldlt) {
@@ -99,6 +100,11 @@ PrepassResult Model::prepass(const PrepassDef& def) {
       std::erase_if(zones, [&](int z) { return out[static_cast<size_t>(z)] != 0; });
     }
     ImplicitProblem p = make_problem(m, zones, stress, u, tie);
+    if (stage == 0 && def.duration > 0.0) {
+      p.drive.assign(u.size(), 0.0);
+      for (size_t i = 0; i < u.size(); ++i)
+        if ((m.fix[i / 2] & (1u << (i % 2))) && m.v[i] != 0.0) p.drive[i] = m.v[i] * def.duration;
+    }
     std::vector<std::uint8_t> yielded;
     StageLog log = solve_stage(m, p, def.newton, stage == 0 ? name : fmt::format("stage {} ({})", stage, name), yielded);
     for (auto& s : result.state) s.push_back(kExcavatedInPrepass);

@@ -42,6 +42,9 @@ struct PrepassDef {
   std::vector<RegionRef> stages;  // excavated in turn after the present state is solved
   NewtonSettings newton;
   bool joints = true;             // joints as interface elements (false: the rock mass as one continuum)
+  // Held components with a velocity (boundary{ xvel, yvel }) move by velocity x duration during
+  // the first stage, the present state [s; cycles in static mode, where velocities are per cycle].
+  double duration = 0.0;
 };
 
 struct PrepassStage {
