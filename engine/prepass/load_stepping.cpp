@@ -104,6 +104,80 @@ double infinity_norm(const std::vector<double>& v) {
   return largest;
 }
 
+// The force scale: the larger of what is released and what is applied (a model with neither is
+// balanced already, and any positive scale will do), and, with prescribed displacements, the
+// forces the whole of them gives on the free nodes.
+double force_scale(const Mechanics& m, ImplicitProblem& p, System& s) {
+  std::vector<double> applied(s.r0.size()), out(s.r0.size());
+  sum_to_unknowns(p, p.applied, applied.data());
+  double driven = 0.0;
+  if (!p.drive.empty()) {
+    std::vector<double> u = p.u0;
+    for (size_t i = 0; i < u.size(); ++i) u[i] += p.drive[i];
+    evaluate(m, p, u, s.force);
+    sum_to_unknowns(p, s.force, out.data());
+    for (size_t j = 0; j < out.size(); ++j) driven = std::max(driven, std::abs(out[j] - s.r0[j]));
+  }
+  return std::max({infinity_norm(s.r0), infinity_norm(applied), driven, 1e-300});
+}
+
+// KINSOL set up for n unknowns: exact Newton (a fresh tangent every iteration), converged on the
+// scaled force alone.
+void start_kinsol(Kinsol& k, System& s, sunindextype n, size_t zones, const NewtonSettings& settings) {
+  check(SUNContext_Create(nullptr, &k.context), "SUNContext_Create");
+  k.x = N_VNew_Serial(n, k.context);
+  k.ones = N_VNew_Serial(n, k.context);
+  k.fscale = N_VNew_Serial(n, k.context);
+  // Room for a full 6 x 6 block per zone: reallocated by the Jacobian if short.
+  k.jac = SUNSparseMatrix(n, n, std::max<sunindextype>(1, 36 * static_cast<sunindextype>(zones)), CSC_MAT, k.context);
+  switch (settings.solver) {
+    case PrepassSolver::klu: k.linear = SUNLinSol_KLU(k.x, k.jac, k.context); break;
+    case PrepassSolver::lu: k.linear = make_eigen_linear_solver(k.context, EigenFactorisation::lu); break;
+    case PrepassSolver::ldlt: k.linear = make_eigen_linear_solver(k.context, EigenFactorisation::ldlt); break;
+    case PrepassSolver::umfpack: k.linear = make_eigen_linear_solver(k.context, EigenFactorisation::umfpack); break;
+  }
+  if (!k.x || !k.ones || !k.fscale || !k.jac || !k.linear) fail("out of memory for {} unknowns", n);
+  N_VConst(1.0, k.ones);
+  N_VConst(1.0 / s.scale, k.fscale);
+  k.memory = KINCreate(k.context);
+  if (!k.memory) fail("KINCreate failed");
+  check(KINInit(k.memory, residual, k.x), "KINInit");
+  check(KINSetUserData(k.memory, &s), "KINSetUserData");
+  check(KINSetErrHandlerFn(k.memory, keep_error, &s), "KINSetErrHandlerFn");
+  check(KINSetLinearSolver(k.memory, k.linear, k.jac), "KINSetLinearSolver");
+  check(KINSetJacFn(k.memory, jacobian), "KINSetJacFn");
+  check(KINSetMaxSetupCalls(k.memory, 1), "KINSetMaxSetupCalls");
+  check(KINSetFuncNormTol(k.memory, settings.tolerance), "KINSetFuncNormTol");
+  check(KINSetScaledStepTol(k.memory, 1e-300), "KINSetScaledStepTol");
+  check(KINSetNumMaxIters(k.memory, settings.max_iterations), "KINSetNumMaxIters");
+}
+
+// Newton from the step's start (p.u0, held components at `to` of their drive) to load factor `to`.
+// Full Newton steps first: the return mapping's tangent jumps where a zone's active surface
+// changes, and a line search on |F| then stalls (measured on Salencon, psi = 0: stuck at 1e-5 of
+// the force scale at small load steps, where full steps converge in 4 or 5 iterations). A step
+// that fails so is tried again with KINSOL's line search. Returns KINSOL's flag; s.u is the answer.
+int newton(Kinsol& k, System& s, ImplicitProblem& p, double to, StageLog& log) {
+  s.load = to;
+  s.u = p.u0;
+  if (!p.drive.empty())
+    for (size_t i = 0; i < s.u.size(); ++i)
+      if (p.drive[i] != 0.0) s.u[i] = p.base[i] + to * p.drive[i];
+  s.error.clear();
+  int flag = 0;
+  for (const int strategy : {KIN_NONE, KIN_LINESEARCH}) {
+    gather_unknowns(p, p.u0, N_VGetArrayPointer_Serial(k.x));
+    s.log->residuals.clear();
+    flag = KINSol(k.memory, k.x, strategy, k.ones, k.fscale);
+    long iterations = 0;
+    KINGetNumNonlinSolvIters(k.memory, &iterations);
+    log.iterations += static_cast<int>(iterations);
+    if (flag >= 0) break;
+  }
+  scatter_unknowns(p, N_VGetArrayPointer_Serial(k.x), s.u);
+  return flag;
+}
+
 }  // namespace
 
 StageLog solve_stage(const Mechanics& m, ImplicitProblem& p, const NewtonSettings& settings, const std::string& stage,
@@ -120,89 +194,26 @@ StageLog solve_stage(const Mechanics& m, ImplicitProblem& p, const NewtonSetting
   s.u = p.u0;
   evaluate(m, p, p.u0, s.force);
   s.r0.resize(static_cast<size_t>(n));
-  std::vector<double> applied(static_cast<size_t>(n)), out(static_cast<size_t>(n));
   sum_to_unknowns(p, s.force, s.r0.data());
-  sum_to_unknowns(p, p.applied, applied.data());
-  // The force scale: the larger of what is released and what is applied (a model with neither is
-  // balanced already, and any positive scale will do).
-  // With prescribed displacements, also the forces the whole of them gives on the free nodes.
-  double driven = 0.0;
-  if (!p.drive.empty()) {
-    std::vector<double> u = p.u0;
-    for (size_t i = 0; i < u.size(); ++i) u[i] += p.drive[i];
-    evaluate(m, p, u, s.force);
-    sum_to_unknowns(p, s.force, out.data());
-    for (size_t j = 0; j < out.size(); ++j) driven = std::max(driven, std::abs(out[j] - s.r0[j]));
-  }
-  s.scale = std::max({infinity_norm(s.r0), infinity_norm(applied), driven, 1e-300});
+  s.scale = force_scale(m, p, s);
   log.scale = s.scale;
-
   Kinsol k;
-  check(SUNContext_Create(nullptr, &k.context), "SUNContext_Create");
-  k.x = N_VNew_Serial(n, k.context);
-  k.ones = N_VNew_Serial(n, k.context);
-  k.fscale = N_VNew_Serial(n, k.context);
-  N_VConst(1.0, k.ones);
-  N_VConst(1.0 / s.scale, k.fscale);
-  // Room for a full 6 x 6 block per zone corner pair: reallocated by the Jacobian if short.
-  k.jac = SUNSparseMatrix(n, n, std::max<sunindextype>(1, 36 * static_cast<sunindextype>(p.zones.size())), CSC_MAT,
-                          k.context);
-  switch (settings.solver) {
-    case PrepassSolver::klu: k.linear = SUNLinSol_KLU(k.x, k.jac, k.context); break;
-    case PrepassSolver::lu: k.linear = make_eigen_linear_solver(k.context, EigenFactorisation::lu); break;
-    case PrepassSolver::ldlt: k.linear = make_eigen_linear_solver(k.context, EigenFactorisation::ldlt); break;
-    case PrepassSolver::umfpack: k.linear = make_eigen_linear_solver(k.context, EigenFactorisation::umfpack); break;
-  }
-  if (!k.x || !k.ones || !k.fscale || !k.jac || !k.linear) fail("out of memory for {} unknowns", n);
-  k.memory = KINCreate(k.context);
-  if (!k.memory) fail("KINCreate failed");
-  check(KINInit(k.memory, residual, k.x), "KINInit");
-  check(KINSetUserData(k.memory, &s), "KINSetUserData");
-  check(KINSetErrHandlerFn(k.memory, keep_error, &s), "KINSetErrHandlerFn");
-  check(KINSetLinearSolver(k.memory, k.linear, k.jac), "KINSetLinearSolver");
-  check(KINSetJacFn(k.memory, jacobian), "KINSetJacFn");
-  check(KINSetMaxSetupCalls(k.memory, 1), "KINSetMaxSetupCalls");  // a fresh tangent every iteration
-  check(KINSetFuncNormTol(k.memory, settings.tolerance), "KINSetFuncNormTol");
-  check(KINSetScaledStepTol(k.memory, 1e-300), "KINSetScaledStepTol");  // converged only on the force
-  check(KINSetNumMaxIters(k.memory, settings.max_iterations), "KINSetNumMaxIters");
+  start_kinsol(k, s, n, p.zones.size(), settings);
 
-  std::vector<double> unknowns(static_cast<size_t>(n));
+  std::vector<double> out(static_cast<size_t>(n));
   double done = 0.0, size = 1.0 / settings.steps;
   int halvings = 0;
   while (done < 1.0) {
     const double to = done + size >= 1.0 - 1e-9 ? 1.0 : done + size;  // no sliver step from rounding
-    s.load = to;
     log.steps.push_back({done, to, false, {}});
     s.log = &log.steps.back();
-    gather_unknowns(p, p.u0, N_VGetArrayPointer_Serial(k.x));
-    s.u = p.u0;
-    if (!p.drive.empty())  // held components at their prescribed share of the drive
-      for (size_t i = 0; i < s.u.size(); ++i)
-        if (p.drive[i] != 0.0) s.u[i] = p.base[i] + to * p.drive[i];
-    s.error.clear();
-    // Full Newton steps first: the return mapping's tangent jumps where a zone's active surface
-    // changes, and a line search on |F| then stalls (measured on Salencon, psi = 0: stuck at 1e-5
-    // of the force scale at small load steps, where full steps converge in 4 or 5 iterations). A
-    // step that fails so is tried again with KINSOL's line search before it is cut back.
-    long iterations = 0;
-    int flag = KINSol(k.memory, k.x, KIN_NONE, k.ones, k.fscale);
-    KINGetNumNonlinSolvIters(k.memory, &iterations);
-    log.iterations += static_cast<int>(iterations);
-    if (flag < 0) {
-      gather_unknowns(p, p.u0, N_VGetArrayPointer_Serial(k.x));
-      s.log->residuals.clear();
-      flag = KINSol(k.memory, k.x, KIN_LINESEARCH, k.ones, k.fscale);
-      KINGetNumNonlinSolvIters(k.memory, &iterations);
-      log.iterations += static_cast<int>(iterations);
-    }
+    const int flag = newton(k, s, p, to, log);
     // Check the answer on its own terms: KINSOL's step-size stops are not convergence.
-    scatter_unknowns(p, N_VGetArrayPointer_Serial(k.x), s.u);
     evaluate(m, p, s.u, s.force);
     sum_to_unknowns(p, s.force, out.data());
     double largest = 0.0;
     for (size_t j = 0; j < out.size(); ++j) largest = std::max(largest, std::abs(out[j] - (1.0 - to) * s.r0[j]));
-    const bool ok = flag >= 0 && largest <= settings.tolerance * s.scale;
-    if (ok) {
+    if (flag >= 0 && largest <= settings.tolerance * s.scale) {
       s.log->residuals.push_back(largest / s.scale);
       s.log->converged = true;
       p.u0 = s.u;
