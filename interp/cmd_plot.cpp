@@ -35,7 +35,9 @@ const Command& plot_command() {
                "",
                any_value,
                R"({"blocks", "joints"})",
-               "layers to draw, in any order: regions (named regions, filled), zones (triangle "
+               "layers to draw, in any order: regions (named regions, filled), plastic (zones that "
+               "have yielded in the run, now or earlier: shear orange, tension blue, both purple), "
+               "prepass (the same for the last prepass{}, over all its stages), zones (triangle "
                "edges), blocks (outlines), joints (edges by origin: joint sets coloured, crack{} "
                "traces red, region outlines, potential cracks dotted, the boundary thick), cracks "
                "(crack{} traces, and the new cracks as their sections: tension red, shear blue, "

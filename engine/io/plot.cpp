@@ -25,7 +25,7 @@
 namespace edem {
 
 const std::vector<std::string>& plot_layers() {
-  static const std::vector<std::string> layers{"regions", "zones", "blocks", "joints", "cracks"};
+  static const std::vector<std::string> layers{"regions", "plastic", "prepass", "zones", "blocks", "joints", "cracks"};
   return layers;
 }
 
@@ -39,7 +39,7 @@ namespace fs = std::filesystem;
 enum class Format { png, svg, pdf };
 
 struct Layers {
-  bool regions = false, zones = false, blocks = false, joints = false, cracks = false;
+  bool regions = false, plastic = false, prepass = false, zones = false, blocks = false, joints = false, cracks = false;
 };
 
 std::string lower(std::string text) {
@@ -65,8 +65,8 @@ Format format_of(const std::string& file) {
 Layers layers_of(const std::vector<std::string>& show) {
   const auto& valid = plot_layers();
   // The flag of each name in plot_layers(), in the same order.
-  constexpr std::array kFlags{&Layers::regions, &Layers::zones, &Layers::blocks, &Layers::joints,
-                              &Layers::cracks};
+  constexpr std::array kFlags{&Layers::regions, &Layers::plastic, &Layers::prepass, &Layers::zones,
+                              &Layers::blocks,  &Layers::joints,  &Layers::cracks};
   if (show.empty()) fail("show lists no layers: use any of {}", join(valid));
   Layers layers;
   for (const auto& name : show) {
@@ -242,6 +242,8 @@ constexpr std::array kSetColours{rgb(0x1f77b4), rgb(0xff7f0e), rgb(0x2ca02c), rg
 // Light fills for regions, neighbours told apart.
 constexpr std::array kRegionColours{rgb(0xb3cde3), rgb(0xfbb4ae), rgb(0xccebc5), rgb(0xdecbe4),
                                     rgb(0xfed9a6), rgb(0xffffcc), rgb(0xe5d8bd), rgb(0xfddaec)};
+// Yielded zones (plastic and prepass layers): shear, tension, both.
+constexpr std::array kYieldColours{rgb(0xf4a582), rgb(0x92c5de), rgb(0xc2a5cf)};
 constexpr Rgb kInk = rgb(0x202020);
 constexpr Rgb kCrack = rgb(0xd62728);
 constexpr Rgb kShearCrack = rgb(0x1a35d4);  // deeper than joint set 1's blue, and thicker
@@ -742,7 +744,28 @@ struct Scene {
   Polylines block_lines;
   std::map<EdgeClass, Polylines> edges;  // joints and cracks layers
   std::vector<CrackBatch> new_cracks;    // cracks layer
+  // plastic and prepass layers: zones that yielded in shear only, tension only, both.
+  std::array<std::vector<Polygon>, 3> yielded;
+  std::string yield_source;              // "plastic" or "prepass", for the legend
 };
+
+// Zones that yielded, as the seed's Figure 8 shows them: in the model's own run (plastic: now
+// or earlier) or in the last prepass{} (over all its stages), filled by mode.
+void gather_yielded(const Model& model, bool from_prepass, Scene& scene) {
+  const Mesh& mesh = model.mesh();
+  const std::vector<std::uint8_t>& prepass = model.prepass_yield();
+  if (from_prepass && prepass.size() != mesh.zone_gp.size())
+    fail("show = \"prepass\": no prepass{{}} result for this mesh (run prepass{{}} first)");
+  scene.yield_source = from_prepass ? "prepass" : "plastic";
+  for (int z = 0; z < static_cast<int>(mesh.zone_gp.size()); ++z) {
+    const std::uint8_t bits = from_prepass ? prepass[static_cast<std::size_t>(z)] : model.zone_view(z).state;
+    const bool shear = bits & (kShearNow | kShearPast), tension = bits & (kTensionNow | kTensionPast);
+    if (!shear && !tension) continue;
+    Polygon triangle;
+    for (int gp : mesh.zone_gp[static_cast<std::size_t>(z)]) triangle.push_back(mesh.gp_position[static_cast<std::size_t>(gp)]);
+    scene.yielded[shear && tension ? 2 : shear ? 0 : 1].push_back(std::move(triangle));
+  }
+}
 
 Scene gather(Model& model, const Layers& layers) {
   Scene scene;
@@ -772,6 +795,7 @@ Scene gather(Model& model, const Layers& layers) {
   if (layers.blocks) scene.block_lines = std::move(collect_edges(set, neutral)[EdgeClass{}]);
   if (joints || cracks) scene.edges = collect_edges(set, styled);
   if (cracks) scene.new_cracks = new_cracks_of(model);
+  if (layers.plastic || layers.prepass) gather_yielded(model, layers.prepass, scene);
   return scene;
 }
 
@@ -793,7 +817,25 @@ std::vector<LegendEntry> legend_of(const Scene& scene) {
   for (const EdgeClass& cls : classes) entries.push_back({label_of(cls), pen_of(cls)});
   for (const CrackBatch& batch : scene.new_cracks)
     entries.push_back({label_of(batch.mode, batch.lines.starts.size()), crack_pen(batch.mode)});
+  constexpr std::array<const char*, 3> kYieldNames{"shear", "tension", "shear and tension"};
+  for (std::size_t i = 0; i < scene.yielded.size(); ++i)
+    if (!scene.yielded[i].empty())
+      entries.push_back({fmt::format("{}: {} ({} zone{})", scene.yield_source, kYieldNames[i], scene.yielded[i].size(),
+                                     scene.yielded[i].size() == 1 ? "" : "s"),
+                         {kYieldColours[i], 6.0, {}}});
   return entries;
+}
+
+void draw_yielded(Painter& p, const Scene& scene, const View& view) {
+  cairo_t* cr = p.cr();
+  for (std::size_t i = 0; i < scene.yielded.size(); ++i) {
+    const Rgb c = kYieldColours[i];
+    cairo_set_source_rgb(cr, c.r, c.g, c.b);
+    for (const Polygon& triangle : scene.yielded[i]) {
+      p.polygon_path(triangle, view);
+      cairo_fill(cr);
+    }
+  }
 }
 
 void draw_regions(Painter& p, const Scene& scene, const View& view) {
@@ -859,6 +901,7 @@ void render(cairo_t* cr, const Scene& scene, const Layers& layers, double width,
                   lay.model.h + 2 * pad);
   cairo_clip(cr);
   if (layers.regions) draw_regions(p, scene, view);
+  draw_yielded(p, scene, view);
   p.hairlines(scene.zone_lines, view, kZonePen);
   p.stroke(scene.block_lines, view, kBlockPen);
   for (const auto& [cls, lines] : scene.edges) p.stroke(lines, view, pen_of(cls));

@@ -21,6 +21,9 @@ struct PlotDef {
 
 // The layer names `show` accepts, in drawing order:
 //   regions  light fill and name of each named region
+//   plastic  zones that have yielded in the model's run (now or earlier), filled: shear orange,
+//            tension blue, both purple, with counts in the legend
+//   prepass  the same for the last prepass{}, over all its stages (the seed's Figure 8)
 //   zones    triangle edges
 //   blocks   block outlines, one neutral style
 //   joints   block edges by origin: joints coloured by set, cracks red, region outlines

@@ -97,6 +97,9 @@ class Model {
   // The implicit elastoplastic prepass (prepass/model_prepass.cpp): solves the present state and
   // then each stage excavated in turn, on copies; the model itself is left as it was.
   PrepassResult prepass(const PrepassDef& def);
+  // Per mesh zone, the yield bits (kShearNow | kTensionNow) the last prepass{} found over all its
+  // stages; empty before any (for plot{ show = {"prepass"} }).
+  const std::vector<std::uint8_t>& prepass_yield() const { return prepass_yield_; }
   SolverInfo solver_info() const;
   bool cycling_started() const;
   bool cycling_now() const;  // inside cycle() or solve(), e.g. while a callback runs
@@ -170,6 +173,7 @@ class Model {
   BlockSet blocks_;
   Mesh mesh_;
   std::unique_ptr<Mechanics> mechanics_;
+  std::vector<std::uint8_t> prepass_yield_;
 };
 
 }  // namespace edem

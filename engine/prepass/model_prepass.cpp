@@ -121,6 +121,11 @@ PrepassResult Model::prepass(const PrepassDef& def) {
     const size_t n = static_cast<size_t>(m.gp_node[g]);
     result.gridpoint_u[g] = {u[2 * n] - m.u[2 * n], u[2 * n + 1] - m.u[2 * n + 1]};
   }
+  prepass_yield_.assign(static_cast<size_t>(mesh_.zone_count()), 0);
+  for (size_t k = 0; k < result.zones.size(); ++k)
+    for (std::uint8_t bits : result.state[k])
+      if (!(bits & kExcavatedInPrepass))
+        prepass_yield_[static_cast<size_t>(result.zones[k])] |= static_cast<std::uint8_t>(bits & (kShearNow | kTensionNow));
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

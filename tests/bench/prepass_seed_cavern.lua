@@ -1,7 +1,7 @@
 -- The implicit prepass through the seed cavern's 16 stages (tests/bench/RESULTS.md, issue 7):
 -- the seed region (Set P, Case 3 joints tied shut: joints = false), Mohr-Coulomb rock, the
 -- warhead of edem.cavern; seconds and Newton iterations per stage.
--- Run: cd stdlib && ../build/interp/edem ../tests/bench/prepass_seed_cavern.lua EDGE STEPS SOLVER
+-- Run: cd stdlib && ../build/interp/edem ../tests/bench/prepass_seed_cavern.lua EDGE STEPS SOLVER [PICTURE.png]
 --   EDGE: zone edge at the cavern [m] (1.5: ~7k zones; 0.5: ~50k), STEPS: load steps per stage
 local seed = require "edem.seed"
 local cavern = require "edem.cavern"
@@ -22,3 +22,4 @@ for i, s in ipairs(pre.stages) do
 end
 print(("%d zones, edge %g m, %d steps a stage, %s: %d iterations, %d zones yielded, %.2f s"):format(
   n.zones, edge, steps, solver, iterations, yielded, pre.seconds))
+if arg[4] then plot{ file = arg[4], show = { "prepass", "joints" } } print("wrote " .. arg[4]) end

@@ -1,5 +1,9 @@
 // prepass{}: the implicit solve agrees with the explicit one, leaves the model as it was, and
 // reports its stages.
+#include <unistd.h>
+
+#include <filesystem>
+
 #include "interp_test.hpp"
 
 namespace edem::test {
@@ -86,6 +90,28 @@ TEST(Prepass, YieldedZonesAreReported) {
     end
     assert(yielded > 0, "the hole's wall yields")
   )");
+}
+
+// plot{ show = {"prepass"} } draws the last prepass's yielded zones, and asks for one first.
+TEST(Prepass, YieldedZonesArePlotted) {
+  namespace fs = std::filesystem;
+  const fs::path file = fs::temp_directory_path() / ("edem_prepass_plot_" + std::to_string(::getpid()) + ".png");
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, std::string(kPlate) + R"(
+    material{ "rock", model = "mohr", young = 1e9, poisson = 0.25, cohesion = 0.3e6, friction = 30 }
+  )");
+  const std::string plot = "plot{ file = '" + file.string() + "', show = { 'prepass', 'zones' } }";
+  EXPECT_TRUE(contains(error_of(interpreter, plot), "no prepass{} result for this mesh (run prepass{} first)"));
+  EXPECT_FALSE(fs::exists(file));
+  expect_runs(interpreter, "prepass{ stages = { 'hole' } }\n" + plot);
+  EXPECT_GT(fs::file_size(file), 1000u);
+  fs::remove(file);
+  // The run's own plastic zones, after the explicit solver has excavated the hole too.
+  expect_runs(interpreter, "excavate('hole')\nsolve{ ratio = 1e-5 }\n"
+                           "plot{ file = '" + file.string() + "', show = { 'plastic', 'blocks' } }");
+  EXPECT_GT(fs::file_size(file), 1000u);
+  fs::remove(file);
 }
 
 }  // namespace

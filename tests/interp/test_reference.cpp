@@ -38,7 +38,7 @@ TEST(Reference, DocumentsEveryCommandAndKey) {
           << command->name << "." << key.name;
   }
   EXPECT_TRUE(contains(reference, "| `spacing` | number or list | m | > 0 | required |"));
-  EXPECT_TRUE(contains(reference, "| `show` | string or list |  | `regions`, `zones`"));
+  EXPECT_TRUE(contains(reference, "| `show` | string or list |  | `regions`, `plastic`, `prepass`, `zones`"));
   EXPECT_TRUE(contains(reference, "| `stress` | numbers or name | Pa | `insitu` |"));
   EXPECT_TRUE(contains(reference, "| items 1, ... (`what`) | string |  | `displacement`, "));
 }
