@@ -232,6 +232,7 @@ void Model::commit(Inputs next) {
   inputs_ = std::move(next);
   blocks_ = std::move(blocks);
   mesh_ = std::move(mesh);
+  prepass_yield_.clear();  // it was for the old zones
   // New zones: the mechanical commands given so far are applied to them again.
   Mechanics& m = *mechanics_;
   m.crack_seeds = inputs_.crack_seeds;
