@@ -150,9 +150,11 @@ const Command& prepass_command() {
           "was. Returns a table: stages (name, iterations, cutbacks, seconds, steps with each Newton "
           "iterate's residual), zones (id, x, y, state over all stages and states per stage: none, shear, "
           "tension, shear+tension, excavated; stresses, principal s1 (most compressive) and s3, angle of "
-          "s1 from +x in degrees) and gridpoints (id, ux, uy: displacement the prepass adds). Joints as "
-          "interface elements are not built yet: a jointed model needs joints = false, which ties each "
-          "joint's faces together.",
+          "s1 from +x in degrees) and gridpoints (id, ux, uy: displacement the prepass adds). Joints are "
+          "zero-thickness interface elements between node pairs across them (the zoning puts the two faces' "
+          "gridpoints at the same places): kn, ks, Coulomb slip and no tension once open or slipped, from the "
+          "stress beside them; constant kn only. A block that comes loose has no static equilibrium, and the "
+          "stage fails saying so.",
       .keys =
           {
               {"stages", Type::regions, "", any_value, kOptional,
@@ -170,7 +172,8 @@ const Command& prepass_command() {
                "held gridpoints with a velocity (boundary{ xvel, yvel }) move by velocity x duration in the first "
                "stage, in its load steps (static mode: velocities are per cycle, so this is cycles)"},
               {"joints", Type::boolean, "", any_value, "true",
-               "joints as interface elements (not built yet); false: joint faces tied together"},
+               "joints as interface elements; false: each joint's faces tied together (the rock mass as one "
+               "continuum)"},
           },
       .run = run_prepass,
       .returns = "a table: stages, zones, gridpoints, seconds",

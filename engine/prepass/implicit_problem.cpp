@@ -100,6 +100,26 @@ ImplicitProblem make_problem(const Mechanics& m, const std::vector<int>& zones, 
   return p;
 }
 
+void add_interfaces(const Mechanics& m, ImplicitProblem& p, const std::vector<InterfacePair>& pairs,
+                    const std::vector<InterfaceState>& state) {
+  std::vector<char> used(static_cast<size_t>(m.node_count), 0);
+  for (int z : p.zones)
+    for (int n : m.geometry[static_cast<size_t>(z)].node) used[static_cast<size_t>(n)] = 1;
+  for (size_t i = 0; i < pairs.size(); ++i) {
+    if (!used[static_cast<size_t>(pairs[i].a)] || !used[static_cast<size_t>(pairs[i].b)]) continue;
+    p.pairs.push_back(pairs[i]);
+    p.pair_index.push_back(static_cast<int>(i));
+    p.pair_state0.push_back(state[i]);
+  }
+  p.pair_state = p.pair_state0;
+}
+
+void commit_trial(ImplicitProblem& p, const std::vector<double>& u) {
+  p.u0 = u;
+  p.stress0 = p.stress;
+  p.pair_state0 = p.pair_state;
+}
+
 void gather_unknowns(const ImplicitProblem& p, const std::vector<double>& u, double* unknowns) {
   for (size_t i = p.free_of.size(); i-- > 0;)  // backwards: the first component wins
     if (p.free_of[i] >= 0) unknowns[p.free_of[i]] = u[i] - p.base[i];
@@ -129,6 +149,19 @@ void evaluate(const Mechanics& m, ImplicitProblem& p, const std::vector<double>&
       force[2 * n] -= g.area * (s.xx * g.b[i] + s.xy * g.c[i]);
       force[2 * n + 1] -= g.area * (s.xy * g.b[i] + s.yy * g.c[i]);
     }
+  }
+  for (size_t k = 0; k < p.pairs.size(); ++k) {
+    const InterfacePair& pair = p.pairs[k];
+    const size_t a = static_cast<size_t>(pair.a), b = static_cast<size_t>(pair.b);
+    const Vec2 d{u[2 * b] - u[2 * a], u[2 * b + 1] - u[2 * a + 1]};
+    const InterfaceState& now = p.pair_state[k] =
+        interface_trial(m.joint_params[static_cast<size_t>(pair.material)], pair, p.pair_state0[k], d);
+    const Vec2 t{-pair.n.y, pair.n.x};
+    const double fx = pair.length * (now.sn * pair.n.x + now.ss * t.x), fy = pair.length * (now.sn * pair.n.y + now.ss * t.y);
+    force[2 * a] += fx;
+    force[2 * a + 1] += fy;
+    force[2 * b] -= fx;
+    force[2 * b + 1] -= fy;
   }
 }
 
@@ -168,6 +201,25 @@ void tangent(const Mechanics& m, const ImplicitProblem& p, const std::vector<dou
         out.emplace_back(dof[r], dof[c], -k_rc);  // force = -A B^T stress
       }
     }
+  }
+  // Joint pairs: force on a = length x traction(u_b - u_a), on b its opposite.
+  for (size_t k = 0; k < p.pairs.size(); ++k) {
+    const InterfacePair& pair = p.pairs[k];
+    const JointParams& params = m.joint_params[static_cast<size_t>(pair.material)];
+    const size_t a = static_cast<size_t>(pair.a), b = static_cast<size_t>(pair.b);
+    const Vec2 d{u[2 * b] - u[2 * a], u[2 * b + 1] - u[2 * a + 1]};
+    const auto t = interface_tangent(params, pair, interface_trial(params, pair, p.pair_state0[k], d));
+    const int node[2] = {pair.a, pair.b};
+    for (int i = 0; i < 2; ++i)      // force on node[i]
+      for (int j = 0; j < 2; ++j) {  // by displacement of node[j]
+        const double sign = (i == 0 ? 1.0 : -1.0) * (j == 1 ? 1.0 : -1.0);
+        for (int r = 0; r < 2; ++r)
+          for (int c = 0; c < 2; ++c) {
+            const int row = p.free_of[2 * static_cast<size_t>(node[i]) + static_cast<size_t>(r)];
+            const int col = p.free_of[2 * static_cast<size_t>(node[j]) + static_cast<size_t>(c)];
+            if (row >= 0 && col >= 0) out.emplace_back(row, col, sign * pair.length * t[static_cast<size_t>(2 * r + c)]);
+          }
+      }
   }
 }
 

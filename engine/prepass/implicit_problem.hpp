@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "prepass/interfaces.hpp"
 #include "solver/mechanics.hpp"
 
 namespace edem {
@@ -31,6 +32,11 @@ struct ImplicitProblem {
   // The trial at the last evaluated displacement.
   std::vector<Stress> stress;    // per problem zone [Pa]
   std::vector<std::uint8_t> state;  // per problem zone: kShearNow | kTensionNow of the trial
+  // Joints (prepass/interfaces.hpp): the pairs between rock in the problem, their state at the
+  // step's start and their trial.
+  std::vector<InterfacePair> pairs;
+  std::vector<int> pair_index;  // per pair: its index in the prepass's list
+  std::vector<InterfaceState> pair_state0, pair_state;
 };
 
 // The problem over `zones` (mesh zones with a material that is not null), starting from the
@@ -39,6 +45,13 @@ struct ImplicitProblem {
 // with; a group is held in x (y) if any of its nodes is.
 ImplicitProblem make_problem(const Mechanics& m, const std::vector<int>& zones, const std::vector<Stress>& stress,
                              const std::vector<double>& u, const std::vector<int>& tie);
+
+// Adds the joint pairs whose two nodes are in the problem, with their state now.
+void add_interfaces(const Mechanics& m, ImplicitProblem& p, const std::vector<InterfacePair>& pairs,
+                    const std::vector<InterfaceState>& state);
+
+// The trial becomes the step's start (a load step converged).
+void commit_trial(ImplicitProblem& p, const std::vector<double>& u);
 
 // The unknowns (displacements since `base`) from per-component displacements (the first component
 // of each), and back.

@@ -216,8 +216,7 @@ StageLog solve_stage(const Mechanics& m, ImplicitProblem& p, const NewtonSetting
     if (flag >= 0 && largest <= settings.tolerance * s.scale) {
       s.log->residuals.push_back(largest / s.scale);
       s.log->converged = true;
-      p.u0 = s.u;
-      p.stress0 = p.stress;
+      commit_trial(p, s.u);
       for (size_t z = 0; z < p.zones.size(); ++z) yielded[z] |= p.state[z];
       done = to;
       halvings = 0;

@@ -53,12 +53,13 @@ PrepassResult Model::prepass(const PrepassDef& def) {
   }
 
   std::vector<int> tie;
+  std::vector<InterfacePair> pairs;
+  std::vector<InterfaceState> pair_state;
   if (m.faces.touchable_blocks >= 2) {
     if (def.joints)
-      fail("the model has {} blocks with joints between them, and joints as interface elements are not "
-           "built yet; joints = false solves the rock mass as one continuum, its joints tied shut",
-           m.faces.touchable_blocks);
-    tie = tie_joint_faces(m);
+      make_interfaces(m, pairs, pair_state);
+    else
+      tie = tie_joint_faces(m);
   }
 
   // The stages' zones, checked before anything is solved.
@@ -100,6 +101,7 @@ PrepassResult Model::prepass(const PrepassDef& def) {
       std::erase_if(zones, [&](int z) { return out[static_cast<size_t>(z)] != 0; });
     }
     ImplicitProblem p = make_problem(m, zones, stress, u, tie);
+    add_interfaces(m, p, pairs, pair_state);
     if (stage == 0 && def.duration > 0.0) {
       p.drive.assign(u.size(), 0.0);
       for (size_t i = 0; i < u.size(); ++i)
@@ -113,6 +115,7 @@ PrepassResult Model::prepass(const PrepassDef& def) {
       result.state[index[p.zones[k]]].back() = yielded[k];
     }
     u = p.u0;
+    for (size_t k = 0; k < p.pairs.size(); ++k) pair_state[static_cast<size_t>(p.pair_index[k])] = p.pair_state0[k];
     result.stages.push_back({name, std::move(log)});
   }
   for (int z : result.zones) result.stress.push_back(stress[static_cast<size_t>(z)]);

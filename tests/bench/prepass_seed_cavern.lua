@@ -13,7 +13,8 @@ material{ "rock", model = "mohr", density = P.density, young = P.young, poisson 
           friction = P.friction, tension = P.tension }
 local names = {}
 for _, s in ipairs(c.stages) do names[#names + 1] = s.name end
-local pre = prepass{ stages = names, joints = false, steps = steps, solver = solver }
+local joints = os.getenv("JOINTS") == "1"
+local pre = prepass{ stages = names, joints = joints, steps = steps, solver = solver }
 local yielded, iterations = 0, 0
 for _, z in ipairs(pre.zones) do if z.state ~= "none" then yielded = yielded + 1 end end
 for i, s in ipairs(pre.stages) do

@@ -92,6 +92,69 @@ TEST(Prepass, YieldedZonesAreReported) {
   )");
 }
 
+// Joints as interface elements: two blocks on a horizontal joint, pressed from the top with the
+// sides on rollers (uniaxial strain): the top moves p H / M + p / kn (M = E (1 - nu) / ((1 + nu)
+// (1 - 2 nu))), as the explicit solver finds too.
+TEST(Prepass, AJointClosesByItsStiffness) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, R"(
+    block{ x = {0, 1}, y = {0, 2} }
+    jset{ angle = 0, spacing = 10, origin = {0, 1} }
+    zone{ edge = 0.25 }
+    material{ "rock", young = 1e9, poisson = 0.25 }
+    assign{ material = "rock" }
+    joint_material{ "joint", kn = 2e9, ks = 1e9, friction = 30 }
+    jassign{ material = "joint" }
+    boundary{ side = "bottom", fix = "y" }
+    boundary{ side = "left", fix = "x" }
+    boundary{ side = "right", fix = "x" }
+    boundary{ side = "top", stress = { 0, -1e6, 0 } }
+    assert(info().blocks == 2)
+    local M = 1e9 * 0.75 / (1.25 * 0.5)
+    local expected = -(1e6 * 2 / M + 1e6 / 2e9)
+    local top = gp_near(0.5, 2).id
+    local pre = prepass{ steps = 1 }
+    local implicit = pre.gridpoints[top].uy
+    assert(math.abs(implicit - expected) < 1e-9 * math.abs(expected), ("%.12g against %.12g"):format(implicit, expected))
+    assert(math.abs(prepass{ joints = false, steps = 1 }.gridpoints[top].uy - (-1e6 * 2 / M)) < 1e-9 * math.abs(expected),
+           "tied, the joint adds nothing")
+    solve{ ratio = 1e-10, max_cycles = 100000 }
+    for g in gridpoints() do
+      if g.id == top then assert(math.abs(g.uy - expected) < 1e-6 * math.abs(expected), "explicit: " .. g.uy) end
+    end
+  )");
+}
+
+// A block on a 40 degree joint under gravity holds with 50 degrees of friction (its shear traction
+// below the limit); with 30 it slides, and there is no static state to find
+// (tests/bad/prepass_loose_block.lua).
+TEST(Prepass, ABlockOnAJointHoldsByFriction) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, R"(
+    block{ x = {0, 10}, y = {0, 10} }
+    jset{ angle = 40, spacing = 20, origin = {5, 5} }
+    zone{ edge = 1 }
+    material{ "rock", density = 2500, young = 1e9, poisson = 0.25 }
+    assign{ material = "rock" }
+    joint_material{ "joint", kn = 1e10, ks = 1e10, friction = 50 }
+    jassign{ material = "joint" }
+    boundary{ side = "bottom", fix = "xy" }
+    gravity{ 0, -10 }
+    local pre = prepass{ steps = 2 }
+    local tied = prepass{ steps = 2, joints = false }
+    -- Held, the blocks settle as one under their weight (about 1 mm); the joint adds only its
+    -- elastic give (sigma / kn ~ 3e-5 m), where sliding would add metres.
+    local largest, apart = 0, 0
+    for i, g in ipairs(pre.gridpoints) do
+      largest = math.max(largest, math.abs(g.ux), math.abs(g.uy))
+      apart = math.max(apart, math.abs(g.ux - tied.gridpoints[i].ux), math.abs(g.uy - tied.gridpoints[i].uy))
+    end
+    assert(largest > 5e-4 and apart < 1e-4, ("settles %g, joint's give %g"):format(largest, apart))
+  )");
+}
+
 // plot{ show = {"prepass"} } draws the last prepass's yielded zones, and asks for one first.
 TEST(Prepass, YieldedZonesArePlotted) {
   namespace fs = std::filesystem;
