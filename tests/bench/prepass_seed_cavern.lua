@@ -1,6 +1,7 @@
 -- The implicit prepass through the seed cavern's 16 stages (tests/bench/RESULTS.md, issue 7):
 -- the seed region (Set P, Case 3 joints tied shut: joints = false), Mohr-Coulomb rock, the
--- warhead of edem.cavern; seconds and Newton iterations per stage.
+-- warhead of edem.cavern; seconds and Newton iterations per stage. JOINTS=1 in the environment:
+-- joints as interface elements instead (a wedge that comes loose stops it: no static state).
 -- Run: cd stdlib && ../build/interp/edem ../tests/bench/prepass_seed_cavern.lua EDGE STEPS SOLVER [PICTURE.png]
 --   EDGE: zone edge at the cavern [m] (1.5: ~7k zones; 0.5: ~50k), STEPS: load steps per stage
 local seed = require "edem.seed"
