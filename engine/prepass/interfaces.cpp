@@ -69,8 +69,11 @@ void make_interfaces(const Mechanics& m, std::vector<InterfacePair>& pairs, std:
     const auto zone = zones.find({std::min(first->a, first->b), std::max(first->a, first->b)});
     const Stress s = zone == zones.end() ? Stress{} : m.stress[static_cast<size_t>(zone->second)];
     const Vec2 traction{s.xx * normal.x + s.xy * normal.y, s.xy * normal.x + s.yy * normal.y};
-    // The node across from each end of `first` (the edge across runs the other way).
-    for (const auto& [here, across] : {std::pair{first->a, other->b}, std::pair{first->b, other->a}}) {
+    // The node across from each end of `first`, at the same place (the edge across normally runs
+    // the other way).
+    const bool reversed = place_of(m, other->b) == pa;
+    const int across_a = reversed ? other->b : other->a, across_b = reversed ? other->a : other->b;
+    for (const auto& [here, across] : {std::pair{first->a, across_a}, std::pair{first->b, across_b}}) {
       auto [it, added] = index.try_emplace({here, across}, pairs.size());
       if (added) {
         pairs.push_back({here, across, 0.0, {0.0, 0.0}, material});
