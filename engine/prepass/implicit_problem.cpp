@@ -7,24 +7,15 @@
 namespace edem {
 namespace {
 
-struct Strain {
-  double xx = 0.0, yy = 0.0, xy = 0.0;  // xy: engineering shear
-};
-
-Strain strain_of(const ZoneGeometry& g, const std::vector<double>& u, const std::vector<double>& u0) {
-  Strain e;
-  for (int i = 0; i < 3; ++i) {
-    const size_t n = static_cast<size_t>(g.node[static_cast<size_t>(i)]);
-    const double dx = u[2 * n] - u0[2 * n], dy = u[2 * n + 1] - u0[2 * n + 1];
-    e.xx += g.b[i] * dx;
-    e.yy += g.c[i] * dy;
-    e.xy += g.c[i] * dx + g.b[i] * dy;
-  }
-  return e;
+// The displacement since the step's start, per node component.
+std::vector<double> increment(const std::vector<double>& u, const std::vector<double>& u0) {
+  std::vector<double> du(u.size());
+  for (size_t i = 0; i < u.size(); ++i) du[i] = u[i] - u0[i];
+  return du;
 }
 
 // The stress after a strain increment from `start`, and the state bits of that increment.
-Stress stress_after(const MaterialParams& p, const Stress& start, const Strain& e, std::uint8_t* state) {
+Stress stress_after(const MaterialParams& p, const Stress& start, const ZoneStrain& e, std::uint8_t* state) {
   Stress s = start;
   if (p.model == MaterialModel::elastic) {
     elastic_update(p, s, e.xx, e.yy, e.xy);
@@ -41,7 +32,7 @@ using Matrix3 = std::array<std::array<double, 3>, 3>;
 // d stress / d strain of the increment e from `start`: exact for elastic zones, central
 // differences of the return mapping for Mohr-Coulomb ones (piecewise smooth; the step is small
 // against the strain that would cross a corner of the surface).
-Matrix3 material_tangent(const MaterialParams& p, const Stress& start, const Strain& e) {
+Matrix3 material_tangent(const MaterialParams& p, const Stress& start, const ZoneStrain& e) {
   Matrix3 d{};
   if (p.model == MaterialModel::elastic) {
     d[0] = {p.e1, p.e2, 0.0};
@@ -53,7 +44,7 @@ Matrix3 material_tangent(const MaterialParams& p, const Stress& start, const Str
                                         std::abs(start.zz), p.cohesion, 1.0});
   const double h = 1e-6 * (stress_scale / p.e1 + std::max({std::abs(e.xx), std::abs(e.yy), std::abs(e.xy)}));
   for (int k = 0; k < 3; ++k) {
-    Strain plus = e, minus = e;
+    ZoneStrain plus = e, minus = e;
     double* pk = k == 0 ? &plus.xx : k == 1 ? &plus.yy : &plus.xy;
     double* mk = k == 0 ? &minus.xx : k == 1 ? &minus.yy : &minus.xy;
     *pk += h;
@@ -138,11 +129,12 @@ void sum_to_unknowns(const ImplicitProblem& p, const std::vector<double>& force,
 
 void evaluate(const Mechanics& m, ImplicitProblem& p, const std::vector<double>& u, std::vector<double>& force) {
   force = p.applied;
+  const std::vector<double> du = increment(u, p.u0);
   for (size_t k = 0; k < p.zones.size(); ++k) {
     const size_t z = static_cast<size_t>(p.zones[k]);
     const ZoneGeometry& g = m.geometry[z];
     const MaterialParams& params = m.params[static_cast<size_t>(m.zone_material[z])];
-    const Stress s = stress_after(params, p.stress0[k], strain_of(g, u, p.u0), &p.state[k]);
+    const Stress s = stress_after(params, p.stress0[k], zone_strain(du.data(), g), &p.state[k]);
     p.stress[k] = s;
     for (int i = 0; i < 3; ++i) {
       const size_t n = static_cast<size_t>(g.node[static_cast<size_t>(i)]);
@@ -153,15 +145,14 @@ void evaluate(const Mechanics& m, ImplicitProblem& p, const std::vector<double>&
   for (size_t k = 0; k < p.pairs.size(); ++k) {
     const InterfacePair& pair = p.pairs[k];
     const size_t a = static_cast<size_t>(pair.a), b = static_cast<size_t>(pair.b);
-    const Vec2 d{u[2 * b] - u[2 * a], u[2 * b + 1] - u[2 * a + 1]};
+    const Vec2 d = opening(pair, u);
     const InterfaceState& now = p.pair_state[k] =
         interface_trial(m.joint_params[static_cast<size_t>(pair.material)], pair, p.pair_state0[k], d);
-    const Vec2 t{-pair.n.y, pair.n.x};
-    const double fx = pair.length * (now.sn * pair.n.x + now.ss * t.x), fy = pair.length * (now.sn * pair.n.y + now.ss * t.y);
-    force[2 * a] += fx;
-    force[2 * a + 1] += fy;
-    force[2 * b] -= fx;
-    force[2 * b + 1] -= fy;
+    const Vec2 f = pair.length * (now.sn * pair.n + now.ss * along(pair.n));
+    force[2 * a] += f.x;
+    force[2 * a + 1] += f.y;
+    force[2 * b] -= f.x;
+    force[2 * b + 1] -= f.y;
   }
 }
 
@@ -169,11 +160,12 @@ void tangent(const Mechanics& m, const ImplicitProblem& p, const std::vector<dou
              std::vector<Eigen::Triplet<double, int>>& out) {
   out.clear();
   out.reserve(p.zones.size() * 36);
+  const std::vector<double> du = increment(u, p.u0);
   for (size_t k = 0; k < p.zones.size(); ++k) {
     const size_t z = static_cast<size_t>(p.zones[k]);
     const ZoneGeometry& g = m.geometry[z];
     const MaterialParams& params = m.params[static_cast<size_t>(m.zone_material[z])];
-    const Matrix3 d = material_tangent(params, p.stress0[k], strain_of(g, u, p.u0));
+    const Matrix3 d = material_tangent(params, p.stress0[k], zone_strain(du.data(), g));
     // B: strain (xx, yy, xy) per corner displacement (x, y).
     double bm[3][6] = {};
     for (int i = 0; i < 3; ++i) {
@@ -206,8 +198,7 @@ void tangent(const Mechanics& m, const ImplicitProblem& p, const std::vector<dou
   for (size_t k = 0; k < p.pairs.size(); ++k) {
     const InterfacePair& pair = p.pairs[k];
     const JointParams& params = m.joint_params[static_cast<size_t>(pair.material)];
-    const size_t a = static_cast<size_t>(pair.a), b = static_cast<size_t>(pair.b);
-    const Vec2 d{u[2 * b] - u[2 * a], u[2 * b + 1] - u[2 * a + 1]};
+    const Vec2 d = opening(pair, u);
     const auto t = interface_tangent(params, pair, interface_trial(params, pair, p.pair_state0[k], d));
     const int node[2] = {pair.a, pair.b};
     for (int i = 0; i < 2; ++i)      // force on node[i]

@@ -16,8 +16,6 @@ Place place_of(const Mechanics& m, int node) {
   return {m.position[2 * static_cast<size_t>(node)], m.position[2 * static_cast<size_t>(node) + 1]};
 }
 
-Vec2 tangent_of(Vec2 n) { return {-n.y, n.x}; }
-
 // The zone of each zone edge, by its two nodes (smaller first).
 std::map<std::pair<int, int>, int> zone_of_edge(const Mechanics& m) {
   std::map<std::pair<int, int>, int> out;
@@ -62,9 +60,9 @@ void make_interfaces(const Mechanics& m, std::vector<InterfacePair>& pairs, std:
            "only (not built yet)",
            m.joint_materials[static_cast<size_t>(material)].name);
     const Place pa = place_of(m, first->a), pb = place_of(m, first->b);
-    const Vec2 along{pb.first - pa.first, pb.second - pa.second};
-    const double length = std::sqrt(along.x * along.x + along.y * along.y);
-    const Vec2 normal{along.y / length, -along.x / length};  // the block is on the edge's left
+    const Vec2 edge_vector{pb.first - pa.first, pb.second - pa.second};
+    const double length = norm(edge_vector);
+    const Vec2 normal{edge_vector.y / length, -edge_vector.x / length};  // the block is on the edge's left
     // The stress beside the joint gives the traction the pairs start with.
     const auto zone = zones.find({std::min(first->a, first->b), std::max(first->a, first->b)});
     const Stress s = zone == zones.end() ? Stress{} : m.stress[static_cast<size_t>(zone->second)];
@@ -84,30 +82,27 @@ void make_interfaces(const Mechanics& m, std::vector<InterfacePair>& pairs, std:
       const double share = 0.5 * length;
       // Length-weighted sums, normalised below.
       pair.n = pair.n + share * normal;
-      st.sn += share * (traction.x * normal.x + traction.y * normal.y);
-      st.ss += share * (traction.x * tangent_of(normal).x + traction.y * tangent_of(normal).y);
+      st.sn += share * dot(traction, normal);
+      st.ss += share * dot(traction, along(normal));
       pair.length += share;
     }
   }
   for (size_t i = 0; i < pairs.size(); ++i) {
     InterfacePair& pair = pairs[i];
-    const double norm = std::sqrt(pair.n.x * pair.n.x + pair.n.y * pair.n.y);
-    pair.n = (1.0 / norm) * pair.n;
+    pair.n = (1.0 / norm(pair.n)) * pair.n;
     state[i].sn /= pair.length;
     state[i].ss /= pair.length;
-    const size_t a = static_cast<size_t>(pair.a), b = static_cast<size_t>(pair.b);
-    state[i].d = {m.u[2 * b] - m.u[2 * a], m.u[2 * b + 1] - m.u[2 * a + 1]};
+    state[i].d = opening(pair, m.u);
   }
 }
 
 InterfaceState interface_trial(const JointParams& p, const InterfacePair& pair, const InterfaceState& start, Vec2 d) {
-  const Vec2 t = tangent_of(pair.n);
-  const Vec2 dd{d.x - start.d.x, d.y - start.d.y};
+  const Vec2 dd = d - start.d;
   InterfaceState now = start;
   now.d = d;
   now.mode = 0;
-  now.sn = start.sn + p.kn * (dd.x * pair.n.x + dd.y * pair.n.y);
-  now.ss = start.ss + p.ks * (dd.x * t.x + dd.y * t.y);
+  now.sn = start.sn + p.kn * dot(dd, pair.n);
+  now.ss = start.ss + p.ks * dot(dd, along(pair.n));
   const double tension = start.broken ? 0.0 : p.tension;
   if (now.sn > tension) {  // open: no traction
     now.sn = 0.0;
@@ -130,7 +125,7 @@ InterfaceState interface_trial(const JointParams& p, const InterfacePair& pair, 
 
 std::array<double, 4> interface_tangent(const JointParams& p, const InterfacePair& pair, const InterfaceState& now) {
   if (now.mode == kTensionNow) return {0.0, 0.0, 0.0, 0.0};
-  const Vec2 n = pair.n, t = tangent_of(n);
+  const Vec2 n = pair.n, t = along(n);
   // In local axes: d sn / d dn = kn; d ss / d ds = ks, or, slipping, d ss / d dn = -sign tan(phi) kn.
   const double friction = now.slope;
   const double snn = p.kn, sst = now.mode == kShearNow ? 0.0 : p.ks;

@@ -22,6 +22,15 @@ struct InterfacePair {
   int material = -1;    // joint material
 };
 
+// The joint's direction at a pair: its normal turned counter-clockwise (the shear axis).
+inline Vec2 along(Vec2 n) { return {-n.y, n.x}; }
+
+// u_b - u_a of a pair, from displacements per node component.
+inline Vec2 opening(const InterfacePair& pair, const std::vector<double>& u) {
+  const size_t a = static_cast<size_t>(pair.a), b = static_cast<size_t>(pair.b);
+  return {u[2 * b] - u[2 * a], u[2 * b + 1] - u[2 * a + 1]};
+}
+
 // A pair's state: traction on a's face (normal, tension positive; shear along the normal turned
 // counter-clockwise) [Pa], relative displacement u_b - u_a [m], and whether it has slipped or
 // opened (then no tension and residual strength).

@@ -50,24 +50,11 @@ struct Partials {
   std::vector<char> finite;
 };
 
-struct StrainRate {
-  double xx, yy, xy;  // xy engineering [1/s]
-};
-
-[[gnu::always_inline]] inline StrainRate strain_rate(const double* v, const ZoneGeometry& g) {
-  const size_t n0 = static_cast<size_t>(g.node[0]), n1 = static_cast<size_t>(g.node[1]),
-               n2 = static_cast<size_t>(g.node[2]);
-  const double vx0 = v[2 * n0], vy0 = v[2 * n0 + 1], vx1 = v[2 * n1], vy1 = v[2 * n1 + 1],
-               vx2 = v[2 * n2], vy2 = v[2 * n2 + 1];
-  return {g.b[0] * vx0 + g.b[1] * vx1 + g.b[2] * vx2, g.c[0] * vy0 + g.c[1] * vy1 + g.c[2] * vy2,
-          g.c[0] * vx0 + g.c[1] * vx1 + g.c[2] * vx2 + g.b[0] * vy0 + g.b[1] * vy1 + g.b[2] * vy2};
-}
-
 // Constitutive update of mesh zone z over one step; `iso` is the isotropic strain rate the
 // mixed discretisation adds, on all three axes (kIso false: none, and no flops spent on it;
 // with them the plain cycle was 10 % slower).
 template <bool kIso>
-[[gnu::always_inline]] inline void update_zone(Mechanics& m, size_t z, const StrainRate& r, double iso, double dt) {
+[[gnu::always_inline]] inline void update_zone(Mechanics& m, size_t z, const ZoneStrain& r, double iso, double dt) {
   const MaterialParams& p = m.params[static_cast<size_t>(m.zone_material[z])];
   Stress& s = m.stress[z];
   const double dxx = (kIso ? r.xx + iso : r.xx) * dt, dyy = (kIso ? r.yy + iso : r.yy) * dt;
@@ -146,7 +133,7 @@ void zone_force_pass(Mechanics& m, int begin, int end, Partials& partials) {
       const ZoneGeometry& g = m.geometry[z];
       const auto& dest = m.partition.dest[static_cast<size_t>(k)];
       const Stress& s = m.stress[z];
-      update_zone<false>(m, z, strain_rate(v, g), 0.0, dt);
+      update_zone<false>(m, z, zone_strain(v, g), 0.0, dt);
       const double f = add_zone_forces<kMeasure>(m, g, dest, s, 0.0);
       if constexpr (kMeasure) {
         applied += f;
@@ -155,11 +142,11 @@ void zone_force_pass(Mechanics& m, int begin, int end, Partials& partials) {
     } else if (others[0] > k && (others[1] < 0 || others[1] > k)) {
       const int members[3] = {k, others[0], others[1]};
       const int count = others[1] < 0 ? 2 : 3;
-      StrainRate rate[3];
+      ZoneStrain rate[3];
       double area = 0.0, volume = 0.0;
       for (int i = 0; i < count; ++i) {
         const ZoneGeometry& g = m.geometry[static_cast<size_t>(m.active[static_cast<size_t>(members[i])])];
-        rate[i] = strain_rate(v, g);
+        rate[i] = zone_strain(v, g);
         area += g.area;
         volume += g.area * (rate[i].xx + rate[i].yy);
       }

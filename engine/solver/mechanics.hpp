@@ -35,6 +35,21 @@ struct ZoneGeometry {
   double c[3] = {};           // dN_i/dy [1/m]
 };
 
+// A zone's strain from nodal values, engineering shear: from velocities its rate [1/s] (the
+// cycle), from displacement increments its increment [-] (the prepass).
+struct ZoneStrain {
+  double xx, yy, xy;
+};
+
+[[gnu::always_inline]] inline ZoneStrain zone_strain(const double* v, const ZoneGeometry& g) {
+  const size_t n0 = static_cast<size_t>(g.node[0]), n1 = static_cast<size_t>(g.node[1]),
+               n2 = static_cast<size_t>(g.node[2]);
+  const double vx0 = v[2 * n0], vy0 = v[2 * n0 + 1], vx1 = v[2 * n1], vy1 = v[2 * n1 + 1],
+               vx2 = v[2 * n2], vy2 = v[2 * n2 + 1];
+  return {g.b[0] * vx0 + g.b[1] * vx1 + g.b[2] * vx2, g.c[0] * vy0 + g.c[1] * vy1 + g.c[2] * vy2,
+          g.c[0] * vx0 + g.c[1] * vx1 + g.c[2] * vx2 + g.b[0] * vy0 + g.b[1] * vy1 + g.b[2] * vy2};
+}
+
 // A segment of the model's outer boundary (a block{} outline), domain on its left.
 struct BoundarySegment {
   int a = -1, b = -1;   // nodes
