@@ -1,6 +1,8 @@
 // Potential-crack commands: crackseed{}, judge{}, cracks(), sections().
 #include <lua.hpp>
 
+#include <cmath>
+
 #include "callbacks.hpp"
 #include "commands.hpp"
 #include "context.hpp"
@@ -21,11 +23,135 @@ std::string_view mode_name(CrackMode mode) {
   return "none";
 }
 
-int run_crackseed(lua_State*, Context& context, const Args& args) {
+// A number field of the table on top of the stack, named for messages as `path`.
+double number_field(lua_State* L, const char* key, const std::string& path) {
+  lua_pushstring(L, key);
+  lua_rawget(L, -2);
+  if (lua_type(L, -1) != LUA_TNUMBER) {
+    lua_pop(L, 1);
+    fail("auto: {}.{} must be a number, as prepass{{}} gives it", path, key);
+  }
+  const double value = lua_tonumber(L, -1);
+  lua_pop(L, 1);
+  if (!std::isfinite(value)) fail("auto: {}.{} must be finite, got {}", path, key, value);
+  return value;
+}
+
+// A string field of the table on top of the stack ("" when absent).
+std::string string_field(lua_State* L, const char* key) {
+  lua_pushstring(L, key);
+  lua_rawget(L, -2);
+  std::string value = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : "";
+  lua_pop(L, 1);
+  return value;
+}
+
+// The zones of a prepass{} result (the table at `index`): id, x, y, state, states, angle.
+std::vector<PrepassZone> read_prepass_zones(lua_State* L, int index) {
+  lua_pushstring(L, "zones");
+  lua_rawget(L, index);
+  if (!lua_istable(L, -1)) {
+    lua_pop(L, 1);
+    fail("auto must be a prepass{{}} result: it has no zones list");
+  }
+  std::vector<PrepassZone> zones;
+  const auto count = static_cast<lua_Integer>(lua_rawlen(L, -1));
+  for (lua_Integer i = 1; i <= count; ++i) {
+    lua_rawgeti(L, -1, i);
+    const std::string path = fmt::format("zones[{}]", i);
+    if (!lua_istable(L, -1)) {
+      lua_pop(L, 2);
+      fail("auto: {} must be a table, as prepass{{}} gives it", path);
+    }
+    try {
+      PrepassZone z;
+      z.zone = static_cast<int>(number_field(L, "id", path)) - 1;
+      z.centroid = {number_field(L, "x", path), number_field(L, "y", path)};
+      z.angle = number_field(L, "angle", path);
+      const std::string state = string_field(L, "state");
+      z.shear = state.find("shear") != std::string::npos;
+      z.tension = state.find("tension") != std::string::npos;
+      lua_pushstring(L, "states");
+      lua_rawget(L, -2);
+      if (lua_istable(L, -1)) {
+        lua_rawgeti(L, -1, static_cast<lua_Integer>(lua_rawlen(L, -1)));
+        z.excavated = lua_type(L, -1) == LUA_TSTRING && std::string_view(lua_tostring(L, -1)) == "excavated";
+        lua_pop(L, 1);
+      }
+      lua_pop(L, 1);
+      zones.push_back(z);
+    } catch (...) {
+      lua_pop(L, 2);
+      throw;
+    }
+    lua_pop(L, 1);
+  }
+  lua_pop(L, 1);
+  return zones;
+}
+
+// crackseed{ auto = prepass result }: the groups placed, as a list.
+int run_auto_crackseed(lua_State* L, Context& context, const Args& args) {
+  if (args.has("angle") || args.has("angles")) fail("auto places its own cuts: leave out angle and angles");
+  AutoCrackSeedDef def;
+  def.zones = read_prepass_zones(L, args.get<TableArg>("auto").index);
+  if (args.has("spacing")) def.spacing = args.number("spacing");
+  def.similar = args.number("similar");
+  if (args.has("region")) def.region = args.get<RegionRef>("region");
+  if (args.has("material")) def.material = args.string("material");
+  if (args.has("after")) def.after = args.string("after");
+  const int first = context.model().info().crack_seeds;
+  const std::vector<CrackRegion> regions = context.model().add_auto_crackseed(def);
+  lua_createtable(L, static_cast<int>(regions.size()), 0);
+  for (size_t i = 0; i < regions.size(); ++i) {
+    const CrackRegion& r = regions[i];
+    lua_createtable(L, 0, 9);
+    set_field(L, "seed", first + static_cast<int>(i) + 1);
+    set_field(L, "mode", std::string_view(r.tension ? "tension" : "shear"));
+    set_field(L, "principal", r.principal);
+    set_field(L, "friction", r.friction);
+    lua_createtable(L, 2, 0);
+    for (size_t k = 0; k < r.angles.size(); ++k) {
+      lua_pushnumber(L, r.angles[k]);
+      lua_rawseti(L, -2, static_cast<lua_Integer>(k + 1));
+    }
+    lua_setfield(L, -2, "angles");
+    lua_createtable(L, static_cast<int>(r.zones.size()), 0);
+    for (size_t k = 0; k < r.zones.size(); ++k) {
+      lua_pushinteger(L, r.zones[k] + 1);
+      lua_rawseti(L, -2, static_cast<lua_Integer>(k + 1));
+    }
+    lua_setfield(L, -2, "zones");
+    push_point(L, r.origin);
+    lua_setfield(L, -2, "origin");
+    lua_createtable(L, static_cast<int>(r.cuts.size()), 0);
+    for (size_t k = 0; k < r.cuts.size(); ++k) {
+      lua_createtable(L, 2, 0);
+      push_point(L, r.cuts[k][0]);
+      lua_rawseti(L, -2, 1);
+      push_point(L, r.cuts[k][1]);
+      lua_rawseti(L, -2, 2);
+      lua_rawseti(L, -2, static_cast<lua_Integer>(k + 1));
+    }
+    lua_setfield(L, -2, "cuts");
+    lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
+  }
+  if (!context.quiet) {
+    size_t cuts = 0;
+    for (const CrackRegion& r : regions) cuts += r.cuts.size();
+    fmt::print("crackseed: auto: {} group(s) of yielded zones, {} cut(s)\n", regions.size(), cuts);
+    std::fflush(stdout);
+  }
+  return 1;
+}
+
+int run_crackseed(lua_State* L, Context& context, const Args& args) {
+  if (args.has("auto")) return run_auto_crackseed(L, context, args);
   CrackSeedDef def;
   const bool one = args.has("angle"), two = args.has("angles");
-  if (one == two) fail("give angle = a or angles = {{a1, a2}} (one of them)");
+  if (one == two) fail("give angle = a or angles = {{a1, a2}} (one of them), or auto = a prepass{{}} result");
   def.angles = one ? std::vector<double>{args.number("angle")} : args.get<std::vector<double>>("angles");
+  if (!args.has("spacing")) fail("spacing is needed (the normal distance between the cuts of a set)");
   def.spacing = args.number("spacing");
   def.origin = args.point("origin");
   if (args.has("region")) def.region = args.get<RegionRef>("region");
@@ -130,15 +256,26 @@ const Command& crackseed_command() {
           "(their faces share gridpoints: no stiffness to choose, the model deforms exactly as "
           "without them) until a section of one fails in shear "
           "or tension (judge{}); the section then becomes a crack with a joint material. "
-          "Each zone edge along a cut is a section, judged on its own.",
+          "Each zone edge along a cut is a section, judged on its own. With auto = a prepass{} "
+          "result it places them itself, where that prepass found the rock yielding: the yielded "
+          "zones grouped by failure mode and principal direction, two sets in each group, at "
+          "+-(45 + phi/2) from the major principal plane where shear governs, along and across "
+          "it where tension does (crack/auto_placement.hpp tells how).",
       .keys =
           {
               {"angle", Type::number, "deg", between(-360, 360), kOptional,
                "direction of one set of cuts, counter-clockwise from +x", "or angles"},
               {"angles", Type::numbers, "deg", between(-360, 360), kOptional,
                "one set of cuts per direction, e.g. {45 + phi/2, 135 - phi/2}", "or angle"},
-              {"spacing", Type::number, "m", gt(0), kRequired,
-               "normal distance between the cuts of a set"},
+              {"auto", Type::table, "", any_value, kOptional,
+               "a prepass{} result: cuts only in the zones it found yielding, at the angles above, "
+               "one crack seed per group (returns the groups)",
+               "angle or angles"},
+              {"spacing", Type::number, "m", gt(0), kOptional,
+               "normal distance between the cuts of a set",
+               "required; with auto a tenth of the height the prepass excavated"},
+              {"similar", Type::number, "deg", above_upto(0, 90), "15",
+               "auto: largest difference of principal direction within a group"},
               {"origin", Type::point, "m", any_value, "{0, 0}", "a point on one cut of each set"},
               {"region", Type::region, "", any_value, kOptional,
                "only inside this region (a name or a polygon; a region{} keeps every piece, a "
@@ -151,7 +288,9 @@ const Command& crackseed_command() {
                "the joint material of its cracks", "the one jassign{} gives joints there"},
           },
       .run = run_crackseed,
-      .usage = "crackseed{ region = \"arch\", angles = {62, 118}, spacing = 4.8, after = \"joint\" }",
+      .returns = "with auto: the groups, each {seed, mode, principal, friction, angles, zones, origin, cuts}",
+      .usage = "crackseed{ region = \"arch\", angles = {62, 118}, spacing = 4.8, after = \"joint\" }\n"
+               "local groups = crackseed{ auto = prepass{ stages = {\"heading\", \"bench\"} }, spacing = 4.8 }",
   };
   return command;
 }

@@ -1,8 +1,8 @@
 // Reading a call against its command's schema: types, ranges, unknown keys, defaults.
 //
 // Every reader reads raw (no metamethods run) and leaves the Lua stack as it found it, but for
-// a function given inside the call's table: it stays pushed, above the call's arguments, so
-// that its FunctionArg index is valid while the command runs. A failed check has no effect
+// a function or table given inside the call's table: it stays pushed, above the call's arguments,
+// so that its FunctionArg or TableArg index is valid while the command runs. A failed check has no effect
 // anywhere. Messages name the key as the user wrote it
 // ("spacing[2] must be > 0, got 0").
 #include "schema.hpp"
@@ -63,6 +63,8 @@ TypeText type_text(Type type) {
               "`\"blocks\"` or `{\"blocks\", \"zones\"}`"};
     case Type::function:
       return {"function", "a function", "`function(x) ... end`"};
+    case Type::table:
+      return {"table", "a table", "a table, as a command returned it: `pre` from `local pre = prepass{...}`"};
     case Type::pairs:
       return {"list of pairs", "a list of pairs of numbers {{a, b}, ...}",
               "`{{0, 2.6e8}, {5e-5, 9.4e8}}`: one or more pairs"};
@@ -357,6 +359,9 @@ Value read_value(lua_State* L, int index, const Key& key, std::string_view path)
     case Type::function:
       if (!lua_isfunction(L, index)) wrong_type(L, index, path, key.type);
       return FunctionArg{lua_absindex(L, index)};
+    case Type::table:
+      if (!lua_istable(L, index)) wrong_type(L, index, path, key.type);
+      return TableArg{lua_absindex(L, index)};
     case Type::pairs: {
       const int length = list_length(L, index, path, Type::pairs);
       if (length == 0) fail("{} must not be an empty list", path);
@@ -438,7 +443,7 @@ void read_table_items(lua_State* L, const Command& command, int table, Args& arg
     lua_rawgeti(L, table, i);
     args.values[std::string(key.name)] =
         read_value(L, lua_gettop(L), key, fmt::format("item #{} ({})", i, key.name));
-    if (key.type != Type::function) lua_pop(L, 1);  // a function stays: see the top
+    if (!stays_pushed(key.type)) lua_pop(L, 1);  // a function or table stays: see the top
   }
 }
 
@@ -486,7 +491,7 @@ void read_table(lua_State* L, const Command& command, Args& args) {
     lua_pushstring(L, name.c_str());
     const bool given = lua_rawget(L, 1) != LUA_TNIL;
     if (given) args.values[name] = read_value(L, lua_gettop(L), key, name);
-    if (!given || key.type != Type::function) lua_pop(L, 1);  // a function stays: see the top
+    if (!given || !stays_pushed(key.type)) lua_pop(L, 1);  // a function or table stays: see the top
   }
 }
 

@@ -41,6 +41,7 @@ enum class Type {
   regions,          // a region (name or polygon) or a list of them
   strings,          // a string or a list of strings
   function,         // a Lua function
+  table,            // a Lua table, read by the command itself (a prepass{} result)
   numbers_or_name,  // a list of numbers, or one of the key's choices: {0, -1e6, 0} or "insitu"
   pairs,            // a non-empty list of pairs of numbers: {{a, b}, {a, b}, ...}
 };
@@ -48,7 +49,8 @@ enum class Type {
 inline constexpr Type kAllTypes[] = {
     Type::number,  Type::integer,  Type::string,   Type::boolean,        Type::point,
     Type::pair,    Type::int_pair, Type::numbers,  Type::polygon,        Type::region,
-    Type::regions, Type::strings,  Type::function, Type::numbers_or_name, Type::pairs};
+    Type::regions, Type::strings,  Type::function, Type::table,          Type::numbers_or_name,
+    Type::pairs};
 
 // A type's name in the reference ("point"), and how a script writes it ("`{x, y}` or ...").
 std::string_view type_name(Type type);
@@ -135,10 +137,18 @@ struct FunctionArg {
   int index = 0;
 };
 
+// A Lua table argument, kept on the stack the same way.
+struct TableArg {
+  int index = 0;
+};
+
+// Function and table arguments stay pushed while the command runs.
+constexpr bool stays_pushed(Type type) { return type == Type::function || type == Type::table; }
+
 using Value = std::variant<double, std::int64_t, std::string, bool, Vec2, std::array<double, 2>,
                            std::array<std::int64_t, 2>, std::vector<double>, Polygon, RegionRef,
                            std::vector<RegionRef>, std::vector<std::string>, FunctionArg,
-                           std::vector<std::array<double, 2>>>;
+                           TableArg, std::vector<std::array<double, 2>>>;
 
 // The checked arguments of one call, by key (positional items under their declared names).
 // Getters throw std::logic_error when a command asks for what its schema does not give.

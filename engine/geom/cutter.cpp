@@ -352,7 +352,9 @@ class BaseCutter {
         case EdgeKind::boundary: name = "the block's outline"; break;
         case EdgeKind::joint: name = fmt::format("joint set {}", o.set + 1); break;
         case EdgeKind::crack: name = fmt::format("crack {}", o.source + 1); break;
-        case EdgeKind::region: name = fmt::format("region {}", o.source + 1); break;
+        case EdgeKind::region:
+          name = o.source >= 0 ? fmt::format("region {}", o.source + 1) : "the outline of a crackseed{ auto } group";
+          break;
         case EdgeKind::potential: name = fmt::format("crackseed {}", o.source + 1); break;
       }
       if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);

@@ -4,6 +4,7 @@
 // against its schema, the Model validates what needs the model (names, geometry).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -56,6 +57,28 @@ struct CrackSeedDef {
   Vec2 origin;                 // a point on one cut of each set [m]
   std::string material;        // rock material whose c, phi, sigma_t judge it ("": the zone's)
   std::string after;           // joint material its cracks take ("": the joints')
+  // Cuts placed as given (crackseed{ auto }), instead of sets of parallel lines at `angles`.
+  std::vector<std::array<Vec2, 2>> cuts;
+  std::vector<std::array<Vec2, 2>> outline;  // glued cuts the `cuts` end on (auto)
+};
+
+// A zone of a prepass result, as crackseed{ auto = } reads it back from the script.
+struct PrepassZone {
+  int zone = -1;            // mesh zone
+  Vec2 centroid;            // where the prepass had it [m]
+  bool shear = false;       // yielded in shear at some stage
+  bool tension = false;     // yielded in tension at some stage
+  bool excavated = false;   // gone by the prepass's last stage
+  double angle = 0.0;       // direction of the most compressive principal stress at the end [deg]
+};
+
+struct AutoCrackSeedDef {
+  std::vector<PrepassZone> zones;
+  double spacing = 0.0;   // between the cuts of a set [m]; 0: a tenth of the opening's height
+  double similar = 15.0;  // largest difference of principal direction within a group [deg]
+  RegionRef region;       // only zones inside it (empty: all)
+  std::string material;   // as CrackSeedDef's; its friction also sets the shear sets' angles
+  std::string after;
 };
 
 struct RegionDef {

@@ -114,7 +114,7 @@ void Model::add_crack(const CrackDef& def) {
 
 void Model::add_crackseed(const CrackSeedDef& def) {
   check_geometry_open();
-  if (def.angles.empty()) fail("crackseed needs an angle: angle = a or angles = {{a1, a2}}");
+  if (def.angles.empty() && def.cuts.empty()) fail("crackseed needs an angle: angle = a or angles = {{a1, a2}}");
   for (double a : def.angles) check_finite(a, "angle");
   if (!(def.spacing > 0.0) || !std::isfinite(def.spacing))
     fail("spacing must be > 0, got {}", def.spacing);
@@ -191,6 +191,10 @@ BlockSet Model::cut(const Inputs& inputs) const {
       clip = static_cast<int>(input.clip_polygons.size());
       input.clip_polygons.push_back(resolve_in(inputs, seed.region));
     }
+    for (const auto& [a, b] : seed.cuts)
+      input.cuts.push_back({a, b, {EdgeKind::potential, -1, static_cast<int>(i), true}, clip});
+    for (const auto& [a, b] : seed.outline) input.cuts.push_back({a, b, {EdgeKind::region, -1, -1, true}, -1});
+    if (!seed.cuts.empty()) continue;
     for (const double angle : seed.angles) {
       JointSetDef lines;
       lines.angle = angle;

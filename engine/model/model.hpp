@@ -13,6 +13,7 @@
 #include <string_view>
 #include <vector>
 
+#include "crack/auto_placement.hpp"
 #include "geom/block_set.hpp"
 #include "geom/mesh.hpp"
 #include "geom/zoning.hpp"
@@ -39,6 +40,9 @@ class Model {
   void add_crack(const CrackDef& def);
   void add_region(const RegionDef& def);
   void add_crackseed(const CrackSeedDef& def);  // potential cracks (crack/sections.hpp)
+  // Potential cracks where a prepass found yielding (crack/auto_placement.hpp), in one rebuild: one
+  // crack seed per group of yielded zones. Returns the groups placed.
+  std::vector<CrackRegion> add_auto_crackseed(const AutoCrackSeedDef& def);
   void zone(const ZoneDef& def);
 
   // Derived stores.

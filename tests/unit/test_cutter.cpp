@@ -218,8 +218,8 @@ TEST(Cutter, ManySmallFeaturesAreSnappedTogether) {
   model.add_joint_set(cross);
   model.add_region({"walls", box(-30, 30, -34, 18)});
   model.add_region({"roof", box(-30, 30, 18, 44)});
-  model.add_crackseed({{"walls", {}}, {118, 0}, 4.8, {1.3, 0.7}, "", ""});
-  model.add_crackseed({{"roof", {}}, {0, 90}, 4.8, {1.3, 0.7}, "", ""});
+  model.add_crackseed({{"walls", {}}, {118, 0}, 4.8, {1.3, 0.7}, "", "", {}, {}});
+  model.add_crackseed({{"roof", {}}, {0, 90}, 4.8, {1.3, 0.7}, "", "", {}, {}});
   const BlockSet& set = model.blocks();
   EXPECT_GT(set.snapped_vertices, 12);
   EXPECT_NEAR(total_area(set), 200.0 * 180.0, 1e-9 * 200.0 * 180.0);
@@ -232,7 +232,7 @@ TEST(Cutter, CutsAtAShallowAngleNameTheInputs) {
   Model model = seed_region_coarse();
   const size_t blocks_before = model.blocks().blocks.size();
   try {
-    model.add_crackseed({{}, {62, 118}, 4.8, {1.3, 0.7}, "", ""});
+    model.add_crackseed({{}, {62, 118}, 4.8, {1.3, 0.7}, "", "", {}, {}});
     FAIL() << "no error";
   } catch (const Error& e) {
     const std::string what = e.what();
