@@ -65,7 +65,9 @@ std::vector<PrepassZone> read_prepass_zones(lua_State* L, int index) {
     }
     try {
       PrepassZone z;
-      z.zone = static_cast<int>(number_field(L, "id", path)) - 1;
+      const double id = number_field(L, "id", path);
+      if (id < 1 || id > 2e9 || id != std::floor(id)) fail("auto: {}.id must be a zone number, got {}", path, id);
+      z.zone = static_cast<int>(id) - 1;
       z.centroid = {number_field(L, "x", path), number_field(L, "y", path)};
       z.angle = number_field(L, "angle", path);
       const std::string state = string_field(L, "state");

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <set>
 #include <utility>
 
 namespace edem {
@@ -100,7 +101,7 @@ void split_outlines_at_cut_ends(std::vector<CrackRegion>& regions) {
           const Vec2 d = e.b - e.a;
           const double t = dot(end - e.a, d) / dot(d, d);
           const double length = norm(d);
-          if (t * length <= near || (1.0 - t) * length <= near) continue;  // at a vertex already
+          if (t * length <= near || (1.0 - t) * length <= near) continue;  // at a vertex, or beyond
           if (std::abs(cross(d, end - e.a)) / length <= near) e.at.push_back({t, end});
         }
   for (Edge& e : edges) {
@@ -230,6 +231,18 @@ std::vector<Cut> union_outline(const Mesh& mesh, const std::vector<int>& zones) 
   for (int z : zones) {
     const auto& gp = mesh.zone_gp[static_cast<size_t>(z)];
     for (size_t i = 0; i < 3; ++i) ++uses[key(gp[i], gp[(i + 1) % 3])];
+  }
+  // Edges on a block's boundary are cut already (a joint, a region outline, the model's edge).
+  std::set<int> blocks;
+  for (int z : zones)
+    if (static_cast<size_t>(z) < mesh.zone_block.size()) blocks.insert(mesh.zone_block[static_cast<size_t>(z)]);
+  for (int b : blocks) {
+    if (static_cast<size_t>(b) >= mesh.block_boundary.size()) continue;
+    for (const BoundaryLoop& loop : mesh.block_boundary[static_cast<size_t>(b)])
+      for (size_t i = 0; i < loop.gridpoints.size(); ++i) {
+        auto it = uses.find(key(loop.gridpoints[i], loop.gridpoints[(i + 1) % loop.gridpoints.size()]));
+        if (it != uses.end()) it->second = 0;
+      }
   }
   std::vector<Cut> out;
   for (int z : zones) {

@@ -15,9 +15,9 @@
 //
 // Cuts: lines `spacing` apart, one through the region's centroid, kept where they run through the
 // region's zones; a piece shorter than the region's mean zone edge (one section at most) is left
-// out. The region's outline (the zone edges on the boundary of its zones' union) becomes a glued
-// cut too, as a region{}'s does: a piece ends on it and so splits a block (a piece that ended
-// inside a block would be dropped, as UDEC drops it).
+// out. The region's outline (the zone edges on the boundary of its zones' union that are not on a
+// block's boundary already) becomes a glued cut too, as a region{}'s does: a piece ends on it and
+// so splits a block (a piece that ended inside a block would be dropped, as UDEC drops it).
 #pragma once
 
 #include <array>
@@ -63,7 +63,7 @@ std::vector<Cut> cuts_in_zones(const Mesh& mesh, const std::vector<int>& zones, 
                                Vec2 origin, double shortest);
 
 // The edges of `zones` on the boundary of their union (an edge two of them share, by its places,
-// is inside). In zone order, each counter-clockwise about its zone.
+// is inside), less those on a block's boundary. In zone order, each counter-clockwise about its zone.
 std::vector<Cut> union_outline(const Mesh& mesh, const std::vector<int>& zones);
 
 // group_yielded, then the angles, cuts and outline of every region (regions with no cut left are dropped).
