@@ -54,6 +54,7 @@ const std::vector<const Command*>& commands() {
       &cracks_command(),         //
       &sections_command(),       //
       &plot_command(),           // cmd_plot.cpp
+      &chart_command(),          // cmd_chart.cpp
   };
   return table;
 }

@@ -50,6 +50,7 @@ const Command& cracks_command();
 const Command& sections_command();
 const Command& contact_near_command();
 const Command& plot_command();
+const Command& chart_command();
 const Command& excavate_command();
 const Command& fill_command();
 const Command& stage_command();

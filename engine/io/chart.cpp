@@ -1,0 +1,746 @@
+#include "io/chart.hpp"
+
+#include <cairo-pdf.h>
+#include <cairo-svg.h>
+#include <cairo.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <numbers>
+#include <optional>
+#include <string_view>
+
+#include "core/error.hpp"
+#include "io/plot.hpp"
+
+namespace edem {
+namespace {
+
+namespace fs = std::filesystem;
+
+// ---------------------------------------------------------------------------------------
+// Checks, all made before anything is computed or written.
+
+enum class Format { png, svg, pdf };
+
+Format format_of(const std::string& file) {
+  const std::string ext = fs::path(file).extension().string();
+  std::string lower = ext;
+  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (lower == ".png") return Format::png;
+  if (lower == ".svg") return Format::svg;
+  if (lower == ".pdf") return Format::pdf;
+  if (ext.empty()) fail("file '{}' has no extension: use .png, .svg or .pdf", file);
+  fail("unsupported file type '{}': use .png, .svg or .pdf", ext);
+}
+
+// A series as messages name it: "series 'implicit'", or "series 2" when it has no name.
+std::string series_label(const ChartSeries& series, std::size_t i) {
+  return series.name.empty() ? fmt::format("series {}", i + 1)
+                             : fmt::format("series '{}'", series.name);
+}
+
+void check_values(const std::string& series, char axis, const std::vector<double>& values,
+                  bool log) {
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const double v = values[i];
+    if (!std::isfinite(v))
+      fail("{}: {}[{}] must be finite, got {}", series, axis, i + 1,
+           std::isnan(v) ? "nan"
+           : v > 0       ? "inf"
+                         : "-inf");
+    if (log && !(v > 0))
+      fail("{}: {}[{}] = {} cannot be drawn on the logarithmic {} axis: values must be > 0", series,
+           axis, i + 1, v, axis);
+  }
+}
+
+void check_def(const ChartDef& def) {
+  for (const int size : {def.width, def.height})
+    if (size < kPlotMinSize || size > kPlotMaxSize)
+      fail("size {{{}, {}}} is out of range: width and height must be {} to {}", def.width,
+           def.height, kPlotMinSize, kPlotMaxSize);
+  if (def.series.empty()) fail("no series to draw: give at least one, with its x and y values");
+  for (std::size_t i = 0; i < def.series.size(); ++i) {
+    const ChartSeries& s = def.series[i];
+    const std::string label = series_label(s, i);
+    if (s.x.size() != s.y.size())
+      fail("{}: x has {} value{} but y has {}", label, s.x.size(), s.x.size() == 1 ? "" : "s",
+           s.y.size());
+    if (s.x.empty()) fail("{} has no points", label);
+    check_values(label, 'x', s.x, def.log_x);
+    check_values(label, 'y', s.y, def.log_y);
+  }
+}
+
+void check_writable(const std::string& file) {
+  const fs::path parent = fs::path(file).parent_path();
+  std::error_code ec;
+  if (!parent.empty() && !fs::is_directory(parent, ec))
+    fail("cannot write '{}': directory '{}' does not exist", file, parent.string());
+  if (fs::is_directory(file, ec)) fail("cannot write '{}': it is a directory", file);
+}
+
+// Text cairo accepts: bytes that are not valid UTF-8 (names may be any bytes) become '?' and
+// control characters spaces; cairo would otherwise stop drawing altogether.
+std::string printable(std::string_view text) {
+  std::string out;
+  const auto byte = [&](std::size_t i) { return static_cast<unsigned>(text[i]) & 0xffu; };
+  for (std::size_t i = 0; i < text.size();) {
+    const unsigned c = byte(i);
+    const std::size_t n = c < 0x80                ? 1
+                          : c >= 0xc2 && c < 0xe0 ? 2
+                          : c >= 0xe0 && c < 0xf0 ? 3
+                          : c >= 0xf0 && c < 0xf5 ? 4
+                                                  : 0;
+    bool valid = n > 0 && i + n <= text.size();
+    unsigned code = n == 1 ? c : c & (0x7fu >> n);
+    for (std::size_t j = 1; valid && j < n; ++j) {
+      valid = (byte(i + j) & 0xc0) == 0x80;
+      code = code << 6 | (byte(i + j) & 0x3f);
+    }
+    valid = valid && !(n == 3 && code < 0x800) && !(n == 4 && code < 0x10000) &&
+            !(code >= 0xd800 && code < 0xe000) && code <= 0x10ffff;
+    if (!valid)
+      out += '?';
+    else if (n == 1 && (c < 0x20 || c == 0x7f))
+      out += ' ';
+    else
+      out.append(text.substr(i, n));
+    i += valid ? n : 1;
+  }
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------
+// Axes: the data's range and round ticks.
+
+struct Tick {
+  double at;  // axis units: the value, or its log10 on a logarithmic axis
+  std::string label;
+};
+
+struct Ticks {
+  std::vector<Tick> major;    // labelled, with a grid line
+  std::vector<double> minor;  // axis units
+};
+
+// One axis: its range in axis units, where that range lies on the canvas, and its ticks.
+struct Axis {
+  bool log = false;
+  double lo = 0.0, hi = 1.0;    // axis units, lo < hi
+  double from = 0.0, to = 1.0;  // device coordinates of lo and hi
+  Ticks ticks;
+  double unit(double value) const { return log ? std::log10(value) : value; }
+  double device(double at) const { return from + (at - lo) / (hi - lo) * (to - from); }
+};
+
+// The extent of every series' x (or y) in axis units, padded by 5% on each side; values all
+// equal (to 1e-9) get a span of their own: a decade on a logarithmic axis, +-10% (or +-1 about
+// 0) on a linear one.
+Axis axis_of(const std::vector<ChartSeries>& series, bool x, bool log) {
+  Axis axis;
+  axis.log = log;
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (const ChartSeries& s : series)
+    for (const double v : x ? s.x : s.y) {
+      lo = std::min(lo, axis.unit(v));
+      hi = std::max(hi, axis.unit(v));
+    }
+  double pad = 0.05 * hi - 0.05 * lo;
+  if (!(hi - lo > 1e-9 * std::max(std::abs(lo), std::abs(hi)))) {
+    lo = hi = 0.5 * lo + 0.5 * hi;
+    pad = log ? 0.5 : lo == 0 ? 1.0 : 0.1 * std::abs(lo);
+  }
+  axis.lo = lo - pad;
+  axis.hi = hi + pad;
+  if (!std::isfinite(axis.hi - axis.lo) || !(axis.hi > axis.lo))
+    fail("the {} values span a range too wide or too narrow to draw", x ? 'x' : 'y');
+  return axis;
+}
+
+// Tidies the exponent of printf's "%e": "2.50e+06" -> "2.50e6", "1e-05" -> "1e-5".
+std::string tidy_exponent(const std::string& text) {
+  const std::size_t e = text.find('e');
+  if (e == std::string::npos) return text;
+  return fmt::format("{}e{}", text.substr(0, e), std::atoi(text.c_str() + e + 1));
+}
+
+// A tick on a grid of step m*10^k: fixed decimals, or "2.5e6" for very large or small steps.
+std::string linear_label(double v, int k, bool scientific) {
+  if (!scientific) return fmt::format("{:.{}f}", v, std::max(0, -k));
+  if (v == 0) return "0";
+  const int e = static_cast<int>(std::floor(std::log10(std::abs(v))));
+  return tidy_exponent(fmt::format("{:.{}e}", v, std::max(0, e - k)));
+}
+
+// m*10^k as "0.002" or "2e-5": plain only when the whole axis reads well that way.
+std::string power_label(int m, int k, bool plain) {
+  if (!plain) return fmt::format("{}e{}", m, k);
+  return fmt::format("{:.{}f}", m * std::pow(10.0, k), std::max(0, -k));
+}
+
+// Ticks at i*step in [lo, hi] (values, not logs), step = m*10^k; none if more than `most`.
+Ticks linear_ticks(double lo, double hi, int m, int k, int most, bool log) {
+  const double step = m * std::pow(10.0, k);
+  const double first = std::ceil(lo / step), last = std::floor(hi / step);
+  if (!(last - first < most)) return {};
+  const bool scientific = std::max(std::abs(lo), std::abs(hi)) >= 1e6 || k < -4;
+  Ticks ticks;
+  for (int j = 0; j <= static_cast<int>(last - first); ++j) {
+    const double i = first + j, v = i == 0 ? 0.0 : i * step;
+    ticks.major.push_back({log ? std::log10(v) : v, linear_label(v, k, scientific)});
+  }
+  return ticks;
+}
+
+// Ticks at m*10^k on a logarithmic axis over [lo, hi] (logs): labelled where m is one of
+// `labelled` and k a multiple of `every`; with `minor`, minor ticks at the other m in 1..9
+// (at the other decades only, when every > 1).
+Ticks power_ticks(double lo, double hi, const std::vector<int>& labelled, int every, bool minor) {
+  std::vector<std::array<int, 2>> major;  // m, k
+  Ticks ticks;
+  for (int k = static_cast<int>(std::floor(lo)); k <= static_cast<int>(std::ceil(hi)); ++k)
+    for (int m = 1; m <= (every > 1 ? 1 : 9); ++m) {
+      const double at = k + std::log10(static_cast<double>(m));
+      if (at < lo || at > hi) continue;
+      if (std::find(labelled.begin(), labelled.end(), m) != labelled.end() && k % every == 0)
+        major.push_back({m, k});
+      else if (minor)
+        ticks.minor.push_back(at);
+    }
+  // Plain decimals ("0.002") where the whole axis reads well that way, else "2e-5".
+  const bool plain = std::all_of(major.begin(), major.end(),
+                                 [](const auto& t) { return t[1] >= -4 && t[1] <= 5; });
+  for (const auto& [m, k] : major)
+    ticks.major.push_back({k + std::log10(static_cast<double>(m)), power_label(m, k, plain)});
+  return ticks;
+}
+
+// The along-axis size of a label [device units].
+using Measure = std::function<double(const std::string&)>;
+
+// Whether neighbouring labels keep a gap of at least `gap` between them.
+bool labels_fit(const Ticks& ticks, const Axis& axis, const Measure& size, double gap) {
+  for (std::size_t i = 1; i < ticks.major.size(); ++i) {
+    const double room =
+        std::abs(axis.device(ticks.major[i].at) - axis.device(ticks.major[i - 1].at));
+    if (room < 0.5 * (size(ticks.major[i].label) + size(ticks.major[i - 1].label)) + gap)
+      return false;
+  }
+  return true;
+}
+
+// The ticks of an axis, from candidates in order of preference: the first with enough labels
+// that do not overlap; failing all, the densest that fits (maybe none, on a tiny canvas).
+Ticks choose_ticks(const Axis& axis, const Measure& size, double gap, double minor_room) {
+  struct Candidate {
+    Ticks ticks;
+    std::size_t fewest;  // labels it needs to be taken at once
+  };
+  std::vector<Candidate> candidates;
+  const auto linear = [&](double lo, double hi, bool log) {
+    if (!std::isfinite(hi - lo) || !(hi > lo)) return;
+    const int k0 = static_cast<int>(std::floor(std::log10(hi - lo))) - 2;
+    for (int k = k0; k <= k0 + 3; ++k)
+      for (const int m : {1, 2, 5}) candidates.push_back({linear_ticks(lo, hi, m, k, 8, log), 4});
+  };
+  if (axis.log) {
+    // Minor ticks only where they stand apart: within a decade, or at unlabelled decades.
+    const double decade = std::abs(axis.device(axis.lo + 1) - axis.device(axis.lo));
+    const bool minor = decade >= minor_room, decade_minor = decade >= 0.1 * minor_room;
+    candidates.push_back({power_ticks(axis.lo, axis.hi, {1}, 1, minor), 3});
+    candidates.push_back({power_ticks(axis.lo, axis.hi, {1, 2, 5}, 1, true), 3});
+    for (const int n : {2, 3, 5, 10, 20, 50, 100})
+      candidates.push_back({power_ticks(axis.lo, axis.hi, {1}, n, decade_minor), 2});
+    candidates.push_back({power_ticks(axis.lo, axis.hi, {1}, 1, minor), 2});
+    candidates.push_back({power_ticks(axis.lo, axis.hi, {1, 2, 3, 4, 5, 6, 7, 8, 9}, 1, false), 3});
+    if (axis.lo > -300 && axis.hi < 300)
+      linear(std::pow(10.0, axis.lo), std::pow(10.0, axis.hi), true);
+  } else {
+    linear(axis.lo, axis.hi, false);
+  }
+  const Ticks* fallback = nullptr;
+  for (const Candidate& c : candidates) {
+    const std::size_t n = c.ticks.major.size();
+    if (n == 0 || n > 10 || !labels_fit(c.ticks, axis, size, gap)) continue;
+    if (n >= c.fewest) return c.ticks;
+    if (!fallback || n > fallback->major.size()) fallback = &c.ticks;
+  }
+  return fallback ? *fallback : Ticks{};
+}
+
+// ---------------------------------------------------------------------------------------
+// Styles. Sizes are in units of the canvas scale (about a pixel at 800 px).
+
+struct Rgb {
+  double r, g, b;
+};
+
+constexpr Rgb rgb(unsigned hex) {
+  return {((hex >> 16) & 0xff) / 255.0, ((hex >> 8) & 0xff) / 255.0, (hex & 0xff) / 255.0};
+}
+
+// Series colours, told apart in print and by most colour-blind readers together with the
+// marker shapes.
+constexpr std::array kSeriesColours{rgb(0x1f77b4), rgb(0xff7f0e), rgb(0x2ca02c), rgb(0xd62728),
+                                    rgb(0x9467bd), rgb(0x8c564b), rgb(0xe377c2), rgb(0x17becf)};
+enum class Marker { circle, square, triangle, diamond, triangle_down };
+constexpr std::array kMarkers{Marker::circle, Marker::square, Marker::triangle, Marker::diamond,
+                              Marker::triangle_down};
+constexpr Rgb kInk = rgb(0x202020);
+constexpr Rgb kGrid = rgb(0xe4e4e4);
+constexpr Rgb kFrame = rgb(0x606060);
+
+constexpr double kMargin = 14.0, kTitleHeight = 30.0, kLabelHeight = 26.0;
+constexpr double kTitleFont = 16.0, kLabelFont = 12.5, kTickFont = 11.0, kLegendFont = 11.0;
+constexpr double kTickLength = 5.0, kMinorLength = 3.0, kTickGap = 4.0;
+constexpr double kMinorRoom = 40.0;  // the shortest decade with minor ticks
+constexpr double kLineWidth = 1.8, kMarkerRadius = 5.0;
+constexpr double kLegendRow = 18.0, kLegendSwatch = 30.0, kLegendPad = 8.0, kLegendInset = 10.0;
+
+Rgb colour_of(std::size_t series) {
+  return kSeriesColours[series % kSeriesColours.size()];
+}
+
+Marker marker_of(std::size_t series) {
+  return kMarkers[series % kMarkers.size()];
+}
+
+// ---------------------------------------------------------------------------------------
+// Drawing.
+
+struct SurfaceDeleter {
+  void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
+};
+struct ContextDeleter {
+  void operator()(cairo_t* c) const { cairo_destroy(c); }
+};
+using SurfacePtr = std::unique_ptr<cairo_surface_t, SurfaceDeleter>;
+using ContextPtr = std::unique_ptr<cairo_t, ContextDeleter>;
+
+struct Rect {
+  double x, y, w, h;  // device units, y down
+  bool contains(double px, double py) const {
+    return px >= x && px <= x + w && py >= y && py <= y + h;
+  }
+};
+
+enum class Align { left, centre, right };
+
+class Pen {
+ public:
+  Pen(cairo_t* cr, double scale) : cr_(cr), s_(scale) {}
+  double s() const { return s_; }
+  cairo_t* cr() const { return cr_; }
+
+  void colour(Rgb c) { cairo_set_source_rgb(cr_, c.r, c.g, c.b); }
+
+  void line(Rgb c, double width) {
+    colour(c);
+    cairo_set_line_width(cr_, width * s_);
+    cairo_set_line_cap(cr_, CAIRO_LINE_CAP_ROUND);
+    cairo_set_line_join(cr_, CAIRO_LINE_JOIN_ROUND);
+  }
+
+  void segment(double x0, double y0, double x1, double y1) {
+    cairo_move_to(cr_, x0, y0);
+    cairo_line_to(cr_, x1, y1);
+  }
+
+  // `text` must be printable(); sizes are in canvas-scale units.
+  double text_width(const std::string& text, double size, bool bold = false) {
+    font(size, bold);
+    cairo_text_extents_t ext;
+    cairo_text_extents(cr_, text.c_str(), &ext);
+    return ext.x_advance;
+  }
+
+  // Text whose vertical centre is at (x, y), turned by `angle` [rad] about that point; real
+  // text in SVG and PDF (selectable, searchable).
+  void text(const std::string& text, double x, double y, double size, Align align, Rgb c,
+            bool bold = false, double angle = 0.0) {
+    const double width = text_width(text, size, bold);
+    cairo_font_extents_t fe;
+    cairo_font_extents(cr_, &fe);
+    cairo_save(cr_);
+    cairo_translate(cr_, x, y);
+    cairo_rotate(cr_, angle);
+    const double left = align == Align::centre ? -0.5 * width : align == Align::right ? -width : 0;
+    cairo_new_path(cr_);
+    cairo_move_to(cr_, left, 0.5 * (fe.ascent - fe.descent));
+    colour(c);
+    cairo_show_text(cr_, text.c_str());
+    cairo_new_path(cr_);
+    cairo_restore(cr_);
+  }
+
+  void marker(Marker shape, double x, double y, Rgb fill) {
+    const double r = kMarkerRadius * s_;
+    cairo_new_path(cr_);
+    switch (shape) {
+      case Marker::circle:
+        cairo_arc(cr_, x, y, r, 0, 2 * std::numbers::pi);
+        break;
+      case Marker::square:
+        cairo_rectangle(cr_, x - 0.85 * r, y - 0.85 * r, 1.7 * r, 1.7 * r);
+        break;
+      case Marker::diamond:
+        polygon(x, y, {{0, -1.25 * r}, {1.0 * r, 0}, {0, 1.25 * r}, {-1.0 * r, 0}});
+        break;
+      case Marker::triangle:
+        polygon(x, y, {{0, -1.2 * r}, {1.1 * r, 0.8 * r}, {-1.1 * r, 0.8 * r}});
+        break;
+      case Marker::triangle_down:
+        polygon(x, y, {{0, 1.2 * r}, {1.1 * r, -0.8 * r}, {-1.1 * r, -0.8 * r}});
+        break;
+    }
+    colour(fill);
+    cairo_fill_preserve(cr_);
+    line(rgb(0xffffff), 0.8);
+    cairo_stroke(cr_);
+  }
+
+ private:
+  void font(double size, bool bold) {
+    cairo_select_font_face(cr_, "sans-serif", CAIRO_FONT_SLANT_NORMAL,
+                           bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
+    cairo_set_font_size(cr_, size * s_);
+  }
+
+  void polygon(double x, double y, std::initializer_list<std::array<double, 2>> corners) {
+    for (const auto& [dx, dy] : corners) cairo_line_to(cr_, x + dx, y + dy);
+    cairo_close_path(cr_);
+  }
+
+  cairo_t* cr_;
+  double s_;
+};
+
+// The chart's text, made printable once.
+struct Texts {
+  std::string title, x_label, y_label;
+  std::vector<std::string> names;  // per series; "" for none
+};
+
+Texts texts_of(const ChartDef& def) {
+  Texts t{printable(def.title), printable(def.x_label), printable(def.y_label), {}};
+  for (const ChartSeries& s : def.series) t.names.push_back(printable(s.name));
+  return t;
+}
+
+// Where everything goes: the frame of the data, and both axes with their ticks. The y ticks
+// are chosen first, since the frame's left edge depends on how wide their labels are.
+struct Layout {
+  Rect frame{};
+  Axis x, y;
+  double title_y = 0.0;
+};
+
+Layout layout(Pen& p, const ChartDef& def, const Texts& texts, double width, double height) {
+  const double s = p.s(), margin = kMargin * s;
+  Layout lay;
+  lay.x = axis_of(def.series, true, def.log_x);
+  lay.y = axis_of(def.series, false, def.log_y);
+  const double title_h = texts.title.empty() ? 0.0 : kTitleHeight * s;
+  const double tick_room = (kTickLength + kTickGap + 1.3 * kTickFont) * s;
+  const double top = margin + title_h + 4.0 * s;
+  const double bottom =
+      height - margin - (texts.x_label.empty() ? 0.0 : kLabelHeight * s) - tick_room;
+  lay.title_y = margin + 0.5 * title_h;
+
+  lay.y.from = bottom;
+  lay.y.to = top;
+  const double font_h = 1.2 * kTickFont * s;
+  lay.y.ticks = choose_ticks(
+      lay.y, [&](const std::string&) { return font_h; }, 4.0 * s, kMinorRoom * s);
+  double label_w = 0.0;
+  for (const Tick& t : lay.y.ticks.major)
+    label_w = std::max(label_w, p.text_width(t.label, kTickFont));
+
+  const double left = margin + (texts.y_label.empty() ? 0.0 : kLabelHeight * s) + label_w +
+                      (kTickLength + kTickGap) * s;
+  const double right = width - margin - 18.0 * s;
+  lay.x.from = left;
+  lay.x.to = right;
+  lay.x.ticks = choose_ticks(
+      lay.x, [&](const std::string& t) { return p.text_width(t, kTickFont); }, 10.0 * s,
+      kMinorRoom * s);
+  lay.frame = {left, top, std::max(right - left, 0.0), std::max(bottom - top, 0.0)};
+  return lay;
+}
+
+void draw_grid(Pen& p, const Layout& lay) {
+  cairo_t* cr = p.cr();
+  const Rect& f = lay.frame;
+  cairo_new_path(cr);
+  for (const Tick& t : lay.x.ticks.major)
+    p.segment(lay.x.device(t.at), f.y, lay.x.device(t.at), f.y + f.h);
+  for (const Tick& t : lay.y.ticks.major)
+    p.segment(f.x, lay.y.device(t.at), f.x + f.w, lay.y.device(t.at));
+  p.line(kGrid, 0.8);
+  cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+  cairo_stroke(cr);
+}
+
+// Ticks outward from the bottom and left edges of the frame, then their labels.
+void draw_axes(Pen& p, const Layout& lay) {
+  cairo_t* cr = p.cr();
+  const double s = p.s();
+  const Rect& f = lay.frame;
+  cairo_new_path(cr);
+  cairo_rectangle(cr, f.x, f.y, f.w, f.h);
+  p.line(kFrame, 1.0);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_MITER);
+  cairo_stroke(cr);
+
+  const double bottom = f.y + f.h;
+  for (const auto& [length, minor] :
+       {std::pair{kTickLength, false}, std::pair{kMinorLength, true}}) {
+    cairo_new_path(cr);
+    const auto tick_x = [&](double at) {
+      p.segment(lay.x.device(at), bottom, lay.x.device(at), bottom + length * s);
+    };
+    const auto tick_y = [&](double at) {
+      p.segment(f.x, lay.y.device(at), f.x - length * s, lay.y.device(at));
+    };
+    if (minor) {
+      for (const double at : lay.x.ticks.minor) tick_x(at);
+      for (const double at : lay.y.ticks.minor) tick_y(at);
+    } else {
+      for (const Tick& t : lay.x.ticks.major) tick_x(t.at);
+      for (const Tick& t : lay.y.ticks.major) tick_y(t.at);
+    }
+    p.line(kFrame, minor ? 0.7 : 1.0);
+    cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+    cairo_stroke(cr);
+  }
+
+  const double label_y = bottom + (kTickLength + kTickGap + 0.6 * kTickFont) * s;
+  for (const Tick& t : lay.x.ticks.major)
+    p.text(t.label, lay.x.device(t.at), label_y, kTickFont, Align::centre, kInk);
+  const double label_x = f.x - (kTickLength + kTickGap) * s;
+  for (const Tick& t : lay.y.ticks.major)
+    p.text(t.label, label_x, lay.y.device(t.at), kTickFont, Align::right, kInk);
+}
+
+void draw_labels(Pen& p, const Layout& lay, const Texts& texts, double width, double height) {
+  const double s = p.s();
+  const Rect& f = lay.frame;
+  if (!texts.x_label.empty())
+    p.text(texts.x_label, f.x + 0.5 * f.w, height - kMargin * s - 0.6 * kLabelHeight * s,
+           kLabelFont, Align::centre, kInk);
+  if (!texts.y_label.empty())
+    p.text(texts.y_label, kMargin * s + 0.4 * kLabelHeight * s, f.y + 0.5 * f.h, kLabelFont,
+           Align::centre, kInk, false, -0.5 * std::numbers::pi);
+  if (texts.title.empty()) return;
+  // Centred over the frame, shrunk to fit the canvas; left out when too small to read.
+  const double room = width - 2 * kMargin * s;
+  const double tw = p.text_width(texts.title, kTitleFont, true);
+  const double size = tw > room ? kTitleFont * room / tw : kTitleFont;
+  const double centre = std::clamp(f.x + 0.5 * f.w, kMargin * s + 0.5 * tw * size / kTitleFont,
+                                   width - kMargin * s - 0.5 * tw * size / kTitleFont);
+  if (size * s >= 6.0) p.text(texts.title, centre, lay.title_y, size, Align::centre, kInk, true);
+}
+
+// Each series' points on the canvas.
+std::vector<std::vector<std::array<double, 2>>> points_of(const ChartDef& def, const Layout& lay) {
+  std::vector<std::vector<std::array<double, 2>>> out;
+  for (const ChartSeries& s : def.series) {
+    auto& points = out.emplace_back();
+    for (std::size_t i = 0; i < s.x.size(); ++i)
+      points.push_back({lay.x.device(lay.x.unit(s.x[i])), lay.y.device(lay.y.unit(s.y[i]))});
+  }
+  return out;
+}
+
+void draw_series(Pen& p, const Layout& lay,
+                 const std::vector<std::vector<std::array<double, 2>>>& points) {
+  cairo_t* cr = p.cr();
+  cairo_save(cr);
+  const double pad = 2.0 * kMarkerRadius * p.s();
+  cairo_rectangle(cr, lay.frame.x - pad, lay.frame.y - pad, lay.frame.w + 2 * pad,
+                  lay.frame.h + 2 * pad);
+  cairo_clip(cr);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (points[i].size() < 2) continue;
+    cairo_new_path(cr);
+    for (const auto& [x, y] : points[i]) cairo_line_to(cr, x, y);
+    p.line(colour_of(i), kLineWidth);
+    cairo_stroke(cr);
+  }
+  // Markers above every line, so that no line hides a point.
+  for (std::size_t i = 0; i < points.size(); ++i)
+    for (const auto& [x, y] : points[i]) p.marker(marker_of(i), x, y, colour_of(i));
+  cairo_restore(cr);
+}
+
+// The legend's box in the corner of the frame that covers the fewest points and line samples
+// (top right first on a tie); nothing when no series has a name.
+std::optional<Rect> legend_box(Pen& p, const Layout& lay, const Texts& texts,
+                               const std::vector<std::vector<std::array<double, 2>>>& points) {
+  const double s = p.s();
+  double text_w = 0.0;
+  int rows = 0;
+  for (const std::string& name : texts.names) {
+    if (name.empty()) continue;
+    text_w = std::max(text_w, p.text_width(name, kLegendFont));
+    ++rows;
+  }
+  if (rows == 0) return std::nullopt;
+  const double w = (2 * kLegendPad + kLegendSwatch + 6.0) * s + text_w;
+  const double h = (2 * kLegendPad + kLegendRow * rows) * s;
+  const Rect& f = lay.frame;
+  const double inset = kLegendInset * s;
+  const double left = f.x + inset, right = f.x + f.w - inset - w;
+  const double top = f.y + inset, bottom = f.y + f.h - inset - h;
+  const std::array<Rect, 4> corners{Rect{right, top, w, h}, Rect{left, top, w, h},
+                                    Rect{right, bottom, w, h}, Rect{left, bottom, w, h}};
+  // Points count most; each line is sampled along its segments.
+  const double grow = kMarkerRadius * s;
+  const auto covered = [&](const Rect& r) {
+    const Rect near{r.x - grow, r.y - grow, r.w + 2 * grow, r.h + 2 * grow};
+    int score = 0;
+    for (const auto& series : points)
+      for (std::size_t i = 0; i < series.size(); ++i) {
+        if (near.contains(series[i][0], series[i][1])) score += 20;
+        if (i == 0) continue;
+        for (int k = 1; k < 20; ++k) {
+          const double t = k / 20.0;
+          score += near.contains(series[i - 1][0] + t * (series[i][0] - series[i - 1][0]),
+                                 series[i - 1][1] + t * (series[i][1] - series[i - 1][1]));
+        }
+      }
+    return score;
+  };
+  const Rect* best = &corners[0];
+  int best_score = covered(*best);
+  for (const Rect& r : corners) {
+    const int score = covered(r);
+    if (score < best_score) {
+      best = &r;
+      best_score = score;
+    }
+  }
+  return *best;
+}
+
+void draw_legend(Pen& p, const Rect& r, const Texts& texts) {
+  cairo_t* cr = p.cr();
+  const double s = p.s();
+  cairo_new_path(cr);
+  cairo_rectangle(cr, r.x, r.y, r.w, r.h);
+  cairo_set_source_rgba(cr, 1, 1, 1, 0.9);
+  cairo_fill_preserve(cr);
+  p.line(rgb(0xb0b0b0), 0.8);
+  cairo_stroke(cr);
+  int row = 0;
+  for (std::size_t i = 0; i < texts.names.size(); ++i) {
+    if (texts.names[i].empty()) continue;
+    const double y = r.y + (kLegendPad + kLegendRow * (row++ + 0.5)) * s;
+    const double x = r.x + kLegendPad * s;
+    cairo_new_path(cr);
+    p.segment(x, y, x + kLegendSwatch * s, y);
+    p.line(colour_of(i), kLineWidth);
+    cairo_stroke(cr);
+    p.marker(marker_of(i), x + 0.5 * kLegendSwatch * s, y, colour_of(i));
+    p.text(texts.names[i], x + (kLegendSwatch + 6.0) * s, y, kLegendFont, Align::left, kInk);
+  }
+}
+
+void render(cairo_t* cr, const ChartDef& def, const Texts& texts, double width, double height) {
+  const double s = std::clamp(std::min(width, height) / 800.0, 0.5, 4.0);
+  Pen p(cr, s);
+  const Layout lay = layout(p, def, texts, width, height);
+  const auto points = points_of(def, lay);
+
+  cairo_set_source_rgb(cr, 1, 1, 1);
+  cairo_paint(cr);
+  draw_grid(p, lay);
+  draw_series(p, lay, points);
+  draw_axes(p, lay);
+  draw_labels(p, lay, texts, width, height);
+  if (const auto box = legend_box(p, lay, texts, points)) draw_legend(p, *box, texts);
+}
+
+// ---------------------------------------------------------------------------------------
+// Writing: FILE.tmp, renamed over FILE only once complete.
+
+class TempFile {
+ public:
+  explicit TempFile(fs::path path) : path_(std::move(path)) {}
+  TempFile(const TempFile&) = delete;
+  TempFile& operator=(const TempFile&) = delete;
+  ~TempFile() {
+    std::error_code ec;
+    if (!kept_) fs::remove(path_, ec);
+  }
+  const fs::path& path() const { return path_; }
+  void keep() { kept_ = true; }
+
+ private:
+  fs::path path_;
+  bool kept_ = false;
+};
+
+void check_cairo(cairo_status_t status, const std::string& file) {
+  if (status != CAIRO_STATUS_SUCCESS)
+    fail("cannot write '{}': {}", file, cairo_status_to_string(status));
+}
+
+SurfacePtr make_surface(Format format, const fs::path& tmp, int width, int height) {
+  switch (format) {
+    case Format::svg:
+      return SurfacePtr(cairo_svg_surface_create(tmp.c_str(), width, height));
+    case Format::pdf:
+      return SurfacePtr(cairo_pdf_surface_create(tmp.c_str(), width, height));
+    case Format::png:
+      break;
+  }
+  return SurfacePtr(cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height));
+}
+
+}  // namespace
+
+void chart(const ChartDef& def) {
+  const Format format = format_of(def.file);
+  check_def(def);
+  check_writable(def.file);
+  const Texts texts = texts_of(def);
+
+  TempFile tmp(fs::path(def.file + ".tmp"));
+  SurfacePtr surface = make_surface(format, tmp.path(), def.width, def.height);
+  check_cairo(cairo_surface_status(surface.get()), def.file);
+  if (format == Format::pdf) {
+    cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_TITLE, texts.title.c_str());
+    cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATOR, "EDEM");
+  }
+  {
+    ContextPtr cr(cairo_create(surface.get()));
+    render(cr.get(), def, texts, def.width, def.height);
+    const cairo_status_t status = cairo_status(cr.get());
+    if (status != CAIRO_STATUS_SUCCESS)
+      fail("cannot draw '{}': {}", def.file, cairo_status_to_string(status));
+  }
+  if (format == Format::png) {
+    check_cairo(cairo_surface_write_to_png(surface.get(), tmp.path().c_str()), def.file);
+  } else {
+    cairo_surface_finish(surface.get());
+    check_cairo(cairo_surface_status(surface.get()), def.file);
+  }
+  surface.reset();
+
+  std::error_code ec;
+  fs::rename(tmp.path(), def.file, ec);
+  if (ec) fail("cannot write '{}': {}", def.file, ec.message());
+  tmp.keep();
+}
+
+}  // namespace edem
