@@ -1,7 +1,9 @@
 -- The implicit prepass through the seed cavern's 16 stages (tests/bench/RESULTS.md, issue 7):
 -- the seed region (Set P, Case 3 joints tied shut: joints = false), Mohr-Coulomb rock, the
 -- warhead of edem.cavern; seconds and Newton iterations per stage. JOINTS=1 in the environment:
--- joints as interface elements instead (a wedge that comes loose stops it: no static state).
+-- joints as interface elements instead, with Set P's joints (no static state: the run stops at
+-- stage 3 or 4, tests/verification/prepass_seed_cavern.lua tells why); JOINTS=bonded: as interface
+-- elements, bonded and stiff (kn = ks = 5e11 Pa/m), the model of that verification script.
 -- Run: cd stdlib && ../build/interp/edem ../tests/bench/prepass_seed_cavern.lua EDGE STEPS SOLVER [PICTURE.png]
 --   EDGE: zone edge at the cavern [m] (1.5: ~7k zones; 0.5: ~50k), STEPS: load steps per stage
 local seed = require "edem.seed"
@@ -14,7 +16,11 @@ material{ "rock", model = "mohr", density = P.density, young = P.young, poisson 
           friction = P.friction, tension = P.tension }
 local names = {}
 for _, s in ipairs(c.stages) do names[#names + 1] = s.name end
-local joints = os.getenv("JOINTS") == "1"
+if os.getenv("JOINTS") == "bonded" then
+  joint_material{ "bonded", kn = 5e11, ks = 5e11, friction = seed.P.joint.friction, cohesion = 1e12, tension = 1e12 }
+  jassign{ material = "bonded" }
+end
+local joints = os.getenv("JOINTS") == "1" or os.getenv("JOINTS") == "bonded"
 local pre = prepass{ stages = names, joints = joints, steps = steps, solver = solver }
 local yielded, iterations = 0, 0
 for _, z in ipairs(pre.zones) do if z.state ~= "none" then yielded = yielded + 1 end end
