@@ -133,17 +133,17 @@ std::vector<CrackRegion> group_yielded(const Mesh& mesh, const std::vector<Yield
   for (size_t first : order) {
     if (taken[first]) continue;
     const YieldedZone& seed = zones[first];
-    std::vector<size_t> members{first}, todo{first};
+    std::vector<size_t> members{first}, frontier{first};
     taken[first] = 1;
-    while (!todo.empty()) {
-      const size_t k = todo.back();
-      todo.pop_back();
+    while (!frontier.empty()) {
+      const size_t k = frontier.back();
+      frontier.pop_back();
       for (size_t n : neighbours[k]) {
         if (taken[n] || zones[n].tension != seed.tension || axis_difference(zones[n].angle, seed.angle) > similar)
           continue;
         taken[n] = 1;
         members.push_back(n);
-        todo.push_back(n);
+        frontier.push_back(n);
       }
     }
     CrackRegion region;

@@ -1,45 +1,26 @@
 #include "io/chart.hpp"
 
-#include <cairo-pdf.h>
-#include <cairo-svg.h>
 #include <cairo.h>
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <cmath>
 #include <cstdlib>
-#include <filesystem>
 #include <functional>
 #include <limits>
-#include <memory>
 #include <numbers>
 #include <optional>
 #include <string_view>
 
 #include "core/error.hpp"
+#include "io/cairo_file.hpp"
 #include "io/plot.hpp"
 
 namespace edem {
 namespace {
 
-namespace fs = std::filesystem;
-
 // ---------------------------------------------------------------------------------------
 // Checks, all made before anything is computed or written.
-
-enum class Format { png, svg, pdf };
-
-Format format_of(const std::string& file) {
-  const std::string ext = fs::path(file).extension().string();
-  std::string lower = ext;
-  for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (lower == ".png") return Format::png;
-  if (lower == ".svg") return Format::svg;
-  if (lower == ".pdf") return Format::pdf;
-  if (ext.empty()) fail("file '{}' has no extension: use .png, .svg or .pdf", file);
-  fail("unsupported file type '{}': use .png, .svg or .pdf", ext);
-}
 
 // A series as messages name it: "series 'implicit'", or "series 2" when it has no name.
 std::string series_label(const ChartSeries& series, std::size_t i) {
@@ -78,45 +59,6 @@ void check_def(const ChartDef& def) {
     check_values(label, 'x', s.x, def.log_x);
     check_values(label, 'y', s.y, def.log_y);
   }
-}
-
-void check_writable(const std::string& file) {
-  const fs::path parent = fs::path(file).parent_path();
-  std::error_code ec;
-  if (!parent.empty() && !fs::is_directory(parent, ec))
-    fail("cannot write '{}': directory '{}' does not exist", file, parent.string());
-  if (fs::is_directory(file, ec)) fail("cannot write '{}': it is a directory", file);
-}
-
-// Text cairo accepts: bytes that are not valid UTF-8 (names may be any bytes) become '?' and
-// control characters spaces; cairo would otherwise stop drawing altogether.
-std::string printable(std::string_view text) {
-  std::string out;
-  const auto byte = [&](std::size_t i) { return static_cast<unsigned>(text[i]) & 0xffu; };
-  for (std::size_t i = 0; i < text.size();) {
-    const unsigned c = byte(i);
-    const std::size_t n = c < 0x80                ? 1
-                          : c >= 0xc2 && c < 0xe0 ? 2
-                          : c >= 0xe0 && c < 0xf0 ? 3
-                          : c >= 0xf0 && c < 0xf5 ? 4
-                                                  : 0;
-    bool valid = n > 0 && i + n <= text.size();
-    unsigned code = n == 1 ? c : c & (0x7fu >> n);
-    for (std::size_t j = 1; valid && j < n; ++j) {
-      valid = (byte(i + j) & 0xc0) == 0x80;
-      code = code << 6 | (byte(i + j) & 0x3f);
-    }
-    valid = valid && !(n == 3 && code < 0x800) && !(n == 4 && code < 0x10000) &&
-            !(code >= 0xd800 && code < 0xe000) && code <= 0x10ffff;
-    if (!valid)
-      out += '?';
-    else if (n == 1 && (c < 0x20 || c == 0x7f))
-      out += ' ';
-    else
-      out.append(text.substr(i, n));
-    i += valid ? n : 1;
-  }
-  return out;
 }
 
 // ---------------------------------------------------------------------------------------
@@ -316,15 +258,6 @@ Marker marker_of(std::size_t series) {
 
 // ---------------------------------------------------------------------------------------
 // Drawing.
-
-struct SurfaceDeleter {
-  void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
-};
-struct ContextDeleter {
-  void operator()(cairo_t* c) const { cairo_destroy(c); }
-};
-using SurfacePtr = std::unique_ptr<cairo_surface_t, SurfaceDeleter>;
-using ContextPtr = std::unique_ptr<cairo_t, ContextDeleter>;
 
 struct Rect {
   double x, y, w, h;  // device units, y down
@@ -670,77 +603,15 @@ void render(cairo_t* cr, const ChartDef& def, const Texts& texts, double width, 
   if (const auto box = legend_box(p, lay, texts, points)) draw_legend(p, *box, texts);
 }
 
-// ---------------------------------------------------------------------------------------
-// Writing: FILE.tmp, renamed over FILE only once complete.
-
-class TempFile {
- public:
-  explicit TempFile(fs::path path) : path_(std::move(path)) {}
-  TempFile(const TempFile&) = delete;
-  TempFile& operator=(const TempFile&) = delete;
-  ~TempFile() {
-    std::error_code ec;
-    if (!kept_) fs::remove(path_, ec);
-  }
-  const fs::path& path() const { return path_; }
-  void keep() { kept_ = true; }
-
- private:
-  fs::path path_;
-  bool kept_ = false;
-};
-
-void check_cairo(cairo_status_t status, const std::string& file) {
-  if (status != CAIRO_STATUS_SUCCESS)
-    fail("cannot write '{}': {}", file, cairo_status_to_string(status));
-}
-
-SurfacePtr make_surface(Format format, const fs::path& tmp, int width, int height) {
-  switch (format) {
-    case Format::svg:
-      return SurfacePtr(cairo_svg_surface_create(tmp.c_str(), width, height));
-    case Format::pdf:
-      return SurfacePtr(cairo_pdf_surface_create(tmp.c_str(), width, height));
-    case Format::png:
-      break;
-  }
-  return SurfacePtr(cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height));
-}
-
 }  // namespace
 
 void chart(const ChartDef& def) {
-  const Format format = format_of(def.file);
+  picture_format(def.file);  // checked before anything is computed
   check_def(def);
   check_writable(def.file);
   const Texts texts = texts_of(def);
-
-  TempFile tmp(fs::path(def.file + ".tmp"));
-  SurfacePtr surface = make_surface(format, tmp.path(), def.width, def.height);
-  check_cairo(cairo_surface_status(surface.get()), def.file);
-  if (format == Format::pdf) {
-    cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_TITLE, texts.title.c_str());
-    cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATOR, "EDEM");
-  }
-  {
-    ContextPtr cr(cairo_create(surface.get()));
-    render(cr.get(), def, texts, def.width, def.height);
-    const cairo_status_t status = cairo_status(cr.get());
-    if (status != CAIRO_STATUS_SUCCESS)
-      fail("cannot draw '{}': {}", def.file, cairo_status_to_string(status));
-  }
-  if (format == Format::png) {
-    check_cairo(cairo_surface_write_to_png(surface.get(), tmp.path().c_str()), def.file);
-  } else {
-    cairo_surface_finish(surface.get());
-    check_cairo(cairo_surface_status(surface.get()), def.file);
-  }
-  surface.reset();
-
-  std::error_code ec;
-  fs::rename(tmp.path(), def.file, ec);
-  if (ec) fail("cannot write '{}': {}", def.file, ec.message());
-  tmp.keep();
+  write_picture(def.file, def.width, def.height, texts.title,
+                [&](cairo_t* cr) { render(cr, def, texts, def.width, def.height); });
 }
 
 }  // namespace edem

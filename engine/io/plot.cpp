@@ -1,24 +1,20 @@
 #include "io/plot.hpp"
 
-#include <cairo-pdf.h>
-#include <cairo-svg.h>
 #include <cairo.h>
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <cmath>
 #include <cstdint>
-#include <filesystem>
 #include <functional>
 #include <map>
-#include <memory>
 #include <numbers>
 #include <optional>
 #include <string_view>
 #include <unordered_set>
 
 #include "core/error.hpp"
+#include "io/cairo_file.hpp"
 #include "core/names.hpp"
 #include "model/model.hpp"
 
@@ -31,35 +27,17 @@ const std::vector<std::string>& plot_layers() {
 
 namespace {
 
-namespace fs = std::filesystem;
-
 // ---------------------------------------------------------------------------------------
 // What to draw, checked before anything is computed or written.
-
-enum class Format { png, svg, pdf };
 
 struct Layers {
   bool regions = false, plastic = false, prepass = false, zones = false, blocks = false, joints = false, cracks = false;
 };
 
-std::string lower(std::string text) {
-  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return text;
-}
-
 std::string join(const std::vector<std::string>& items) {
   std::string out;
   for (const auto& item : items) out += (out.empty() ? "" : ", ") + item;
   return out;
-}
-
-Format format_of(const std::string& file) {
-  const std::string ext = lower(fs::path(file).extension().string());
-  if (ext == ".png") return Format::png;
-  if (ext == ".svg") return Format::svg;
-  if (ext == ".pdf") return Format::pdf;
-  if (ext.empty()) fail("file '{}' has no extension: use .png, .svg or .pdf", file);
-  fail("unsupported file type '{}': use .png, .svg or .pdf", fs::path(file).extension().string());
 }
 
 Layers layers_of(const std::vector<std::string>& show) {
@@ -309,15 +287,6 @@ const Pen kZonePen{rgb(0xc4c4c4), 0.45, {}, false};
 // ---------------------------------------------------------------------------------------
 // Canvas: the cairo surface, the layout of its parts and the model-to-device mapping.
 
-struct SurfaceDeleter {
-  void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
-};
-struct ContextDeleter {
-  void operator()(cairo_t* c) const { cairo_destroy(c); }
-};
-using SurfacePtr = std::unique_ptr<cairo_surface_t, SurfaceDeleter>;
-using ContextPtr = std::unique_ptr<cairo_t, ContextDeleter>;
-
 struct Rect {
   double x, y, w, h;  // device units, y down
 };
@@ -329,45 +298,6 @@ struct View {
   double ox = 0.0, oy = 0.0;  // device position of the box's top-left corner
   Vec2 operator()(Vec2 p) const { return {ox + k * (p.x - box.x0), oy + k * (box.y1 - p.y)}; }
 };
-
-// Length of the valid UTF-8 sequence at the start of `text` (no overlong forms, surrogates or
-// code points above U+10FFFF), or 0.
-std::size_t utf8_length(std::string_view text) {
-  const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
-  const unsigned c = byte(0);
-  const std::size_t n = c < 0x80                ? 1
-                        : c >= 0xc2 && c < 0xe0 ? 2
-                        : c >= 0xe0 && c < 0xf0 ? 3
-                        : c >= 0xf0 && c < 0xf5 ? 4
-                                                : 0;
-  if (n == 0 || n > text.size()) return 0;
-  unsigned code = n == 1 ? c : c & (0x7fu >> n);
-  for (std::size_t i = 1; i < n; ++i) {
-    if ((byte(i) & 0xc0) != 0x80) return 0;
-    code = code << 6 | (byte(i) & 0x3fu);
-  }
-  const bool overlong = (n == 3 && code < 0x800) || (n == 4 && code < 0x10000);
-  const bool invalid = (code >= 0xd800 && code < 0xe000) || code > 0x10ffff;
-  return overlong || invalid ? 0 : n;
-}
-
-// Text cairo accepts: invalid UTF-8 (names may be any bytes) becomes '?' and control
-// characters spaces; cairo would otherwise stop drawing altogether.
-std::string printable(std::string_view text) {
-  std::string out;
-  out.reserve(text.size());
-  while (!text.empty()) {
-    const std::size_t n = utf8_length(text);
-    if (n == 0)
-      out += '?';
-    else if (n == 1 && (static_cast<unsigned char>(text[0]) < 0x20 || text[0] == 0x7f))
-      out += ' ';
-    else
-      out.append(text.substr(0, n));
-    text.remove_prefix(std::max<std::size_t>(n, 1));
-  }
-  return out;
-}
 
 class Painter {
  public:
@@ -658,52 +588,6 @@ double draw_scale_bar(Painter& p, const Layout& lay) {
   return label_x + p.text_width(label, size);
 }
 
-// ---------------------------------------------------------------------------------------
-// Writing: FILE.tmp, renamed over FILE only once complete.
-
-class TempFile {
- public:
-  explicit TempFile(fs::path path) : path_(std::move(path)) {}
-  TempFile(const TempFile&) = delete;
-  TempFile& operator=(const TempFile&) = delete;
-  ~TempFile() {
-    std::error_code ec;
-    if (!kept_) fs::remove(path_, ec);
-  }
-  const fs::path& path() const { return path_; }
-  void keep() { kept_ = true; }
-
- private:
-  fs::path path_;
-  bool kept_ = false;
-};
-
-void check_writable(const std::string& file) {
-  const fs::path parent = fs::path(file).parent_path();
-  std::error_code ec;
-  if (!parent.empty() && !fs::is_directory(parent, ec))
-    fail("cannot write '{}': directory '{}' does not exist", file, parent.string());
-  if (fs::is_directory(file, ec)) fail("cannot write '{}': it is a directory", file);
-}
-
-void check_cairo(cairo_status_t status, const std::string& file) {
-  if (status != CAIRO_STATUS_SUCCESS)
-    fail("cannot write '{}': {}", file, cairo_status_to_string(status));
-}
-
-SurfacePtr make_surface(Format format, const fs::path& tmp, int width, int height) {
-  const double w = width, h = height;
-  switch (format) {
-    case Format::svg:
-      return SurfacePtr(cairo_svg_surface_create(tmp.c_str(), w, h));
-    case Format::pdf:
-      return SurfacePtr(cairo_pdf_surface_create(tmp.c_str(), w, h));
-    case Format::png:
-      break;
-  }
-  return SurfacePtr(cairo_image_surface_create(CAIRO_FORMAT_RGB24, width, height));
-}
-
 // The new cracks of one mode, each its section's segment [m].
 struct CrackBatch {
   CrackMode mode = CrackMode::none;
@@ -926,39 +810,13 @@ extern "C" const char* __lsan_default_suppressions() {
 #endif
 
 void plot(Model& model, const PlotDef& def) {
-  const Format format = format_of(def.file);
+  picture_format(def.file);  // checked before anything is computed
   const Layers layers = layers_of(def.show);
   check_size(def.width, def.height);
   check_writable(def.file);
   const Scene scene = gather(model, layers);
-
-  TempFile tmp(fs::path(def.file + ".tmp"));
-  SurfacePtr surface = make_surface(format, tmp.path(), def.width, def.height);
-  check_cairo(cairo_surface_status(surface.get()), def.file);
-  if (format == Format::pdf) {
-    cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_TITLE,
-                                   printable(scene.title).c_str());
-    cairo_pdf_surface_set_metadata(surface.get(), CAIRO_PDF_METADATA_CREATOR, "EDEM");
-  }
-  {
-    ContextPtr cr(cairo_create(surface.get()));
-    render(cr.get(), scene, layers, def.width, def.height);
-    const cairo_status_t status = cairo_status(cr.get());
-    if (status != CAIRO_STATUS_SUCCESS)
-      fail("cannot draw '{}': {}", def.file, cairo_status_to_string(status));
-  }
-  if (format == Format::png) {
-    check_cairo(cairo_surface_write_to_png(surface.get(), tmp.path().c_str()), def.file);
-  } else {
-    cairo_surface_finish(surface.get());
-    check_cairo(cairo_surface_status(surface.get()), def.file);
-  }
-  surface.reset();
-
-  std::error_code ec;
-  fs::rename(tmp.path(), def.file, ec);
-  if (ec) fail("cannot write '{}': {}", def.file, ec.message());
-  tmp.keep();
+  write_picture(def.file, def.width, def.height, scene.title,
+                [&](cairo_t* cr) { render(cr, scene, layers, def.width, def.height); });
 }
 
 }  // namespace edem

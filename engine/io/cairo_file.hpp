@@ -1,0 +1,32 @@
+// Writing a cairo picture to a file, shared by plot() and chart(): PNG, SVG or PDF chosen by the
+// file's extension, drawn to FILE.tmp and renamed over FILE only once complete, so a failed
+// picture never leaves a half-written file behind (and keeps the previous one).
+#pragma once
+
+#include <cairo.h>
+
+#include <functional>
+#include <string>
+#include <string_view>
+
+namespace edem {
+
+enum class PictureFormat { png, svg, pdf };
+
+// The format of `file` by its extension (any case). Throws edem::Error for another or none.
+PictureFormat picture_format(const std::string& file);
+
+// Throws edem::Error when `file`'s directory does not exist or `file` is a directory.
+void check_writable(const std::string& file);
+
+// Text cairo accepts: invalid UTF-8 (names may be any bytes) becomes '?' and control characters
+// spaces; cairo would otherwise stop drawing altogether.
+std::string printable(std::string_view text);
+
+// A width x height surface of `file`'s format (PDF titled `title`), drawn by `draw`, written to
+// FILE.tmp and renamed over `file`. Throws edem::Error, leaving no file, if cairo or the file
+// system fails.
+void write_picture(const std::string& file, int width, int height, std::string_view title,
+                   const std::function<void(cairo_t*)>& draw);
+
+}  // namespace edem
