@@ -3,7 +3,9 @@
 //   lu:   Eigen::SparseLU (COLAMD ordering), for any tangent (non-associated flow makes it unsymmetric)
 //   ldlt: Eigen::SimplicialLDLT (AMD ordering), for symmetric tangents only (elastic zones, or
 //         associated flow), reading the lower triangle
-//   umfpack: SuiteSparse's UMFPACK (multifrontal, BLAS) through Eigen's UmfPackSupport, for any tangent
+//   umfpack: SuiteSparse's UMFPACK (multifrontal, BLAS) through Eigen's UmfPackSupport, for any tangent;
+//            METIS ordering, no iterative refinement. Its speed is mostly the BLAS's (dgemm):
+//            scripts/install-deps.sh installs OpenBLAS (libopenblas0-serial) in place of reference BLAS
 #pragma once
 
 #include <sundials/sundials_context.h>
