@@ -84,8 +84,8 @@ SUNLinearSolver make_eigen_linear_solver(SUNContext context, EigenFactorisation 
   if (!s) return nullptr;
   auto* c = new Content;
   c->kind = kind;
-  // Measured on the 46k-zone seed cavern (tests/bench/RESULTS.md): METIS's nested dissection
-  // fills the factors of these 2D meshes less than AMD does (-15 %), and iterative refinement
+  // Measured on the 46k-zone seed cavern (tests/bench/RESULTS.md): with METIS's nested dissection
+  // factorising these 2D meshes takes about 15 % less time than with AMD, and iterative refinement
   // only polishes a step Newton corrects anyway (each refinement is another solve and a product).
   c->umfpack.umfpackControl()(UMFPACK_ORDERING) = UMFPACK_ORDERING_METIS;
   c->umfpack.umfpackControl()(UMFPACK_IRSTEP) = 0;
