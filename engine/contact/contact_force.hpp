@@ -14,10 +14,12 @@ namespace edem {
 
 // Updates `c` and its force on the gridpoint (c.fx, c.fy) from the node positions, origin + u,
 // and velocities `v`; returns the overlap, how far the
-// gridpoint is inside the edge's block [m] (negative: a gap).
-[[gnu::always_inline]] inline double contact_force(Contact& c, const ContactEdge& e, const JointParams& p,
+// gridpoint is inside the edge's block [m] (negative: a gap). `edges`: all of them (the edge is
+// edges[c.edge]; past a corner its neighbour matters too).
+[[gnu::always_inline]] inline double contact_force(Contact& c, const ContactEdge* edges, const JointParams& p,
                                                    const double* origin, const double* u,
                                                    const double* v, double dt) {
+  const ContactEdge& e = edges[c.edge];
   const size_t n = static_cast<size_t>(c.node), a = static_cast<size_t>(e.a), b = static_cast<size_t>(e.b);
   const auto x = [&](size_t dof) { return origin[dof] + u[dof]; };
   const double xa = x(2 * a), ya = x(2 * a + 1);
@@ -28,7 +30,7 @@ namespace edem {
   const double nx = sy, ny = -sx;             // out of the edge's block
   const double t_line = (px * sx + py * sy) / len;
   const double t = std::clamp(t_line, 0.0, 1.0);
-  const double gap = px * nx + py * ny;  // from the edge's line
+  double gap = px * nx + py * ny;  // from the edge's line
   // Past the end of the edge at a convex corner of its block, the gridpoint's share of the
   // contact length shrinks with the distance past the corner and is gone at twice its length
   // (its half-edges then no longer lie over the block): the force fades as a face slides off a
@@ -38,6 +40,17 @@ namespace edem {
   if ((t_line < 0.0 && e.corner_a) || (t_line > 1.0 && e.corner_b)) {
     const double past = (t_line < 0.0 ? -t_line : t_line - 1.0) * len;
     share = c.length > 0.0 ? std::max(0.0, 1.0 - past / (2.0 * c.length)) : 0.0;
+    // Past the corner the far extension of this edge's line must not press in a gridpoint that
+    // has gone beside the block (a wall sliding past the corner of a floor that heaved): it is
+    // inside by at most its depth inside the neighbouring edge's line plus the span the force
+    // fades over (so a gridpoint on the corner, inside or out by round-off, keeps its contact).
+    const bool at_a = t_line < 0.0;
+    const size_t from = static_cast<size_t>(at_a ? edges[e.prev].a : e.b);
+    const size_t to = static_cast<size_t>(at_a ? e.a : edges[e.next].b);
+    const double fx = x(2 * from), fy = x(2 * from + 1);
+    const double ndx = x(2 * to) - fx, ndy = x(2 * to + 1) - fy;
+    const double nlen = std::sqrt(ndx * ndx + ndy * ndy);
+    gap = std::max(gap, ((x(2 * n) - fx) * ndy - (x(2 * n + 1) - fy) * ndx) / nlen - 2.0 * c.length);
   }
   const double rvx = v[2 * n] - ((1.0 - t) * v[2 * a] + t * v[2 * b]);
   const double rvy = v[2 * n + 1] - ((1.0 - t) * v[2 * a + 1] + t * v[2 * b + 1]);

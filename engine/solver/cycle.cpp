@@ -190,7 +190,7 @@ void contact_pass(Mechanics& m, int begin, int end, Partials& partials) {
   int overlapping = -1;
   for (int i = begin; i < end; ++i) {
     Contact& c = list[i];
-    const double overlap = contact_force(c, edges[c.edge], params[c.material], m.origin.data(), m.u.data(), m.v.data(),
+    const double overlap = contact_force(c, edges, params[c.material], m.origin.data(), m.u.data(), m.v.data(),
                                          m.step);
     if constexpr (kMeasure) {
       applied += 2.0 * std::sqrt(c.fx * c.fx + c.fy * c.fy);
@@ -466,7 +466,7 @@ Measure measure_state(const Mechanics& m) {
   for (const Contact& c : m.contacts.list) {
     Contact now = c;
     const ContactEdge& e = m.faces.edges[static_cast<size_t>(c.edge)];
-    contact_force(now, e, m.joint_params[static_cast<size_t>(c.material)], m.origin.data(), m.u.data(), m.v.data(), 0.0);
+    contact_force(now, m.faces.edges.data(), m.joint_params[static_cast<size_t>(c.material)], m.origin.data(), m.u.data(), m.v.data(), 0.0);
     const size_t n = static_cast<size_t>(c.node), a = static_cast<size_t>(e.a), b = static_cast<size_t>(e.b);
     f[2 * n] += now.fx;
     f[2 * n + 1] += now.fy;

@@ -1,0 +1,79 @@
+// One contact's force near a convex corner of the edge's block: a gridpoint on the corner (in or
+// out by round-off) keeps its contact; one that has gone beside the block, past the corner, is not
+// pressed in by the far extension of the edge's line (the seed cavern's wall gridpoint beside a
+// heaved floor's corner once took 1 GPa from that).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "contact/contact_force.hpp"
+
+namespace edem {
+namespace {
+
+// The block below y = 0, x >= 0: its top edge runs from a = (1, 0) to b = (0, 0) (block on the
+// left), and its boundary turns down at b to (0, -1), a convex corner. Node 3 is the gridpoint.
+struct Corner {
+  std::vector<double> origin{1, 0, 0, 0, 0, -1, 0, 0};
+  std::vector<double> u = std::vector<double>(8, 0.0), v = std::vector<double>(8, 0.0);
+  // The top edge, and the next one down from its corner b (the previous is not used here).
+  std::vector<ContactEdge> edges = std::vector<ContactEdge>(2);
+  JointParams joint;
+  Contact contact;
+
+  Corner() {
+    ContactEdge& edge = edges[0];
+    edge.a = 0;
+    edge.b = 1;
+    edge.prev = edge.next = 1;
+    edge.corner_b = true;
+    edges[1].a = 1;
+    edges[1].b = 2;
+    joint.kn = 1e9;
+    joint.ks = 1e8;
+    joint.kn_zero = joint.kn_max = joint.kn;
+    contact.node = 3;
+    contact.edge = 0;
+    contact.length = 0.1;
+  }
+  double force_at(double x, double y) {
+    origin[6] = x;
+    origin[7] = y;
+    contact_force(contact, edges.data(), joint, origin.data(), u.data(), v.data(), 1e-4);
+    return contact.fy;
+  }
+};
+
+TEST(ContactForce, OnTheFaceItPushesOutByTheClosure) {
+  Corner c;
+  EXPECT_DOUBLE_EQ(c.force_at(0.5, -1e-3), 1e9 * 1e-3 * 0.1);
+}
+
+TEST(ContactForce, OnTheCornerInOrOutByRoundOffItKeepsItsForce) {
+  Corner c;
+  const double inside = c.force_at(1e-12, -1e-3), outside = c.force_at(-1e-12, -1e-3);
+  EXPECT_NEAR(inside, 1e9 * 1e-3 * 0.1, 1e-6);
+  EXPECT_NEAR(outside, inside, 1e-6);
+}
+
+TEST(ContactForce, JustPastTheCornerTheForceFadesWithTheShare) {
+  Corner c;
+  const double f = c.force_at(-0.05, -1e-3);  // past by half its length: share 0.75
+  EXPECT_NEAR(f, 1e9 * 1e-3 * 0.1 * 0.75, 1e-6);
+}
+
+TEST(ContactForce, BesideTheBlockPastItsCornerNoDeepLinePressesItIn) {
+  Corner c;
+  c.origin[4] = 1.0;  // the boundary turns down at 45 deg at b, to (1, -1): an acute corner
+  // 0.05 m past the corner along the edge (share 0.75) but 0.5 m below its line: by that line
+  // 0.5 m deep, yet 0.39 m outside the block's other face, more than the fade span (0.2 m).
+  EXPECT_EQ(c.force_at(-0.05, -0.5), 0.0);
+  EXPECT_EQ(c.contact.sn, 0.0);
+  // 0.2 m below the line, 0.177 m outside the other face: deep by at most 0.2 - 0.177 m.
+  c.force_at(-0.05, -0.2);
+  EXPECT_NEAR(c.contact.closure, 0.2 - 0.25 / std::sqrt(2.0), 1e-12);
+}
+
+}  // namespace
+}  // namespace edem
