@@ -109,9 +109,9 @@ std::vector<ChartSeries> read_series(lua_State* L, int index) {
   return series;
 }
 
-int run_chart(lua_State* L, Context&, const Args& args) {
+int run_chart(lua_State* L, Context& context, const Args& args) {
   ChartDef def;
-  def.file = args.string("file");
+  def.file = context.output_path(args.string("file"));
   if (args.has("title")) def.title = args.string("title");
   if (args.has("x_label")) def.x_label = args.string("x_label");
   if (args.has("y_label")) def.y_label = args.string("y_label");

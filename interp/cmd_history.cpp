@@ -82,7 +82,7 @@ int run_history(lua_State* L, Context& context, const Args& args) {
 }
 
 int run_history_write(lua_State*, Context& context, const Args& args) {
-  context.model().write_histories(args.string("file"));
+  context.model().write_histories(context.output_path(args.string("file")));
   context.histories_written = true;
   return 0;
 }

@@ -10,7 +10,7 @@ namespace {
 
 int run_plot(lua_State*, Context& context, const Args& args) {
   PlotDef def;
-  def.file = args.string("file");
+  def.file = context.output_path(args.string("file"));
   def.show = args.get<std::vector<std::string>>("show");
   const auto size = args.get<std::array<std::int64_t, 2>>("size");
   def.width = static_cast<int>(size[0]);

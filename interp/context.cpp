@@ -1,6 +1,7 @@
 // Reaching the Context from a lua_State: a pointer in the state's extra space.
 #include "context.hpp"
 
+#include <filesystem>
 #include <lua.hpp>
 
 namespace edem {
@@ -13,6 +14,12 @@ void attach(lua_State* L, Context& context) {
 
 Context& context_of(lua_State* L) {
   return **static_cast<Context**>(lua_getextraspace(L));
+}
+
+std::string Context::output_path(const std::string& file) const {
+  const std::filesystem::path path(file);
+  if (out_dir.empty() || path.is_absolute()) return file;
+  return (std::filesystem::path(out_dir) / path).string();
 }
 
 }  // namespace edem

@@ -38,6 +38,10 @@ struct Context {
   lua_State* lua = nullptr;        // the main thread while the state is open, else null
   Running* running = nullptr;      // the innermost command executing now
   bool histories_written = false;  // history_write() wrote the current model's histories
+  std::string out_dir;             // --out: where relative files that commands write go; "": here
+
+  // Where a command writes `file`: under out_dir when that is set and `file` is relative.
+  std::string output_path(const std::string& file) const;
 
   // The current model; a script that starts without model{} gets a default one.
   Model& model() {

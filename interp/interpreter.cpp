@@ -56,6 +56,17 @@ int write_histories_at_end(lua_State* L) {
   });
 }
 
+// A --set value as Lua reads it: a number when the whole text is one, true or false, else the
+// text itself (so `--set depth=158` gives arg.depth == 158, a number).
+void push_setting(lua_State* L, const std::string& value) {
+  if (value == "true" || value == "false") {
+    lua_pushboolean(L, value == "true");
+    return;
+  }
+  if (!value.empty() && lua_stringtonumber(L, value.c_str()) == value.size() + 1) return;
+  lua_pushlstring(L, value.data(), value.size());
+}
+
 // "FILE:LINE: syntax: message" from the parser's "SOURCE:LINE: message".
 std::string load_error(int status, const std::string& path, const std::string& message) {
   if (status == LUA_ERRSYNTAX) {
@@ -74,6 +85,8 @@ Interpreter::Interpreter(InterpreterOptions options)
   if (L_ == nullptr) throw std::bad_alloc();
   context_.quiet = options.quiet;
   context_.threads = options.threads;
+  context_.out_dir = options.out_dir;
+  settings_ = options.settings;
   context_.lua = L_;
   attach(L_, context_);
   luaL_openlibs(L_);
@@ -121,6 +134,10 @@ std::optional<std::string> Interpreter::run_file(const std::string& path,
       lua_pushstring(L_, args[i].c_str());
       lua_rawseti(L_, -2, static_cast<lua_Integer>(i + 1));
     }
+    for (const auto& [key, value] : settings_) {
+      push_setting(L_, value);
+      lua_setfield(L_, -2, key.c_str());
+    }
     lua_setglobal(L_, "arg");
     for (const auto& a : args) lua_pushstring(L_, a.c_str());
   }
@@ -131,7 +148,7 @@ std::optional<std::string> Interpreter::run_file(const std::string& path,
 std::optional<std::string> Interpreter::write_pending_histories(const std::string& path) {
   if (!context_.current || context_.current->histories().empty() || context_.histories_written)
     return std::nullopt;
-  const std::string file = fs::path(path).stem().string() + "_history.csv";
+  const std::string file = context_.output_path(fs::path(path).stem().string() + "_history.csv");
   lua_settop(L_, 0);
   lua_pushcfunction(L_, message_handler);
   lua_pushcfunction(L_, write_histories_at_end);

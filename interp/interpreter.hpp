@@ -16,6 +16,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "context.hpp"
@@ -27,7 +28,10 @@ namespace edem {
 struct InterpreterOptions {
   bool quiet = false;                    // commands print no progress
   int threads = 0;                       // OpenMP threads of every model; 0: OpenMP's default
-  std::vector<std::string> stdlib_dirs;  // searched first for require "edem.x"
+  // --set key=value: arg.key in the script (a number or boolean when the text reads as one)
+  std::vector<std::pair<std::string, std::string>> settings = {};
+  std::string out_dir = {};  // --out: relative files that commands write go there (Context::out_dir)
+  std::vector<std::string> stdlib_dirs = {};  // searched first for require "edem.x"
 };
 
 class Interpreter {
@@ -52,6 +56,7 @@ class Interpreter {
   std::optional<std::string> run_loaded(int status, const std::string& path, int nargs);
   std::optional<std::string> write_pending_histories(const std::string& path);
 
+  std::vector<std::pair<std::string, std::string>> settings_;  // InterpreterOptions::settings
   std::string stdlib_path_;  // package.path entries of the stdlib, searched first
   std::string lua_path_;     // Lua's own package.path, searched last
   Context context_;

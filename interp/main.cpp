@@ -1,7 +1,8 @@
 // The edem program: runs a script, prints the language reference, or says its version.
 //
-//   edem [-q] [--threads N] run FILE.lua [ARGS...]     (or: edem FILE.lua [ARGS...];
-//                                                     the options may follow `run` too)
+//   edem [-q] [--threads N] [--out DIR] [--set KEY=VALUE]... run FILE.lua [ARGS...]
+//                                         (or: edem FILE.lua [ARGS...]; the options may follow
+//                                         `run` too)
 //   edem reference [--update README.md]
 //   edem --version | --help
 //
@@ -10,6 +11,8 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -29,6 +32,8 @@ struct Options {
   int threads = 0;  // 0: OpenMP's default
   bool reference = false;
   std::string update;  // README to rewrite with the reference
+  std::vector<std::string> settings;  // --set KEY=VALUE, as given
+  std::string out_dir;                // --out DIR
 };
 
 // An installed edem finds its stdlib next to itself: PREFIX/bin/edem, PREFIX/share/edem/stdlib.
@@ -41,9 +46,42 @@ std::vector<std::string> stdlib_near_executable() {
   return {dir.string()};
 }
 
-int run_script(const Options& options) {
+// KEY=VALUE pairs of --set; a key must be a Lua name (arg.KEY), given once.
+std::vector<std::pair<std::string, std::string>> parse_settings(const std::vector<std::string>& given) {
+  std::vector<std::pair<std::string, std::string>> settings;
+  for (const std::string& text : given) {
+    const size_t equals = text.find('=');
+    if (equals == std::string::npos)
+      throw CLI::ValidationError("--set", fmt::format("'{}' has no '=': give KEY=VALUE", text));
+    const std::string key = text.substr(0, equals);
+    const bool name = !key.empty() && !std::isdigit(static_cast<unsigned char>(key[0])) &&
+                      std::all_of(key.begin(), key.end(), [](char c) {
+                        return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+                      });
+    if (!name)
+      throw CLI::ValidationError(
+          "--set", fmt::format("'{}': the key must be a name (letters, digits, _; not a digit first)", key));
+    for (const auto& [seen, value] : settings)
+      if (seen == key) throw CLI::ValidationError("--set", fmt::format("'{}' is given twice", key));
+    settings.emplace_back(key, text.substr(equals + 1));
+  }
+  return settings;
+}
+
+int run_script(const Options& options, std::vector<std::pair<std::string, std::string>> settings) {
+  if (!options.out_dir.empty()) {
+    std::error_code ec;
+    fs::create_directories(options.out_dir, ec);
+    if (ec || !fs::is_directory(options.out_dir)) {
+      fmt::print(stderr, "edem: --out: cannot make the directory '{}': {}\n", options.out_dir,
+                 ec ? ec.message() : "a file of that name is in the way");
+      return 2;
+    }
+  }
   edem::Interpreter interpreter({.quiet = options.quiet,
                                  .threads = options.threads,
+                                 .settings = std::move(settings),
+                                 .out_dir = options.out_dir,
                                  .stdlib_dirs = stdlib_near_executable()});
   const auto error = interpreter.run_file(options.script, options.script_args);
   if (!error) return 0;
@@ -83,6 +121,13 @@ int main(int argc, char** argv) {
                  "threads for cycling the model (default: OpenMP's, e.g. OMP_NUM_THREADS); at "
                  "most one per 1000 zones, which a smaller model could not keep busy")
       ->check(CLI::Range(1, 4096));
+  app.add_option("--set", options.settings,
+                 "KEY=VALUE for the script, as arg.KEY (a number or boolean when VALUE reads as "
+                 "one, else text); repeat it for more, e.g. --set case=3 --set bolts=none")
+      ->allow_extra_args(false);
+  app.add_option("--out", options.out_dir,
+                 "directory (made if missing) for the files commands write when given a relative "
+                 "name: plot, chart, history_write and the end-of-run histories");
   app.add_flag("--reference", options.reference,
                "print the language reference (markdown) and exit");
   app.add_option("script", options.script, "Lua script to run (same as 'edem run SCRIPT')");
@@ -97,8 +142,10 @@ int main(int argc, char** argv) {
                         "rewrite the reference section of this file (README.md) instead");
   app.require_subcommand(0, 1);
 
+  std::vector<std::pair<std::string, std::string>> settings;
   try {
     app.parse(argc, argv);
+    settings = parse_settings(options.settings);
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;
   }
@@ -107,5 +154,5 @@ int main(int argc, char** argv) {
     fmt::print(stderr, "{}", app.help());
     return 2;
   }
-  return run_script(options);
+  return run_script(options, std::move(settings));
 }

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "interp_test.hpp"
 
@@ -107,6 +108,71 @@ TEST_F(Cli, ScriptArguments) {
   const Outcome r = edem("run args.lua one two");
   EXPECT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.out, "args.lua\tone\ttwo\t2\n");
+}
+
+TEST_F(Cli, SetGivesTheScriptTypedNamedArguments) {
+  write("set.lua",
+        "for _, k in ipairs{'case', 'depth', 'bolts', 'flag', 'empty'} do\n"
+        "  io.write(k, '=', tostring(arg[k]), ':', math.type(arg[k]) or type(arg[k]), ' ')\n"
+        "end\nprint(arg[1])\n");
+  for (const char* form : {"--set case=3 --set depth=158.5 --set bolts=none --set flag=true --set empty= set.lua one",
+                           "run set.lua one --set case=3 --set depth=158.5 --set bolts=none --set flag=true --set empty="}) {
+    const Outcome r = edem(form);
+    EXPECT_EQ(r.status, 0) << form << "\n" << r.err;
+    EXPECT_EQ(r.out, "case=3:integer depth=158.5:float bolts=none:string flag=true:boolean empty=:string one\n")
+        << form;
+  }
+}
+
+TEST_F(Cli, SetRefusesWhatIsNotKeyEqualsValue) {
+  write("set.lua", "print('ran')\n");
+  const std::pair<const char*, const char*> cases[] = {
+      {"--set case set.lua", "--set: 'case' has no '=': give KEY=VALUE"},
+      {"--set 1x=2 set.lua", "--set: '1x': the key must be a name"},
+      {"--set =2 set.lua", "--set: '': the key must be a name"},
+      {"--set a-b=2 set.lua", "--set: 'a-b': the key must be a name"},
+      {"--set a=1 --set a=2 set.lua", "--set: 'a' is given twice"},
+  };
+  for (const auto& [args, message] : cases) {
+    const Outcome r = edem(args);
+    EXPECT_EQ(r.status, 2) << args;
+    EXPECT_EQ(r.out, "") << args;  // the script did not run
+    EXPECT_TRUE(contains(r.err, message)) << args << "\n" << r.err;
+  }
+}
+
+TEST_F(Cli, OutTakesTheFilesCommandsWrite) {
+  write("out.lua",
+        "block{ x = {0, 1}, y = {0, 1} }\nzone{ edge = 0.5 }\n"
+        "material{ 'rock', density = 2000, young = 1e9, poisson = 0.25 }\nassign{ material = 'rock' }\n"
+        "history{ name = 'one', fn = function() return 1 end }\ncycle(2)\n"
+        "plot{ file = 'model.png' }\n"
+        "chart{ file = 'chart.svg', series = {{ name = 'a', x = {0, 1}, y = {0, 1} }} }\n"
+        "history_write('kept.csv')\n"
+        "plot{ file = '" + (dir_ / "absolute.png").string() + "' }\n");
+  const Outcome r = edem("--quiet --out results/run1 out.lua");
+  EXPECT_EQ(r.status, 0) << r.err;
+  for (const char* file : {"model.png", "chart.svg", "kept.csv"})
+    EXPECT_TRUE(fs::exists(dir_ / "results" / "run1" / file)) << file;
+  EXPECT_TRUE(fs::exists(dir_ / "absolute.png"));  // an absolute name stays as given
+  EXPECT_FALSE(fs::exists(dir_ / "model.png"));
+  // The end-of-run histories, when no history_write wrote them, go there too.
+  write("end.lua", "block{ x = {0, 1}, y = {0, 1} }\nzone{ edge = 0.5 }\n"
+                   "material{ 'rock', density = 2000, young = 1e9, poisson = 0.25 }\nassign{ material = 'rock' }\n"
+                   "history{ 'cycle' }\ncycle(2)\n");
+  const Outcome end = edem("run --out results end.lua");
+  EXPECT_EQ(end.status, 0) << end.err;
+  EXPECT_EQ(end.out, "history: 1 history written to results/end_history.csv\n");
+  EXPECT_TRUE(fs::exists(dir_ / "results" / "end_history.csv"));
+}
+
+TEST_F(Cli, OutThatCannotBeADirectoryIsAUsageError) {
+  write("out.lua", "print('ran')\n");
+  write("taken", "a file\n");
+  const Outcome r = edem("--out taken out.lua");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.out, "");
+  EXPECT_TRUE(contains(r.err, "edem: --out: cannot make the directory 'taken'")) << r.err;
 }
 
 TEST_F(Cli, ScriptErrorExitsOneWithFileAndLine) {
