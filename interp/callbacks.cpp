@@ -174,9 +174,11 @@ Call call(const LuaRef& fn, Push&& push, int results, std::string_view word,
 
 std::function<void(long cycle)> lua_callback(lua_State* L, int index) {
   auto fn = std::make_shared<const LuaRef>(L, index);
-  return [fn](long cycle) {
+  Context* context = &context_of(L);  // the interpreter's: it outlives every model
+  return [fn, context](long cycle) {
     // cancel() inside the callback may drop this std::function while it runs: hold our own.
     const std::shared_ptr<const LuaRef> keep = fn;
+    context->close_progress_line();  // what the callback prints starts on a line of its own
     const auto push = [cycle](lua_State* T) {
       lua_pushinteger(T, static_cast<lua_Integer>(cycle));
       return 1;

@@ -78,8 +78,15 @@ void start_cycling(lua_State* L, Context& context, std::string_view name) {
   context.running->cycling_at = at.empty() ? fmt::format("{}()", name) : at;
 }
 
+// Clears the progress line when the run ends, however it ends.
+struct ProgressLineCloser {
+  Context& context;
+  ~ProgressLineCloser() { context.close_progress_line(); }
+};
+
 int run_cycle(lua_State* L, Context& context, const Args& args) {
   start_cycling(L, context, "cycle");
+  const ProgressLineCloser closer{context};
   context.model().cycle(static_cast<long>(args.integer("n")));
   return 0;
 }
@@ -89,7 +96,10 @@ int run_solve(lua_State* L, Context& context, const Args& args) {
   SolveDef def;
   def.ratio = args.number("ratio");
   def.max_cycles = static_cast<long>(args.integer("max_cycles"));
-  const SolveResult result = context.model().solve(def);
+  const SolveResult result = [&] {
+    const ProgressLineCloser closer{context};
+    return context.model().solve(def);
+  }();
   if (!context.quiet) {
     if (result.converged)
       fmt::print("solve: {} cycles, ratio {:.3g}\n", result.cycles, result.ratio);

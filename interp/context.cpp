@@ -1,6 +1,7 @@
 // Reaching the Context from a lua_State: a pointer in the state's extra space.
 #include "context.hpp"
 
+#include <cstdio>
 #include <filesystem>
 #include <lua.hpp>
 
@@ -14,6 +15,13 @@ void attach(lua_State* L, Context& context) {
 
 Context& context_of(lua_State* L) {
   return **static_cast<Context**>(lua_getextraspace(L));
+}
+
+void Context::close_progress_line() {
+  if (!progress_line_open) return;
+  std::fputs("\r\033[K", stdout);  // back to the line's start, erase it
+  std::fflush(stdout);
+  progress_line_open = false;
 }
 
 std::string Context::output_path(const std::string& file) const {

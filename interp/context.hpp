@@ -8,6 +8,7 @@
 // they run on the thread that is executing (never a suspended one) and their errors name it.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -39,6 +40,14 @@ struct Context {
   Running* running = nullptr;      // the innermost command executing now
   bool histories_written = false;  // history_write() wrote the current model's histories
   std::string out_dir;             // --out: where relative files that commands write go; "": here
+  // The progress line of long runs (every model gets it; none with --quiet), and whether a
+  // terminal line is showing that the next output must clear first.
+  std::function<void(const RunProgress&)> progress;
+  double progress_every = 0.0;  // [s]
+  bool progress_line_open = false;
+
+  // Clears a terminal progress line still showing (after a run, or before its error).
+  void close_progress_line();
 
   // Where a command writes `file`: under out_dir when that is set and `file` is relative.
   std::string output_path(const std::string& file) const;
@@ -52,6 +61,7 @@ struct Context {
   // Makes `next` the current model (with the run's thread count), dropping the old one.
   void replace_model(std::unique_ptr<Model> next) {
     next->set_threads(threads);
+    next->set_progress(progress, progress_every);
     current = std::move(next);
     histories_written = false;
   }

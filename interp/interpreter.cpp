@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 #include <lua.hpp>
+#include <unistd.h>
 
 #include "adaptor.hpp"
 #include "commands.hpp"
@@ -56,6 +57,26 @@ int write_histories_at_end(lua_State* L) {
   });
 }
 
+// The progress line: on a terminal one line rewritten in place, otherwise plain lines.
+void start_progress(Context& context, const InterpreterOptions& options) {
+  if (options.quiet || options.progress_seconds == 0.0) return;
+  const bool terminal = ::isatty(::fileno(stdout)) != 0;
+  context.progress_every = options.progress_seconds > 0.0 ? options.progress_seconds : terminal ? 0.5 : 10.0;
+  context.progress = [&context, terminal](const RunProgress& p) {
+    const double rate = p.seconds > 0.0 ? static_cast<double>(p.run_cycles) / p.seconds : 0.0;
+    const std::string line = fmt::format(
+        "cycle {} ({} of {}), ratio {:.3g}{}, cracks {}, stage {}, {:.0f} cycles/s", p.cycle, p.run_cycles,
+        p.max_cycles, p.ratio, p.target > 0.0 ? fmt::format(" (to {:.3g})", p.target) : "", p.cracks, p.stage, rate);
+    if (terminal) {
+      fmt::print("\r{}\033[K", line);
+      context.progress_line_open = true;
+    } else {
+      fmt::print("{}\n", line);
+    }
+    std::fflush(stdout);
+  };
+}
+
 // A --set value as Lua reads it: a number when the whole text is one, true or false, else the
 // text itself (so `--set depth=158` gives arg.depth == 158, a number).
 void push_setting(lua_State* L, const std::string& value) {
@@ -86,6 +107,7 @@ Interpreter::Interpreter(InterpreterOptions options)
   context_.quiet = options.quiet;
   context_.threads = options.threads;
   context_.out_dir = options.out_dir;
+  start_progress(context_, options);
   settings_ = options.settings;
   context_.lua = L_;
   attach(L_, context_);

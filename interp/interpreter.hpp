@@ -31,6 +31,9 @@ struct InterpreterOptions {
   // --set key=value: arg.key in the script (a number or boolean when the text reads as one)
   std::vector<std::pair<std::string, std::string>> settings = {};
   std::string out_dir = {};  // --out: relative files that commands write go there (Context::out_dir)
+  // --progress: seconds between progress lines of a long run; < 0: 0.5 on a terminal (one line,
+  // rewritten), 10 otherwise (plain lines); 0: none. None at all when quiet.
+  double progress_seconds = -1.0;
   std::vector<std::string> stdlib_dirs = {};  // searched first for require "edem.x"
 };
 

@@ -34,6 +34,7 @@ struct Options {
   std::string update;  // README to rewrite with the reference
   std::vector<std::string> settings;  // --set KEY=VALUE, as given
   std::string out_dir;                // --out DIR
+  double progress = -1.0;             // --progress SECONDS; < 0: the default
 };
 
 // An installed edem finds its stdlib next to itself: PREFIX/bin/edem, PREFIX/share/edem/stdlib.
@@ -82,6 +83,7 @@ int run_script(const Options& options, std::vector<std::pair<std::string, std::s
                                  .threads = options.threads,
                                  .settings = std::move(settings),
                                  .out_dir = options.out_dir,
+                                 .progress_seconds = options.progress,
                                  .stdlib_dirs = stdlib_near_executable()});
   const auto error = interpreter.run_file(options.script, options.script_args);
   if (!error) return 0;
@@ -128,6 +130,11 @@ int main(int argc, char** argv) {
   app.add_option("--out", options.out_dir,
                  "directory (made if missing) for the files commands write when given a relative "
                  "name: plot, chart, history_write and the end-of-run histories");
+  app.add_option("--progress", options.progress,
+                 "seconds between progress lines of a long cycle() or solve{} (cycle, ratio, "
+                 "cracks, stage, cycles/s): on a terminal one line rewritten every 0.5 s, "
+                 "otherwise a plain line every 10 s; 0: none")
+      ->check(CLI::Range(0.0, 1e9));
   app.add_flag("--reference", options.reference,
                "print the language reference (markdown) and exit");
   app.add_option("script", options.script, "Lua script to run (same as 'edem run SCRIPT')");

@@ -77,6 +77,9 @@ class Model {
   void set_solver(const SolverSettings& settings);
   const SolverSettings& solver_settings() const;
   void set_threads(int threads);  // OpenMP threads for cycling; 0: OpenMP's default
+  // `report` is called during cycle() and solve{} each time `every_seconds` of wall clock have
+  // passed (never for a shorter run); a null function or 0 seconds: no reports.
+  void set_progress(std::function<void(const RunProgress&)> report, double every_seconds);
   // Excavation (solver/excavation.cpp): the zones of a region turn null and the stage count
   // goes up; fill{} gives excavated zones of a region a material again, stress-free.
   void excavate(const ExcavateDef& def);

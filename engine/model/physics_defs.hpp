@@ -198,6 +198,18 @@ struct SolveResult {
   bool converged = false;
 };
 
+// Where a long cycle() or solve{} stands, for a progress line (Model::set_progress).
+struct RunProgress {
+  long cycle = 0;         // the model's cycle count
+  long run_cycles = 0;    // cycles of this run so far
+  long max_cycles = 0;    // its limit
+  double ratio = 0.0;     // unbalanced-force ratio now
+  double target = 0.0;    // the ratio solve{} runs to; 0 for cycle()
+  long cracks = 0;        // new cracks so far
+  int stage = 0;          // excavation stage
+  double seconds = 0.0;   // wall clock since the run started
+};
+
 // Zone state flags (bits): failing now and failed in the past, in shear and in tension.
 enum ZoneState : std::uint8_t {
   kShearNow = 1,

@@ -224,6 +224,12 @@ void Model::set_solver(const SolverSettings& settings) {
 
 const SolverSettings& Model::solver_settings() const { return mechanics_->settings; }
 
+void Model::set_progress(std::function<void(const RunProgress&)> report, double every_seconds) {
+  if (!(every_seconds >= 0.0)) fail("the progress interval must be >= 0 s, got {}", every_seconds);
+  mechanics_->progress = std::move(report);
+  mechanics_->progress_every = every_seconds;
+}
+
 void Model::set_threads(int threads) {
   if (threads < 0) fail("threads must be >= 1, got {}", threads);
   mechanics_->threads = threads;

@@ -226,6 +226,8 @@ struct Mechanics {
   int growth_span = 0;    // cycles since last_kinetic was taken
   std::vector<Callback> callbacks;
   int next_handle = 1;
+  std::function<void(const RunProgress&)> progress;  // reports a long run (Model::set_progress)
+  double progress_every = 0.0;                       // [s] between reports; 0: none
   std::vector<History> histories;
 };
 

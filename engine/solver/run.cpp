@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "core/error.hpp"
@@ -187,6 +188,9 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
          "give the bolts longer segments",
          m.settings.step, m.bolt_hosts.critical_step);
   CyclingFlag flag(m.cycling_now);
+  const bool reporting = m.progress && m.progress_every > 0.0;
+  const auto started = std::chrono::steady_clock::now();
+  auto reported = started;
   SolveResult result;
   double speed = 0.0;  // fastest gridpoint at the last measurement [m/s]
   if (target_ratio > 0.0 && m.release.dof.empty()) {
@@ -234,6 +238,20 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
     if (target_ratio > 0.0 && m.info.ratio <= target_ratio && !cracked && !releasing) {
       result.converged = true;
       break;
+    }
+    if (reporting) {
+      const auto now = std::chrono::steady_clock::now();
+      if (std::chrono::duration<double>(now - reported).count() >= m.progress_every) {
+        reported = now;
+        m.progress({.cycle = m.info.cycle,
+                    .run_cycles = result.cycles,
+                    .max_cycles = max_cycles,
+                    .ratio = m.info.ratio,
+                    .target = target_ratio,
+                    .cracks = static_cast<long>(m.cracks.size()),
+                    .stage = m.stage,
+                    .seconds = std::chrono::duration<double>(now - started).count()});
+      }
     }
   }
   result.ratio = m.info.ratio;

@@ -175,6 +175,46 @@ TEST_F(Cli, OutThatCannotBeADirectoryIsAUsageError) {
   EXPECT_TRUE(contains(r.err, "edem: --out: cannot make the directory 'taken'")) << r.err;
 }
 
+// A run of about a third of a second (5,000 zones, 3,000 cycles) with a callback that prints; on
+// one thread (two threads beside another test's two spin at their barriers: 30 s instead).
+constexpr const char* kLongRun =
+    "block{ x = {0, 10}, y = {0, 10} }\nzone{ edge = 0.2 }\n"
+    "material{ 'rock', density = 2000, young = 1e9, poisson = 0.25 }\nassign{ material = 'rock' }\n"
+    "gravity{ 0, -9.81 }\nboundary{ side = 'bottom', fix = 'y' }\n"
+    "every(1500, function(c) print('callback', c) end)\ncycle(3000)\nprint('done')\n";
+
+TEST_F(Cli, ProgressOffATerminalIsPlainLines) {
+  write("long.lua", kLongRun);
+  const Outcome r = edem("--threads 1 --progress 0.02 long.lua");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(contains(r.out, " of 3000), ratio ")) << r.out;
+  EXPECT_TRUE(contains(r.out, "cycles/s\n")) << r.out;
+  EXPECT_FALSE(contains(r.out, "\r")) << r.out;
+  EXPECT_TRUE(contains(r.out, "callback\t1500\n"));
+  EXPECT_TRUE(contains(r.out, "\ndone\n"));
+  for (const char* quiet : {"--threads 1 --quiet --progress 0.02 long.lua", "--threads 1 --progress 0 long.lua",
+                            "--threads 1 long.lua"}) {
+    const Outcome q = edem(quiet);  // the default off a terminal is a line every 10 s
+    EXPECT_EQ(q.status, 0) << quiet << q.err;
+    EXPECT_EQ(q.out, "callback\t1500\ncallback\t3000\ndone\n") << quiet;
+  }
+}
+
+TEST_F(Cli, ProgressOnATerminalIsOneLineClearedBeforeOtherOutput) {
+  write("long.lua", kLongRun);
+  // script(1) (util-linux, in every Debian) runs edem on a pseudo-terminal.
+  const Outcome r = edem("--version >/dev/null && script -qc \"'" EDEM_EXE "' --threads 1 --progress 0.02 long.lua\" /dev/null");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(contains(r.out, "\rcycle ")) << r.out;                 // rewritten in place
+  EXPECT_TRUE(contains(r.out, "\r\033[Kcallback\t1500")) << r.out;  // cleared first
+  // What follows the run starts on a line of its own: after a newline, or after the line's clearing
+  // when a report came after the last callback.
+  const size_t done = r.out.find("done");
+  ASSERT_NE(done, std::string::npos) << r.out;
+  const std::string before = r.out.substr(0, done);
+  EXPECT_TRUE(before.ends_with("\n") || before.ends_with("\r\033[K")) << r.out;
+}
+
 TEST_F(Cli, ScriptErrorExitsOneWithFileAndLine) {
   write("bad.lua", "print('before')\njset{ angle = 30, spacing = -2 }\nprint('after')\n");
   const Outcome r = edem("run bad.lua");
