@@ -1,7 +1,10 @@
 // plot{}: pictures of the model (PNG, SVG or PDF).
+#include <array>
 #include <lua.hpp>
+#include <vector>
 
 #include "commands.hpp"
+#include "core/error.hpp"
 #include "context.hpp"
 #include "io/plot.hpp"
 
@@ -15,6 +18,11 @@ int run_plot(lua_State*, Context& context, const Args& args) {
   const auto size = args.get<std::array<std::int64_t, 2>>("size");
   def.width = static_cast<int>(size[0]);
   def.height = static_cast<int>(size[1]);
+  if (args.has("window")) {
+    const auto& w = args.get<std::vector<double>>("window");
+    if (w.size() != 4) fail("window must be four numbers {{x0, x1, y0, y1}}, got {}", w.size());
+    def.window = std::array<double, 4>{w[0], w[1], w[2], w[3]};
+  }
   plot(context.model(), def);
   return 0;
 }
@@ -46,9 +54,13 @@ const Command& plot_command() {
                plot_layers},
               {"size", Type::int_pair, "px", between(kPlotMinSize, kPlotMaxSize), "{1200, 900}",
                "width and height (points for SVG and PDF)"},
+              {"window", Type::numbers, "m", any_value, kOptional,
+               "{x0, x1, y0, y1}: draw only this part, fitted to the picture (a cavern's wall, a "
+               "crack's tip)",
+               "the whole model"},
           },
       .run = run_plot,
-      .usage = R"(plot{ file = "model.png", show = {"blocks", "joints"} })",
+      .usage = R"(plot{ file = "model.png", show = {"blocks", "joints"} } or plot{ file = "wall.png", show = {"zones", "cracks"}, window = {-20, -4, -20, -2} })",
   };
   return command;
 }

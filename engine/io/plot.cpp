@@ -809,12 +809,26 @@ extern "C" const char* __lsan_default_suppressions() {
 }
 #endif
 
+namespace {
+
+void check_window(const std::optional<std::array<double, 4>>& window) {
+  if (!window) return;
+  const auto& [x0, x1, y0, y1] = *window;
+  if (!(std::isfinite(x0) && std::isfinite(x1) && std::isfinite(y0) && std::isfinite(y1) && x0 < x1 && y0 < y1))
+    fail("window must be {{x0, x1, y0, y1}} with x0 < x1 and y0 < y1, got {{{:g}, {:g}, {:g}, {:g}}}", x0, x1, y0,
+         y1);
+}
+
+}  // namespace
+
 void plot(Model& model, const PlotDef& def) {
   picture_format(def.file);  // checked before anything is computed
   const Layers layers = layers_of(def.show);
   check_size(def.width, def.height);
+  check_window(def.window);
   check_writable(def.file);
-  const Scene scene = gather(model, layers);
+  Scene scene = gather(model, layers);
+  if (def.window) scene.box = Box{(*def.window)[0], (*def.window)[1], (*def.window)[2], (*def.window)[3]};
   write_picture(def.file, def.width, def.height, scene.title,
                 [&](cairo_t* cr) { render(cr, scene, layers, def.width, def.height); });
 }

@@ -5,6 +5,8 @@
 // FILE.tmp and renamed, so a failed plot never leaves a half-written picture behind.
 #pragma once
 
+#include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +19,8 @@ struct PlotDef {
   std::vector<std::string> show{"blocks", "joints"};  // any of plot_layers()
   int width = 1200;                                   // [px] (points for SVG/PDF)
   int height = 900;                                   // [px]
+  // {x0, x1, y0, y1} [m]: draw only this part of the model, fitted to the canvas; none: all of it
+  std::optional<std::array<double, 4>> window;
 };
 
 // The layer names `show` accepts, in drawing order:
@@ -37,7 +41,8 @@ inline constexpr int kPlotMinSize = 64;
 inline constexpr int kPlotMaxSize = 16384;
 
 // Draws the model. Throws edem::Error, leaving no file, for an unknown layer or extension,
-// a size out of range, a model without blocks, or a file that cannot be written.
+// a size out of range, a window that is not x0 < x1, y0 < y1 (finite), a model without blocks,
+// or a file that cannot be written.
 void plot(Model& model, const PlotDef& def);
 
 }  // namespace edem

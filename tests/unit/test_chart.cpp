@@ -1,6 +1,5 @@
 // chart{}: a picture of each file type, read back to check its size and that it shows the
 // series, and bad input rejected without leaving a file behind.
-#include <cairo/cairo.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -19,6 +18,7 @@
 #include "core/error.hpp"
 #include "io/chart.hpp"
 #include "io/plot.hpp"
+#include "read_png.hpp"
 
 namespace edem {
 namespace {
@@ -52,35 +52,8 @@ std::string message_of(const ChartDef& def) {
   return "(no error)";
 }
 
-struct SurfaceDeleter {
-  void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }
-};
-
-// A PNG read back: its size and every pixel's colour (0xRRGGBB).
-struct Picture {
-  int width = 0, height = 0;
-  std::vector<std::uint32_t> pixels;
-  bool has(std::uint32_t colour) const {
-    return std::find(pixels.begin(), pixels.end(), colour) != pixels.end();
-  }
-};
-
-Picture read_png(const std::string& file) {
-  std::unique_ptr<cairo_surface_t, SurfaceDeleter> surface(
-      cairo_image_surface_create_from_png(file.c_str()));
-  Picture picture;
-  if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS) return picture;
-  cairo_surface_flush(surface.get());
-  picture.width = cairo_image_surface_get_width(surface.get());
-  picture.height = cairo_image_surface_get_height(surface.get());
-  const int stride = cairo_image_surface_get_stride(surface.get());
-  const unsigned char* data = cairo_image_surface_get_data(surface.get());
-  for (int y = 0; y < picture.height; ++y) {
-    const auto* row = reinterpret_cast<const std::uint32_t*>(data + y * stride);
-    for (int x = 0; x < picture.width; ++x) picture.pixels.push_back(row[x] & 0xffffffu);
-  }
-  return picture;
-}
+using test::Picture;
+using test::read_png;
 
 class ChartTest : public testing::Test {
  protected:

@@ -2,7 +2,9 @@
 // without leaving a file behind.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -11,6 +13,7 @@
 #include "core/error.hpp"
 #include "io/plot.hpp"
 #include "model/model.hpp"
+#include "read_png.hpp"
 
 namespace edem {
 namespace {
@@ -98,6 +101,34 @@ TEST_F(PlotTest, WritesPngOfTheRequestedSize) {
   EXPECT_EQ(be32(16), 640u);
   EXPECT_EQ(be32(20), 480u);
   EXPECT_FALSE(fs::exists(def.file + ".tmp"));
+}
+
+TEST_F(PlotTest, WindowDrawsThatPartFittedToThePicture) {
+  Model model = jointed_box();
+  PlotDef def;
+  def.show = {"regions"};  // the opening, 2 m x 2 m in a 10 m box, filled
+  def.file = file("whole.png");
+  plot(model, def);
+  def.file = file("window.png");
+  def.window = std::array<double, 4>{3.5, 6.5, 3.5, 6.5};
+  plot(model, def);
+  const test::Picture whole = test::read_png(file("whole.png")), window = test::read_png(file("window.png"));
+  ASSERT_EQ(window.width, 1200);
+  // The region covers 4 % of the model's square and 44 % of the window's.
+  EXPECT_GT(window.inked(), 5.0 * whole.inked()) << whole.inked() << " " << window.inked();
+}
+
+TEST_F(PlotTest, BadWindowThrowsNamingItAndLeavesNoFile) {
+  Model model = jointed_box();
+  for (const auto& window : {std::array<double, 4>{5, 5, 0, 1}, std::array<double, 4>{0, 1, 2, -2},
+                             std::array<double, 4>{0, std::nan(""), 0, 1}}) {
+    PlotDef def = all_layers(file("bad.png"));
+    def.window = window;
+    EXPECT_NE(message_of(model, def).find("window must be {x0, x1, y0, y1} with x0 < x1 and y0 < y1, got {"),
+              std::string::npos)
+        << message_of(model, def);
+  }
+  EXPECT_TRUE(dir_is_empty());
 }
 
 TEST_F(PlotTest, WritesSvg) {
