@@ -1,4 +1,7 @@
 // chart{}: line charts of x-y series (PNG, SVG or PDF), such as error against run time.
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include <lua.hpp>
 
 #include <algorithm>
@@ -109,6 +112,40 @@ std::vector<ChartSeries> read_series(lua_State* L, int index) {
   return series;
 }
 
+// The recorded histories named, each a series against the cycle: "name [unit]" in the legend.
+std::vector<ChartSeries> history_series(const Model& model, const std::vector<std::string>& names) {
+  std::vector<ChartSeries> series;
+  for (const std::string& name : names) {
+    const auto& all = model.histories();
+    const auto it = std::find_if(all.begin(), all.end(), [&](const History& h) { return h.name == name; });
+    if (it == all.end()) {
+      std::vector<std::string> known;
+      for (const History& h : all) known.push_back(h.name);
+      fail("no history named '{}' ({})", name,
+           known.empty() ? std::string("none recorded: history{...} first") : fmt::format("histories: {}", fmt::join(known, ", ")));
+    }
+    if (it->values.empty()) fail("history '{}' has no samples yet: cycle the model first", name);
+    ChartSeries s;
+    s.name = it->unit.empty() || it->unit == "-" ? it->name : fmt::format("{} [{}]", it->name, it->unit);
+    s.x.assign(it->cycles.begin(), it->cycles.end());
+    s.y = it->values;
+    series.push_back(std::move(s));
+  }
+  return series;
+}
+
+// The unit the histories share, "[m]", or "" when they differ or have none.
+std::string shared_unit(const Model& model, const std::vector<std::string>& names) {
+  std::string unit;
+  for (const std::string& name : names)
+    for (const History& h : model.histories())
+      if (h.name == name) {
+        if (!unit.empty() && unit != h.unit) return "";
+        unit = h.unit;
+      }
+  return unit.empty() || unit == "-" ? "" : "[" + unit + "]";
+}
+
 int run_chart(lua_State* L, Context& context, const Args& args) {
   ChartDef def;
   def.file = context.output_path(args.string("file"));
@@ -118,7 +155,14 @@ int run_chart(lua_State* L, Context& context, const Args& args) {
   if (args.has("log"))
     for (const std::string& axis : args.get<std::vector<std::string>>("log"))
       (axis == "x" ? def.log_x : def.log_y) = true;
-  def.series = read_series(L, args.get<TableArg>("series").index);
+  if (!args.has("series") && !args.has("history")) fail("give series = {{...}}, history = \"name\", or both");
+  if (args.has("series")) def.series = read_series(L, args.get<TableArg>("series").index);
+  if (args.has("history")) {
+    const auto& names = args.get<std::vector<std::string>>("history");
+    for (ChartSeries& s : history_series(context.model(), names)) def.series.push_back(std::move(s));
+    if (!args.has("x_label") && !args.has("series")) def.x_label = "cycle";
+    if (!args.has("y_label")) def.y_label = shared_unit(context.model(), names);
+  }
   const auto size = args.get<std::array<std::int64_t, 2>>("size");
   def.width = static_cast<int>(size[0]);
   def.height = static_cast<int>(size[1]);
@@ -138,10 +182,15 @@ const Command& chart_command() {
       .keys =
           {
               {"file", Type::string, "", any_value, kRequired, "the picture to write"},
-              {"series", Type::table, "", any_value, kRequired,
+              {"series", Type::table, "", any_value, kOptional,
                "the lines: a list of `{name = \"...\", x = {...}, y = {...}}`, x and y lists of "
                "numbers of the same length (at least one point); name (optional) is shown in the "
-               "legend"},
+               "legend",
+               "none; give history"},
+              {"history", Type::strings, "", any_value, kOptional,
+               "recorded histories (history{}) by name, each a line against the cycle, named with "
+               "its unit; x_label then defaults to cycle and y_label to their shared unit",
+               "none; give series"},
               {"title", Type::string, "", any_value, kOptional, "the title above the chart",
                "none"},
               {"x_label", Type::string, "", any_value, kOptional, "the label of the x axis",
@@ -155,7 +204,7 @@ const Command& chart_command() {
           },
       .run = run_chart,
       .usage =
-          R"(chart{ file = "speed.png", log = {"x", "y"}, x_label = "run time [s]", series = { {name = "implicit", x = {0.5, 2, 9}, y = {0.02, 0.005, 0.001}} } })",
+          R"(chart{ file = "speed.png", log = {"x", "y"}, x_label = "run time [s]", series = { {name = "implicit", x = {0.5, 2, 9}, y = {0.02, 0.005, 0.001}} } } or chart{ file = "roof.png", history = {"roof_sag"} })",
   };
   return command;
 }

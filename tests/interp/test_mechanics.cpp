@@ -395,6 +395,30 @@ TEST(Mechanics, Histories) {
   EXPECT_TRUE(interpreter.context().histories_written);
 }
 
+// chart{ history = } draws recorded histories against the cycle; a name it does not know, or a
+// history with no samples yet, is an error naming the histories there are.
+TEST(Mechanics, ChartOfHistories) {
+  const fs::path png =
+      fs::temp_directory_path() / ("edem_history_chart_" + std::to_string(::getpid()) + ".png");
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  const std::string setup = column(R"lua(
+    local uy = history{ "uy", at = {5, 10}, every = 20 }
+    history{ name = "sag", unit = "m", every = 20, fn = function() return -gp_near(5, 10).uy end }
+  )lua");
+  EXPECT_TRUE(contains(error_of(interpreter, setup + "chart{ file = 'x.png', history = 'sag' }"),
+                       "chart: history 'sag' has no samples yet: cycle the model first"));
+  Interpreter second;
+  second.context().quiet = true;
+  expect_runs(second, setup + "cycle(40)\nchart{ file = '" + png.string() + "', history = {uy, 'sag'}, title = 'top' }\n");
+  EXPECT_GT(fs::file_size(png), 1000u);
+  fs::remove(png);
+  EXPECT_TRUE(contains(error_of(second, "chart{ file = 'x.png', history = 'nothing' }"),
+                       "chart: no history named 'nothing' (histories: uy@(5 10), sag)"));
+  EXPECT_TRUE(contains(error_of(second, "chart{ file = 'x.png' }"),
+                       "chart: give series = {...}, history = \"name\", or both"));
+}
+
 // Joint quantities: the counts of the model's contacts, and one contact followed by its
 // gridpoint, equal to what contact_near() says about it.
 TEST(Mechanics, JointHistories) {
