@@ -55,6 +55,7 @@ const std::vector<const Command*>& commands() {
       &sections_command(),       //
       &plot_command(),           // cmd_plot.cpp
       &chart_command(),          // cmd_chart.cpp
+      &profile_command(),        // cmd_profile.cpp
   };
   return table;
 }

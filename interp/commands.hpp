@@ -51,6 +51,7 @@ const Command& sections_command();
 const Command& contact_near_command();
 const Command& plot_command();
 const Command& chart_command();
+const Command& profile_command();
 const Command& excavate_command();
 const Command& fill_command();
 const Command& stage_command();

@@ -419,6 +419,35 @@ TEST(Mechanics, ChartOfHistories) {
                        "chart: give series = {...}, history = \"name\", or both"));
 }
 
+// profile{} samples along a line exactly what history{} and the queries see at each point: the
+// nearest gridpoint's displacement, the containing zone's stress; with file = it draws them.
+TEST(Mechanics, ProfileSamplesAlongALine) {
+  const fs::path png = fs::temp_directory_path() / ("edem_profile_" + std::to_string(::getpid()) + ".png");
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, column(R"lua(
+    solve{ ratio = 1e-6 }
+    local p = profile{ from = {5, 0}, to = {5, 10}, quantity = "uy", points = 11, file = ")lua" +
+                                  png.string() + R"lua(" }
+    assert(#p.value == 11 and #p.distance == 11 and #p.x == 11 and #p.y == 11)
+    for i = 1, 11 do
+      assert(math.abs(p.distance[i] - (i - 1)) < 1e-12 and p.x[i] == 5 and math.abs(p.y[i] - (i - 1)) < 1e-12)
+      assert(p.value[i] == gp_near(p.x[i], p.y[i]).uy, "uy at point " .. i)
+    end
+    assert(p.value[1] == 0 and p.value[11] < 0, "fixed base, settled top")
+    local s = profile{ from = {2, 0.5}, to = {8, 9.5}, quantity = "syy", points = 7 }
+    for i = 1, 7 do assert(s.value[i] == zone_at(s.x[i], s.y[i]).syy, "syy at point " .. i) end
+  )lua"));
+  EXPECT_GT(fs::file_size(png), 1000u);
+  fs::remove(png);
+  EXPECT_TRUE(contains(error_of(interpreter, "profile{ from = {1, 1}, to = {1, 1}, quantity = 'uy' }"),
+                       "profile: from and to are the same point (1, 1): a profile needs a line"));
+  EXPECT_TRUE(contains(error_of(interpreter, "profile{ from = {1, 1}, to = {2, 1}, quantity = 'joint_sn' }"),
+                       "profile: quantity must be one of"));
+  EXPECT_TRUE(contains(error_of(interpreter, "profile{ from = {1, 1}, to = {20, 1}, quantity = 'syy' }"),
+                       "profile: no zone contains the point (10.306"));
+}
+
 // Joint quantities: the counts of the model's contacts, and one contact followed by its
 // gridpoint, equal to what contact_near() says about it.
 TEST(Mechanics, JointHistories) {
