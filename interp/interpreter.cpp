@@ -63,6 +63,7 @@ void start_progress(Context& context, const InterpreterOptions& options) {
   const bool terminal = ::isatty(::fileno(stdout)) != 0;
   context.progress_every = options.progress_seconds > 0.0 ? options.progress_seconds : terminal ? 0.5 : 10.0;
   context.progress = [&context, terminal](const RunProgress& p) {
+    if (context.quiet) return;  // quiet set after the start (tests, embedding) silences it too
     const double rate = p.seconds > 0.0 ? static_cast<double>(p.run_cycles) / p.seconds : 0.0;
     const std::string line = fmt::format(
         "cycle {} ({} of {}), ratio {:.3g}{}, cracks {}, stage {}, {:.0f} cycles/s", p.cycle, p.run_cycles,
