@@ -129,7 +129,7 @@ int main(int argc, char** argv) {
       ->allow_extra_args(false);
   app.add_option("--out", options.out_dir,
                  "directory (made if missing) for the files commands write when given a relative "
-                 "name: plot, chart, history_write and the end-of-run histories");
+                 "name: plot, chart, profile, history_write and the end-of-run histories");
   app.add_option("--progress", options.progress,
                  "seconds between progress lines of a long cycle() or solve{} (cycle, ratio, "
                  "cracks, stage, cycles/s): on a terminal one line rewritten every 0.5 s, "
