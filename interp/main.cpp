@@ -1,8 +1,7 @@
 // The edem program: runs a script, prints the language reference, or says its version.
 //
-//   edem [-q] [--threads N] [--out DIR] [--set KEY=VALUE]... run FILE.lua [ARGS...]
-//                                         (or: edem FILE.lua [ARGS...]; the options may follow
-//                                         `run` too)
+//   edem [-q] [--threads N] [--progress S] [--out DIR] [--set KEY=VALUE]... run FILE.lua [ARGS...]
+//        (or: edem FILE.lua [ARGS...]; the options may follow `run` too)
 //   edem reference [--update README.md]
 //   edem --version | --help
 //
