@@ -3,6 +3,7 @@
 --   local seed = require "edem.seed"
 --   seed.region{ cross_spacing = 16, edge = 4 }   -- builds, zones, loads; returns info()
 --   seed.P.rock, seed.P.joint                      -- the parameter set it uses
+--   seed.elastoplastic{}                           -- Mohr-Coulomb rock, bonded joints (a prepass)
 --
 -- The region: 200 m x 180 m, centred on the origin, the Case 3 joints (60 deg, spacing 16, 12,
 -- 8 m in turn) and a cross set at right angles (-30 deg, `cross_spacing`, default 16 m as in
@@ -55,6 +56,21 @@ function seed.region(t)
   boundary{ side = "bottom", fix = "y" }
   boundary{ side = "top", stress = "insitu" }
   return info()
+end
+
+-- The continuum an elastoplastic pre-analysis sees (prepass{}, and the explicit run it is checked
+-- against): Set P's rock as Mohr-Coulomb in every zone and, unless `bonded = false`, the joints
+-- bonded and stiff (kn = ks = 5e11 Pa/m, cohesion and tension 1e12 Pa), as a UDEC user glues
+-- joints for such a run. Call it after seed.region{}.
+function seed.elastoplastic(t)
+  local P, J = seed.P.rock, seed.P.joint
+  material{ "rock", model = "mohr", density = P.density, young = P.young, poisson = P.poisson,
+            cohesion = P.cohesion, friction = P.friction, tension = P.tension }
+  assign{ material = "rock" }
+  if not (t and t.bonded == false) then
+    joint_material{ "bonded", kn = 5e11, ks = 5e11, friction = J.friction, cohesion = 1e12, tension = 1e12 }
+    jassign{ material = "bonded" }
+  end
 end
 
 return seed

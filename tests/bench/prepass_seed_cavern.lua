@@ -11,15 +11,9 @@ local cavern = require "edem.cavern"
 local edge, steps, solver = tonumber(arg[1]) or 1.5, tonumber(arg[2]) or 5, arg[3] or "umfpack"
 local c = cavern.warhead{}
 local n = seed.region{ regions = c.stages, near = { c.outline }, edge = edge, far = 10, tolerance = 1e-3 }
-local P = seed.P.rock
-material{ "rock", model = "mohr", density = P.density, young = P.young, poisson = P.poisson, cohesion = P.cohesion,
-          friction = P.friction, tension = P.tension }
+seed.elastoplastic{ bonded = os.getenv("JOINTS") == "bonded" }
 local names = {}
 for _, s in ipairs(c.stages) do names[#names + 1] = s.name end
-if os.getenv("JOINTS") == "bonded" then
-  joint_material{ "bonded", kn = 5e11, ks = 5e11, friction = seed.P.joint.friction, cohesion = 1e12, tension = 1e12 }
-  jassign{ material = "bonded" }
-end
 local joints = os.getenv("JOINTS") == "1" or os.getenv("JOINTS") == "bonded"
 local pre = prepass{ stages = names, joints = joints, steps = steps, solver = solver }
 local yielded, iterations = 0, 0

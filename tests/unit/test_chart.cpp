@@ -3,14 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <limits>
-#include <memory>
 #include <set>
 #include <string>
 #include <vector>
@@ -18,7 +15,7 @@
 #include "core/error.hpp"
 #include "io/chart.hpp"
 #include "io/plot.hpp"
-#include "read_png.hpp"
+#include "picture_files.hpp"
 
 namespace edem {
 namespace {
@@ -38,11 +35,6 @@ ChartDef speed_chart(const std::string& file) {
   return def;
 }
 
-std::string read_all(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 std::string message_of(const ChartDef& def) {
   try {
     chart(def);
@@ -53,26 +45,10 @@ std::string message_of(const ChartDef& def) {
 }
 
 using test::Picture;
+using test::read_all;
 using test::read_png;
 
-class ChartTest : public testing::Test {
- protected:
-  void SetUp() override {
-    const auto* info = testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           (std::string("edem_chart_") + info->name() + "_" +
-            std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-  std::string file(const std::string& name) const { return (dir_ / name).string(); }
-  bool dir_is_empty() const { return fs::is_empty(dir_); }
-
-  fs::path dir_;
-};
+class ChartTest : public test::PictureDir {};
 
 TEST_F(ChartTest, WritesPngOfTheRequestedSizeShowingEverySeries) {
   ChartDef def = speed_chart(file("speed.png"));

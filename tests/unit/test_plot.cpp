@@ -3,17 +3,15 @@
 #include <gtest/gtest.h>
 
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <string>
 
 #include "core/error.hpp"
 #include "io/plot.hpp"
 #include "model/model.hpp"
-#include "read_png.hpp"
+#include "picture_files.hpp"
 
 namespace edem {
 namespace {
@@ -43,11 +41,6 @@ Model jointed_box(bool zoned = true, bool glued = true) {
   return model;
 }
 
-std::string read_all(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
 std::string message_of(Model& model, const PlotDef& def) {
   try {
     plot(model, def);
@@ -57,24 +50,9 @@ std::string message_of(Model& model, const PlotDef& def) {
   return "(no error)";
 }
 
-class PlotTest : public testing::Test {
- protected:
-  void SetUp() override {
-    const auto* info = testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           (std::string("edem_plot_") + info->name() + "_" +
-            std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-  std::string file(const std::string& name) const { return (dir_ / name).string(); }
-  bool dir_is_empty() const { return fs::is_empty(dir_); }
+using test::read_all;
 
-  fs::path dir_;
-};
+class PlotTest : public test::PictureDir {};
 
 PlotDef all_layers(const std::string& file) {
   PlotDef def;

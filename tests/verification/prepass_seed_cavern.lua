@@ -26,12 +26,7 @@ for _, s in ipairs(c.stages) do stages[#stages + 1] = s.name end
 
 local function build()
   local n = seed.region{ regions = c.stages, near = { c.outline }, edge = EDGE, far = 10, tolerance = TOLERANCE }
-  local P, J = seed.P.rock, seed.P.joint
-  material{ "rock", model = "mohr", density = P.density, young = P.young, poisson = P.poisson,
-            cohesion = P.cohesion, friction = P.friction, tension = P.tension }
-  assign{ material = "rock" }
-  joint_material{ "bonded", kn = 5e11, ks = 5e11, friction = J.friction, cohesion = 1e12, tension = 1e12 }
-  jassign{ material = "bonded" }
+  seed.elastoplastic{}
   return n
 end
 

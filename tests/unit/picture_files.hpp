@@ -1,15 +1,46 @@
-// A PNG read back with cairo, for tests of the pictures EDEM writes (plot, chart).
+// For tests of the pictures EDEM writes (plot, chart): a directory of its own for each test, a
+// file's bytes, and a PNG read back with cairo.
 #pragma once
 
 #include <cairo/cairo.h>
+#include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <memory>
 #include <string>
 #include <vector>
 
 namespace edem::test {
+
+// Each test writes into a fresh directory of its own (ctest runs tests side by side), removed after.
+class PictureDir : public testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = std::filesystem::temp_directory_path() /
+           (std::string("edem_") + info->test_suite_name() + "_" + info->name() + "_" +
+            std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()));
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::error_code ec;
+    std::filesystem::remove_all(dir_, ec);
+  }
+  std::string file(const std::string& name) const { return (dir_ / name).string(); }
+  bool dir_is_empty() const { return std::filesystem::is_empty(dir_); }
+
+  std::filesystem::path dir_;
+};
+
+inline std::string read_all(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
 
 // Its size and every pixel's colour (0xRRGGBB); empty when the file is not a readable PNG.
 struct Picture {
