@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "core/error.hpp"
+#include "io/temp_file.hpp"
 
 namespace edem {
 namespace {
@@ -22,24 +23,6 @@ struct ContextDeleter {
 };
 using SurfacePtr = std::unique_ptr<cairo_surface_t, SurfaceDeleter>;
 using ContextPtr = std::unique_ptr<cairo_t, ContextDeleter>;
-
-// FILE.tmp, removed unless kept.
-class TempFile {
- public:
-  explicit TempFile(fs::path path) : path_(std::move(path)) {}
-  TempFile(const TempFile&) = delete;
-  TempFile& operator=(const TempFile&) = delete;
-  ~TempFile() {
-    std::error_code ec;
-    if (!kept_) fs::remove(path_, ec);
-  }
-  const fs::path& path() const { return path_; }
-  void keep() { kept_ = true; }
-
- private:
-  fs::path path_;
-  bool kept_ = false;
-};
 
 // Length of the valid UTF-8 sequence at the start of `text` (no overlong forms, surrogates or
 // code points above U+10FFFF), or 0.

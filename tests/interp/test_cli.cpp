@@ -10,56 +10,18 @@
 #include <string>
 #include <utility>
 
+#include "cli_test.hpp"
 #include "interp_test.hpp"
 
 namespace edem {
 namespace {
 
 namespace fs = std::filesystem;
+using test::Cli;
 using test::contains;
+using test::Outcome;
+using test::slurp;
 using test::starts_with;
-
-struct Outcome {
-  int status = -1;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-// Each test works in its own directory: ctest runs them in parallel.
-class Cli : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("edem_cli_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  void write(const std::string& name, const std::string& text) {
-    std::ofstream(dir_ / name) << text;
-  }
-
-  // Runs edem with `args` (shell words) in the test's directory.
-  Outcome edem(const std::string& args) {
-    const std::string command =
-        "cd '" + dir_.string() + "' && '" EDEM_EXE "' " + args + " >stdout.txt 2>stderr.txt";
-    const int raw = std::system(command.c_str());
-    Outcome outcome;
-    outcome.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    outcome.out = slurp(dir_ / "stdout.txt");
-    outcome.err = slurp(dir_ / "stderr.txt");
-    return outcome;
-  }
-
-  fs::path dir_;
-};
 
 TEST_F(Cli, Version) {
   const Outcome r = edem("--version");
