@@ -74,6 +74,8 @@ int run_history(lua_State* L, Context& context, const Args& args) {
     check_name(def.name);
     def.unit = Model::history_unit(quantity);
     def.sample = model.history_sampler(quantity, at);
+    def.quantity = quantity;
+    def.at = at;
   }
   const std::string name = def.name;
   model.add_history(std::move(def));

@@ -108,6 +108,15 @@ void push_gridpoints(lua_State* L, const PrepassResult& r) {
   lua_setfield(L, -2, "gridpoints");
 }
 
+// The table prepass{} returns.
+void push_result(lua_State* L, const PrepassResult& r) {
+  lua_createtable(L, 0, 4);
+  set_field(L, "seconds", r.seconds);
+  push_stages(L, r);
+  push_zones(L, r);
+  push_gridpoints(L, r);
+}
+
 int run_prepass(lua_State* L, Context& context, const Args& args) {
   PrepassDef def;
   if (args.has("stages")) def.stages = args.get<std::vector<RegionRef>>("stages");
@@ -128,11 +137,16 @@ int run_prepass(lua_State* L, Context& context, const Args& args) {
     fmt::print("prepass: {} stage(s), {} Newton iterations, {:.3g} s\n", r.stages.size(), iterations, r.seconds);
     std::fflush(stdout);
   }
-  lua_createtable(L, 0, 4);
-  set_field(L, "seconds", r.seconds);
-  push_stages(L, r);
-  push_zones(L, r);
-  push_gridpoints(L, r);
+  push_result(L, r);
+  return 1;
+}
+
+int run_prepass_result(lua_State* L, Context& context, const Args&) {
+  const auto& last = context.model().last_prepass();
+  if (last)
+    push_result(L, *last);
+  else
+    lua_pushnil(L);
   return 1;
 }
 
@@ -178,6 +192,20 @@ const Command& prepass_command() {
       .run = run_prepass,
       .returns = "a table: stages, zones, gridpoints, seconds",
       .usage = "local pre = prepass{ stages = { \"heading\", \"bench\" }, steps = 10 }",
+  };
+  return command;
+}
+
+const Command& prepass_result_command() {
+  static const Command command{
+      .name = "prepass_result",
+      .help =
+          "The result of the last prepass{} on the present zones, the same table prepass{} returned; kept in "
+          "checkpoints, so a restored script can place crackseed{ auto } from it. nil when there is none.",
+      .form = Form::call,
+      .run = run_prepass_result,
+      .returns = "a table as prepass{} returns, or nil",
+      .usage = "local pre = prepass_result()",
   };
   return command;
 }

@@ -31,6 +31,7 @@ const std::vector<const Command*>& commands() {
       &solve_command(),          //
       &reset_command(),          //
       &prepass_command(),        // cmd_prepass.cpp
+      &prepass_result_command(), //
       &excavate_command(),       // cmd_excavation.cpp
       &fill_command(),           //
       &stage_command(),          //
@@ -56,6 +57,8 @@ const std::vector<const Command*>& commands() {
       &plot_command(),           // cmd_plot.cpp
       &chart_command(),          // cmd_chart.cpp
       &profile_command(),        // cmd_profile.cpp
+      &save_command(),           // cmd_checkpoint.cpp
+      &restore_command(),        //
   };
   return table;
 }

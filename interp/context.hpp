@@ -40,6 +40,8 @@ struct Context {
   Running* running = nullptr;      // the innermost command executing now
   bool histories_written = false;  // history_write() wrote the current model's histories
   std::string out_dir;             // --out: where relative files that commands write go; "": here
+  std::string script_path;         // the script being run, and its text (kept in checkpoints)
+  std::string script_text;
   // The progress line of long runs (every model gets it; none with --quiet), and whether a
   // terminal line is showing that the next output must clear first.
   std::function<void(const RunProgress&)> progress;

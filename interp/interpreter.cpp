@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <lua.hpp>
 #include <unistd.h>
 
@@ -140,6 +142,11 @@ std::optional<std::string> Interpreter::run_file(const std::string& path,
   else
     return fmt::format("edem: cannot open '{}': {}", path, std::strerror(errno));
 
+  {
+    std::ifstream in(path, std::ios::binary);
+    context_.script_text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    context_.script_path = path;
+  }
   // Modules next to the script come after the stdlib and before Lua's defaults.
   const fs::path dir = fs::path(path).parent_path();
   const std::string script_path = search_path({dir.empty() ? std::string(".") : dir.string()});

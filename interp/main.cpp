@@ -3,6 +3,7 @@
 //   edem [-q] [--threads N] [--progress S] [--out DIR] [--set KEY=VALUE]... run FILE.lua [ARGS...]
 //        (or: edem FILE.lua [ARGS...]; the options may follow `run` too)
 //   edem reference [--update README.md]
+//   edem info FILE.h5 [--script]   (what a checkpoint holds)
 //   edem --version | --help
 //
 // Exit status: 0 on success, 1 when the script stops on an error (the message on stderr),
@@ -17,6 +18,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "checkpoint_summary.hpp"
+#include "core/error.hpp"
 #include "interpreter.hpp"
 #include "reference.hpp"
 
@@ -31,6 +34,8 @@ struct Options {
   int threads = 0;  // 0: OpenMP's default
   bool reference = false;
   std::string update;  // README to rewrite with the reference
+  std::string checkpoint;   // edem info FILE
+  bool show_script = false; // edem info --script
   std::vector<std::string> settings;  // --set KEY=VALUE, as given
   std::string out_dir;                // --out DIR
   double progress = -1.0;             // --progress SECONDS; < 0: the default
@@ -110,6 +115,16 @@ int print_reference(const Options& options) {
   return 0;
 }
 
+int print_checkpoint(const Options& options) {
+  try {
+    fmt::print("{}", edem::checkpoint_summary(options.checkpoint, options.show_script));
+    return 0;
+  } catch (const edem::Error& e) {
+    fmt::print(stderr, "edem: {}\n", e.what());
+    return 1;
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -128,7 +143,8 @@ int main(int argc, char** argv) {
       ->allow_extra_args(false);
   app.add_option("--out", options.out_dir,
                  "directory (made if missing) for the files commands write when given a relative "
-                 "name: plot, chart, profile, history_write and the end-of-run histories");
+                 "name: plot, chart, profile, history_write, save and the end-of-run histories "
+                 "(restore reads relative names from there too)");
   app.add_option("--progress", options.progress,
                  "seconds between progress lines of a long cycle() or solve{} (cycle, ratio, "
                  "cracks, stage, cycles/s): on a terminal one line rewritten every 0.5 s, "
@@ -146,6 +162,9 @@ int main(int argc, char** argv) {
   auto* reference = app.add_subcommand("reference", "print the language reference (markdown)");
   reference->add_option("--update", options.update,
                         "rewrite the reference section of this file (README.md) instead");
+  auto* info = app.add_subcommand("info", "summarise a checkpoint written by save()");
+  info->add_option("file", options.checkpoint, "the checkpoint (.h5)")->required();
+  info->add_flag("--script", options.show_script, "also print the script saved in it");
   app.require_subcommand(0, 1);
 
   std::vector<std::pair<std::string, std::string>> settings;
@@ -156,6 +175,7 @@ int main(int argc, char** argv) {
     return app.exit(e) == 0 ? 0 : 2;
   }
   if (options.reference || reference->parsed()) return print_reference(options);
+  if (info->parsed()) return print_checkpoint(options);
   if (options.script.empty()) {
     fmt::print(stderr, "{}", app.help());
     return 2;

@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config
-  libeigen3-dev liblua5.4-dev libhdf5-dev libsundials-dev libsuitesparse-dev
+  libeigen3-dev liblua5.4-dev libhdf5-dev zlib1g-dev libsundials-dev libsuitesparse-dev
   libopenblas0-serial  # replaces reference BLAS under UMFPACK (prepass 1.6x faster); serial beside OpenMP
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libgtest-dev libbenchmark-dev libcairo2-dev libcli11-dev libfmt-dev

@@ -10,6 +10,7 @@ namespace edem {
 void Model::judge(const JudgeDef& def) {
   if (!(def.every >= 1)) fail("every must be >= 1, got {}", def.every);
   mechanics_->judge = def;
+  mechanics_->judge_criterion_missing = false;
 }
 
 int Model::section_count() const { return static_cast<int>(mechanics_->sections.size()); }

@@ -95,6 +95,14 @@ struct ZoneDef {
   RegionRef region;                // zone only the blocks in this region (empty: all)
 };
 
+// What a checkpoint records beside the model: the script that made it, when, and where.
+struct CheckpointNote {
+  std::string script_path = {};   // as given on the command line ("" if none)
+  std::string script = {};        // its text
+  std::string saved_at = {};      // local time, "2026-11-22 14:03:11" (save: now, when empty)
+  std::string edem_version = {};  // of the EDEM that wrote it (set by save)
+};
+
 struct ModelInfo {
   int blocks = 0;
   int zones = 0;

@@ -226,6 +226,9 @@ Mesh Model::zone_all(const Inputs& inputs, const BlockSet& blocks) const {
 }
 
 void Model::check_geometry_open() const {
+  if (restored_)
+    fail("the geometry of a model restored from a checkpoint cannot change; make the change in the script "
+         "that builds the model, before its save()");
   if (cycling_started())
     fail("the geometry cannot change once cycling has begun (cycle {})", solver_info().cycle);
 }
@@ -237,6 +240,7 @@ void Model::commit(Inputs next) {
   blocks_ = std::move(blocks);
   mesh_ = std::move(mesh);
   prepass_yield_.clear();  // it was for the old zones
+  last_prepass_.reset();
   // New zones: the mechanical commands given so far are applied to them again.
   Mechanics& m = *mechanics_;
   m.crack_seeds = inputs_.crack_seeds;

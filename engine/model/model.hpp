@@ -107,6 +107,8 @@ class Model {
   // Per mesh zone, the yield bits (kShearNow | kTensionNow) the last prepass{} found over all its
   // stages; empty before any (for plot{ show = {"prepass"} }).
   const std::vector<std::uint8_t>& prepass_yield() const { return prepass_yield_; }
+  // The last prepass{} result on the present zones (kept, and saved in checkpoints), if any.
+  const std::optional<PrepassResult>& last_prepass() const { return last_prepass_; }
   SolverInfo solver_info() const;
   bool cycling_started() const;
   bool cycling_now() const;  // inside cycle() or solve(), e.g. while a callback runs
@@ -139,6 +141,14 @@ class Model {
   ContactView contact(int id) const;
   int contact_near(Vec2 point) const;  // -1 when there are none
   std::vector<std::string> joint_material_names() const;
+
+  // ---- Checkpoints (model/checkpoint.cpp, io/checkpoint_file.hpp): the whole model in one HDF5
+  // file, so that a restored model cycles on bit for bit as the saved one would have. Lua
+  // functions are not saved: after restore the script registers its callbacks again, and gives
+  // fn histories and a judge criterion again (cycling refuses to start until it has). Saving is
+  // refused while cycling (from a callback). A restored model's geometry is fixed.
+  void save(const std::string& path, const CheckpointNote& note) const;
+  static Model restore(const std::string& path, CheckpointNote* note = nullptr);
 
   // ---- Potential cracks (crack/model_cracks.cpp).
   void judge(const JudgeDef& def);     // how and how often sections are judged
@@ -181,6 +191,10 @@ class Model {
   Mesh mesh_;
   std::unique_ptr<Mechanics> mechanics_;
   std::vector<std::uint8_t> prepass_yield_;
+  std::optional<PrepassResult> last_prepass_;
+  bool restored_ = false;  // made by restore(): its geometry inputs cannot be re-derived
+
+  friend struct CheckpointAccess;  // model/checkpoint.cpp
 };
 
 }  // namespace edem

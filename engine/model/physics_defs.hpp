@@ -305,13 +305,19 @@ struct HistoryDef {
   long every = 10;
   std::function<double()> sample;  // evaluated between cycles
   std::string unit = "-";          // for the CSV header
+  // A built-in quantity (Model::history_sampler) and its point, so that a restored checkpoint
+  // can sample it again; empty for a script's function.
+  std::string quantity;
+  std::optional<Vec2> at;
 };
 
 struct History {
   std::string name;
   long every = 10;
-  std::function<double()> sample;
+  std::function<double()> sample;  // empty in a restored model until the script gives its fn again
   std::string unit;
+  std::string quantity;
+  std::optional<Vec2> at;
   std::vector<long> cycles;
   std::vector<double> values;
 };

@@ -130,6 +130,7 @@ PrepassResult Model::prepass(const PrepassDef& def) {
       if (!(bits & kExcavatedInPrepass))
         prepass_yield_[static_cast<size_t>(result.zones[k])] |= static_cast<std::uint8_t>(bits & (kShearNow | kTensionNow));
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  last_prepass_ = result;
   return result;
 }
 

@@ -298,10 +298,22 @@ int Model::add_history(HistoryDef def) {
   if (def.name.empty()) fail("a history needs a name");
   if (def.every < 1) fail("every must be >= 1, got {}", def.every);
   if (!def.sample) fail("history '{}' has nothing to sample", def.name);
-  for (const History& h : mechanics_->histories)
-    if (h.name == def.name) fail("a history named '{}' exists already", def.name);
-  mechanics_->histories.push_back({def.name, def.every, std::move(def.sample), def.unit, {}, {}});
-  return static_cast<int>(mechanics_->histories.size());
+  auto& histories = mechanics_->histories;
+  for (size_t i = 0; i < histories.size(); ++i) {
+    History& h = histories[i];
+    if (h.name != def.name) continue;
+    // A restored history whose function the script gives again goes on where it stopped.
+    if (h.sample || !h.quantity.empty() || !def.quantity.empty())
+      fail("a history named '{}' exists already", def.name);
+    if (def.every != h.every)
+      fail("history '{}' was recorded every {} cycles before it was saved; give every = {} to go on with it",
+           def.name, h.every, h.every);
+    h.sample = std::move(def.sample);
+    h.unit = def.unit;
+    return static_cast<int>(i + 1);
+  }
+  histories.push_back({def.name, def.every, std::move(def.sample), def.unit, def.quantity, def.at, {}, {}});
+  return static_cast<int>(histories.size());
 }
 
 const std::vector<std::string>& Model::history_point_quantities() {

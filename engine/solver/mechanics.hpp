@@ -187,6 +187,8 @@ struct Mechanics {
   std::vector<char> edge_glued;           // per flat loop edge: ties its blocks now
   std::vector<CrackView> cracks;          // in the order they broke
   JudgeDef judge;
+  // A restored checkpoint's judge{} had a criterion function, which the script must give again.
+  bool judge_criterion_missing = false;
   int stage = 0;                          // excavation stage (0: before any)
   std::vector<int> zone_excavated;        // per mesh zone: the stage that excavated it (0: none)
   ReleaseLoad release;

@@ -324,8 +324,18 @@ void reconnect(Mechanics& m, const Mesh& mesh) {
   m.dirty = true;
 }
 
+void split_among_threads(Mechanics& m) {
+  m.partition = make_partition(m, thread_count(m));
+  m.acc_force.assign(2 * static_cast<size_t>(m.partition.accumulators), 0.0);
+}
+
 void prepare(Mechanics& m, const Mesh& mesh) {
-  if (!m.dirty && m.partition.threads == thread_count(m)) return;
+  if (!m.dirty) {
+    // Only the thread count may have changed (set_threads, a restored checkpoint): the split
+    // follows it, nothing else does, so the bits stay those of any thread count.
+    if (m.partition.threads != thread_count(m)) split_among_threads(m);
+    return;
+  }
   if (mesh.zone_count() == 0) fail("the model has no zones: zone{{...}} the blocks first");
 
   m.active.clear();
@@ -384,8 +394,7 @@ void prepare(Mechanics& m, const Mesh& mesh) {
 
   m.mates.clear();
   if (m.settings.mixed) m.mates = group_zones(m.geometry, m.active, m.position);
-  m.partition = make_partition(m, thread_count(m));  // once the active zones are known
-  m.acc_force.assign(2 * static_cast<size_t>(m.partition.accumulators), 0.0);
+  split_among_threads(m);  // once the active zones are known
   m.info.step = m.step;
   m.dirty = false;
 }

@@ -16,7 +16,7 @@ void reset_for_mesh(Mechanics& m, const Mesh& mesh);
 void reconnect(Mechanics& m, const Mesh& mesh);
 
 // Recomputes the derived arrays (active zones, masses, time step, loads, partition) if
-// m.dirty. Throws edem::Error when the model cannot be cycled (no zones, a zone without
+// m.dirty; else only the partition, if the thread count changed. Throws edem::Error when the model cannot be cycled (no zones, a zone without
 // material, dynamic mode with zero density, a forced step at or above the critical step is
 // allowed but noted by the watchdog).
 void prepare(Mechanics& m, const Mesh& mesh);
@@ -27,5 +27,8 @@ void update_masses(Mechanics& m);
 
 // The number of threads cycling will use.
 int thread_count(const Mechanics& m);
+
+// Splits the active zones and the nodes among thread_count(m) threads (m.partition, m.acc_force).
+void split_among_threads(Mechanics& m);
 
 }  // namespace edem

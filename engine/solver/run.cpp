@@ -166,10 +166,22 @@ void start_adaptive(Mechanics& m) {
   m.growth_checks = 0;
 }
 
+// A restored checkpoint holds no Lua functions: those it had must be given again first.
+void check_functions_given(const Mechanics& m) {
+  for (const History& h : m.histories)
+    if (!h.sample)
+      fail("history '{}' was restored without its function: give history{{ name = \"{}\", fn = ... }} again "
+           "after restore", h.name, h.name);
+  if (m.judge_criterion_missing)
+    fail("the restored judge{{}} had a criterion function: give judge{{ criterion = ... }} again after "
+         "restore (or judge{{}} for the built-in criteria)");
+}
+
 }  // namespace
 
 SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double target_ratio) {
   if (m.cycling_now) fail("cannot cycle from inside a callback or history while cycling");
+  check_functions_given(m);
   if (m.dirty) {
     prepare(m, mesh);
     start_adaptive(m);

@@ -1,0 +1,500 @@
+// Model::save and Model::restore: every member that a later cycle, query or picture reads, by
+// name, in an HDF5 checkpoint (io/checkpoint_file.hpp, io/h5_archive.hpp).
+//
+// The derived solver arrays are stored too, not rebuilt: a rebuild at another moment than the
+// uninterrupted run's would change the time step or the masses, and the run would no longer go
+// on bit for bit. Only the split among threads is made again (the bits do not depend on it).
+// Lua functions (callbacks, fn histories, a judge criterion, the commands replayed after a
+// re-zone) cannot be stored; Model::restore leaves them for the script to give again.
+#include <ctime>
+
+#include "core/error.hpp"
+#include "io/checkpoint_file.hpp"
+#include "io/h5_archive.hpp"
+#include "model/model.hpp"
+#include "solver/mechanics.hpp"
+#include "solver/prepare.hpp"
+
+namespace edem {
+
+// ---- What each stored type holds. One list serves writing and reading; a member left out here
+// is lost in a checkpoint, so each list follows its struct's declaration.
+
+template <class Ar> void fields(Ar& ar, RegionRef& r) { ar("name", r.name); ar("polygon", r.polygon); }
+template <class Ar> void fields(Ar& ar, BlockDef& b) { ar("polygon", b.polygon); }
+template <class Ar> void fields(Ar& ar, JointSetDef& j) {
+  ar("angle", j.angle); ar("spacing", j.spacing); ar("origin", j.origin); ar("trace", j.trace);
+  ar("gap", j.gap); ar("angle_dev", j.angle_dev); ar("spacing_dev", j.spacing_dev);
+  ar("trace_dev", j.trace_dev); ar("gap_dev", j.gap_dev); ar("seed", j.seed); ar("region", j.region);
+}
+template <class Ar> void fields(Ar& ar, CrackDef& c) { ar("from", c.from); ar("to", c.to); }
+template <class Ar> void fields(Ar& ar, CrackSeedDef& c) {
+  ar("region", c.region); ar("angles", c.angles); ar("spacing", c.spacing); ar("origin", c.origin);
+  ar("material", c.material); ar("after", c.after); ar("cuts", c.cuts); ar("outline", c.outline);
+}
+template <class Ar> void fields(Ar& ar, RegionDef& r) { ar("name", r.name); ar("polygon", r.polygon); ar("glued", r.glued); }
+template <class Ar> void fields(Ar& ar, SizeField& f) {
+  ar("edge", f.edge); ar("far", f.far); ar("growth", f.growth); ar("near", f.near);
+}
+template <class Ar> void fields(Ar& ar, EdgeOrigin& e) {
+  ar("kind", e.kind); ar("set", e.set); ar("source", e.source); ar("glued", e.glued);
+}
+template <class Ar> void fields(Ar& ar, MaterialDef& m) {
+  ar("name", m.name); ar("model", m.model); ar("density", m.density); ar("young", m.young);
+  ar("poisson", m.poisson); ar("bulk", m.bulk); ar("shear", m.shear); ar("cohesion", m.cohesion);
+  ar("friction", m.friction); ar("dilation", m.dilation); ar("tension", m.tension);
+}
+template <class Ar> void fields(Ar& ar, MaterialParams& p) {
+  ar("model", p.model); ar("density", p.density); ar("bulk", p.bulk); ar("shear", p.shear); ar("e1", p.e1);
+  ar("e2", p.e2); ar("cohesion", p.cohesion); ar("nphi", p.nphi); ar("npsi", p.npsi); ar("csnp", p.csnp);
+  ar("tension", p.tension);
+}
+template <class Ar> void fields(Ar& ar, SolverSettings& s) {
+  ar("mode", s.mode); ar("damping", s.damping); ar("local_damping", s.local_damping); ar("step", s.step);
+  ar("step_fraction", s.step_fraction); ar("mixed", s.mixed);
+}
+template <class Ar> void fields(Ar& ar, InsituDef& d) {
+  ar("from_surface", d.from_surface); ar("sxx", d.sxx); ar("syy", d.syy); ar("sxy", d.sxy); ar("szz", d.szz);
+  ar("ygrad", d.ygrad); ar("surface", d.surface); ar("density", d.density); ar("k0", d.k0);
+  ar("surcharge", d.surcharge); ar("gravity", d.gravity); ar("region", d.region);
+}
+template <class Ar> void fields(Ar& ar, JointMaterialDef& j) {
+  ar("name", j.name); ar("kn", j.kn); ar("ks", j.ks); ar("friction", j.friction); ar("cohesion", j.cohesion);
+  ar("tension", j.tension); ar("residual_cohesion", j.residual_cohesion);
+  ar("residual_friction", j.residual_friction); ar("dilation", j.dilation); ar("law", j.law);
+  ar("kn_table", j.kn_table);
+}
+template <class Ar> void fields(Ar& ar, JointParams& p) {
+  ar("law", p.law); ar("kn", p.kn); ar("ks", p.ks); ar("tan_friction", p.tan_friction); ar("cohesion", p.cohesion);
+  ar("tension", p.tension); ar("residual_cohesion", p.residual_cohesion);
+  ar("tan_residual_friction", p.tan_residual_friction); ar("tan_dilation", p.tan_dilation);
+  ar("stage_closure", p.stage_closure); ar("stage_kn", p.stage_kn); ar("stage_stress", p.stage_stress);
+  ar("kn_zero", p.kn_zero); ar("kn_max", p.kn_max);
+}
+template <class Ar> void fields(Ar& ar, JassignDef& j) {
+  ar("material", j.material); ar("set", j.set); ar("kind", j.kind); ar("region", j.region);
+}
+template <class Ar> void fields(Ar& ar, Stress& s) { ar("xx", s.xx); ar("yy", s.yy); ar("xy", s.xy); ar("zz", s.zz); }
+template <class Ar> void fields(Ar& ar, BoundarySegment& b) {
+  ar("a", b.a); ar("b", b.b); ar("loaded", b.loaded); ar("at_a", b.at_a); ar("at_b", b.at_b);
+}
+template <class Ar> void fields(Ar& ar, ContactEdge& e) {
+  ar("a", e.a); ar("b", e.b); ar("block", e.block); ar("prev", e.prev); ar("next", e.next);
+  ar("corner_a", e.corner_a); ar("corner_b", e.corner_b); ar("touchable", e.touchable); ar("origin", e.origin);
+  ar("material", e.material);
+}
+template <class Ar> void fields(Ar& ar, ContactBoundary& b) {
+  ar("edges", b.edges); ar("block_first_edge", b.block_first_edge); ar("nodes", b.nodes);
+  ar("edge_first", b.edge_first); ar("node_edges", b.node_edges); ar("block_first", b.block_first);
+  ar("node_blocks", b.node_blocks); ar("reach", b.reach); ar("min_reach", b.min_reach);
+  ar("touchable_blocks", b.touchable_blocks);
+}
+template <class Ar> void fields(Ar& ar, Contact& c) {
+  ar("node", c.node); ar("block", c.block); ar("other", c.other); ar("edge", c.edge); ar("material", c.material);
+  ar("length", c.length); ar("limit", c.limit); ar("t", c.t); ar("share", c.share); ar("closure0", c.closure0);
+  ar("dilation", c.dilation); ar("closure", c.closure); ar("sn", c.sn); ar("fs", c.fs); ar("us", c.us);
+  ar("slip", c.slip); ar("fx", c.fx); ar("fy", c.fy); ar("state", c.state); ar("intact", c.intact);
+}
+template <class Ar> void fields(Ar& ar, ContactSet& s) {
+  ar("list", s.list); ar("gather_first", s.gather_first); ar("gather", s.gather); ar("rows", s.rows);
+  ar("x_detected", s.x_detected); ar("detected", s.detected); ar("as_built", s.as_built);
+  ar("from_insitu", s.from_insitu); ar("late", s.late);
+}
+template <class Ar> void fields(Ar& ar, Section& s) {
+  ar("a", s.a); ar("b", s.b); ar("edge", s.edge); ar("block", s.block); ar("seed", s.seed); ar("point", s.point);
+  ar("angle", s.angle); ar("length", s.length); ar("mode", s.mode); ar("crack", s.crack); ar("fresh", s.fresh);
+}
+template <class Ar> void fields(Ar& ar, RockStrength& r) {
+  ar("cohesion", r.cohesion); ar("friction", r.friction); ar("tension", r.tension);
+}
+template <class Ar> void fields(Ar& ar, SectionFits& f) {
+  ar("first", f.first); ar("zone", f.zone); ar("weight", f.weight); ar("offset", f.offset); ar("body", f.body);
+  ar("strength", f.strength); ar("after", f.after);
+}
+template <class Ar> void fields(Ar& ar, CrackView& c) {
+  ar("id", c.id); ar("section", c.section); ar("position", c.position); ar("angle", c.angle);
+  ar("length", c.length); ar("mode", c.mode); ar("cycle", c.cycle); ar("stage", c.stage); ar("sxx", c.sxx);
+  ar("syy", c.syy); ar("sxy", c.sxy);
+}
+template <class Ar> void fields(Ar& ar, ReleaseLoad& r) {
+  ar("dof", r.dof); ar("force", r.force); ar("cycles", r.cycles); ar("done", r.done); ar("factor", r.factor);
+}
+template <class Ar> void fields(Ar& ar, BoltMaterialDef& b) {
+  ar("name", b.name); ar("young", b.young); ar("area", b.area); ar("density", b.density);
+  ar("yield_tension", b.yield_tension); ar("yield_compression", b.yield_compression);
+  ar("failure_strain", b.failure_strain); ar("bond_stiffness", b.bond_stiffness);
+  ar("bond_strength", b.bond_strength); ar("spacing", b.spacing);
+}
+template <class Ar> void fields(Ar& ar, BoltLaw& b) {
+  ar("ea", b.ea); ar("yield_tension", b.yield_tension); ar("yield_compression", b.yield_compression);
+  ar("failure_strain", b.failure_strain); ar("bond_stiffness", b.bond_stiffness);
+  ar("bond_strength", b.bond_strength); ar("line_mass", b.line_mass);
+}
+template <class Ar> void fields(Ar& ar, BoltNodes& n) {
+  ar("x", n.x); ar("u", n.u); ar("v", n.v); ar("force", n.force); ar("mass", n.mass); ar("tributary", n.tributary);
+  ar("bond_length", n.bond_length); ar("grout_stiffness", n.grout_stiffness);
+  ar("grout_strength", n.grout_strength); ar("axis", n.axis); ar("grout_force", n.grout_force);
+  ar("grout_slip", n.grout_slip); ar("slipping", n.slipping); ar("grout_rel", n.grout_rel);
+}
+template <class Ar> void fields(Ar& ar, BoltSegments& s) {
+  ar("a", s.a); ar("b", s.b); ar("material", s.material); ar("rest", s.rest); ar("elongation", s.elongation);
+  ar("direction", s.direction); ar("force", s.force); ar("state", s.state);
+}
+template <class Ar> void fields(Ar& ar, BoltSet& b) {
+  ar("laws", b.laws); ar("nodes", b.nodes); ar("segments", b.segments); ar("bolt_first_node", b.bolt_first_node);
+  ar("bolt_first_segment", b.bolt_first_segment);
+}
+template <class Ar> void fields(Ar& ar, BoltHosts& h) {
+  ar("zone", h.zone); ar("weight", h.weight); ar("u0", h.u0); ar("host_u", h.host_u); ar("slide", h.slide);
+  ar("dir", h.dir); ar("rate", h.rate); ar("mass", h.mass); ar("slide_start", h.slide_start);
+  ar("r_start", h.r_start); ar("material", h.material); ar("stage", h.stage); ar("removed", h.removed);
+  ar("drive", h.drive); ar("drive_value", h.drive_value); ar("head_force", h.head_force);
+  ar("gather_first", h.gather_first); ar("gather", h.gather); ar("rows", h.rows);
+  ar("critical_step", h.critical_step);
+}
+template <class Ar> void fields(Ar& ar, ZoneGeometry& g) { ar("node", g.node); ar("area", g.area); ar("b", g.b); ar("c", g.c); }
+template <class Ar> void fields(Ar& ar, SolverInfo& i) {
+  ar("cycle", i.cycle); ar("time", i.time); ar("step", i.step); ar("ratio", i.ratio); ar("kinetic", i.kinetic);
+  ar("contacts", i.contacts); ar("late_contacts", i.late_contacts);
+}
+template <class Ar> void fields(Ar& ar, AdaptiveDamping& a) {
+  ar("c", a.c); ar("u_start", a.u_start); ar("r_start", a.r_start); ar("have_r_start", a.have_r_start);
+}
+template <class Ar> void fields(Ar& ar, History& h) {
+  ar("name", h.name); ar("every", h.every); ar("unit", h.unit); ar("quantity", h.quantity); ar("at", h.at);
+  ar("cycles", h.cycles); ar("values", h.values);
+}
+template <class Ar> void fields(Ar& ar, LoadStep& s) {
+  ar("from", s.from); ar("to", s.to); ar("converged", s.converged); ar("residuals", s.residuals);
+}
+template <class Ar> void fields(Ar& ar, StageLog& l) {
+  ar("steps", l.steps); ar("iterations", l.iterations); ar("cutbacks", l.cutbacks); ar("scale", l.scale);
+  ar("seconds", l.seconds);
+}
+template <class Ar> void fields(Ar& ar, PrepassStage& s) { ar("name", s.name); ar("log", s.log); }
+template <class Ar> void fields(Ar& ar, PrepassResult& r) {
+  ar("stages", r.stages); ar("zones", r.zones); ar("state", r.state); ar("centroid", r.centroid);
+  ar("stress", r.stress); ar("gridpoint_u", r.gridpoint_u); ar("seconds", r.seconds);
+}
+
+// Everything in Mechanics but the Lua functions (callbacks, histories' samplers, the judge
+// criterion, the replayed commands), the run's own settings (threads, progress) and the split
+// among threads.
+template <class Ar> void fields(Ar& ar, Mechanics& m) {
+  ar("materials", m.materials); ar("params", m.params); ar("settings", m.settings); ar("gravity", m.gravity);
+  ar("gravity_set", m.gravity_set); ar("insitu", m.insitu); ar("insitu_regions", m.insitu_regions);
+  ar("joint_materials", m.joint_materials); ar("joint_params", m.joint_params); ar("jassign", m.jassign);
+  ar("jassign_regions", m.jassign_regions); ar("jassign_material", m.jassign_material);
+  // state per zone, per node
+  ar("zone_material", m.zone_material); ar("stress", m.stress); ar("mean_stress_ref", m.mean_stress_ref);
+  ar("zone_state", m.zone_state); ar("node_count", m.node_count); ar("gp_node", m.gp_node);
+  ar("position", m.position); ar("u", m.u); ar("v", m.v); ar("origin", m.origin); ar("force", m.force);
+  ar("load", m.load); ar("fix", m.fix); ar("node_block", m.node_block); ar("boundary", m.boundary);
+  // contacts, potential cracks, excavation, bolts
+  ar("faces", m.faces); ar("contacts", m.contacts); ar("crack_seeds", m.crack_seeds); ar("sections", m.sections);
+  ar("edge_section", m.edge_section); ar("edge_glued", m.edge_glued); ar("cracks", m.cracks);
+  ar("judge_every", m.judge.every); ar("stage", m.stage); ar("zone_excavated", m.zone_excavated);
+  ar("release", m.release); ar("bolt_materials", m.bolt_materials); ar("bolts", m.bolts);
+  ar("bolt_hosts", m.bolt_hosts); ar("fresh_cracks", m.fresh_cracks);
+  // derived by prepare()
+  ar("fits", m.fits); ar("keep_fits", m.keep_fits); ar("dirty", m.dirty); ar("geometry", m.geometry);
+  ar("active", m.active); ar("block_live", m.block_live); ar("mates", m.mates); ar("mass", m.mass);
+  ar("zone_rows", m.zone_rows); ar("real_mass", m.real_mass); ar("stiffness", m.stiffness); ar("weight", m.weight);
+  ar("step", m.step); ar("critical_step", m.critical_step); ar("applied_magnitude", m.applied_magnitude);
+  // solver progress
+  ar("info", m.info); ar("cycles_run", m.cycles_run); ar("adaptive", m.adaptive); ar("last_kinetic", m.last_kinetic);
+  ar("growth_checks", m.growth_checks); ar("growth_span", m.growth_span); ar("next_handle", m.next_handle);
+  ar("histories", m.histories);
+}
+
+// ---- The blocks and the mesh hold vectors of vectors per block: stored flat, with offsets, so
+// that a model of thousands of blocks is a few datasets and not thousands of groups.
+
+struct FlatBlocks {
+  std::vector<std::vector<Vec2>> ring_points;  // per ring: each block's outer ring, then its holes
+  std::vector<std::vector<EdgeOrigin>> ring_edges;
+  std::vector<int> first_ring;  // per block + 1
+  std::vector<double> area;
+  std::vector<Vec2> centroid;
+  std::vector<int> base;
+  std::vector<std::vector<int>> regions;
+  int dropped_cuts = 0, joint_edges = 0, snapped_vertices = 0;
+};
+template <class Ar> void fields(Ar& ar, FlatBlocks& b) {
+  ar("ring_points", b.ring_points); ar("ring_edges", b.ring_edges); ar("first_ring", b.first_ring);
+  ar("area", b.area); ar("centroid", b.centroid); ar("base", b.base); ar("regions", b.regions);
+  ar("dropped_cuts", b.dropped_cuts); ar("joint_edges", b.joint_edges); ar("snapped_vertices", b.snapped_vertices);
+}
+
+struct FlatMesh {
+  std::vector<Vec2> gp_position;
+  std::vector<int> gp_block;
+  std::vector<std::array<int, 3>> zone_gp;
+  std::vector<int> zone_block, block_first_gp, block_first_zone;
+  std::vector<std::vector<int>> loop_gridpoints;  // per loop: each block's outer loop, then its holes
+  std::vector<std::vector<EdgeOrigin>> loop_edges;
+  std::vector<int> first_loop;  // per block + 1
+};
+template <class Ar> void fields(Ar& ar, FlatMesh& m) {
+  ar("gp_position", m.gp_position); ar("gp_block", m.gp_block); ar("zone_gp", m.zone_gp);
+  ar("zone_block", m.zone_block); ar("block_first_gp", m.block_first_gp); ar("block_first_zone", m.block_first_zone);
+  ar("loop_gridpoints", m.loop_gridpoints); ar("loop_edges", m.loop_edges); ar("first_loop", m.first_loop);
+}
+
+namespace {
+
+FlatBlocks flatten(const BlockSet& set) {
+  FlatBlocks f;
+  f.first_ring.push_back(0);
+  const auto add_ring = [&](const Ring& r) {
+    f.ring_points.push_back(r.points);
+    f.ring_edges.push_back(r.edges);
+  };
+  for (const Block& b : set.blocks) {
+    add_ring(b.outer);
+    for (const Ring& hole : b.holes) add_ring(hole);
+    f.first_ring.push_back(static_cast<int>(f.ring_points.size()));
+    f.area.push_back(b.area);
+    f.centroid.push_back(b.centroid);
+    f.base.push_back(b.base);
+    f.regions.push_back(b.regions);
+  }
+  f.dropped_cuts = set.dropped_cuts;
+  f.joint_edges = set.joint_edges;
+  f.snapped_vertices = set.snapped_vertices;
+  return f;
+}
+
+// Throws unless `first` is a list of offsets, from 0 and not decreasing, that ends at `total`.
+void check_offsets(const std::vector<int>& first, size_t total, std::string_view what) {
+  bool ok = !first.empty() && first.front() == 0 && first.back() == static_cast<int>(total);
+  for (size_t i = 1; ok && i < first.size(); ++i) ok = first[i] >= first[i - 1];
+  if (!ok) fail("its {} offsets do not match", what);
+}
+
+BlockSet unflatten(FlatBlocks f) {
+  const size_t n = f.area.size();
+  if (f.first_ring.size() != n + 1 || f.centroid.size() != n || f.base.size() != n || f.regions.size() != n ||
+      f.ring_edges.size() != f.ring_points.size())
+    fail("its blocks are inconsistent");
+  check_offsets(f.first_ring, f.ring_points.size(), "block ring");
+  BlockSet set;
+  set.blocks.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    Block& b = set.blocks[i];
+    const auto ring = [&](size_t r) { return Ring{std::move(f.ring_points[r]), std::move(f.ring_edges[r])}; };
+    const auto begin = static_cast<size_t>(f.first_ring[i]), end = static_cast<size_t>(f.first_ring[i + 1]);
+    if (begin == end) fail("block {} has no outline", i + 1);
+    b.outer = ring(begin);
+    for (size_t r = begin + 1; r < end; ++r) b.holes.push_back(ring(r));
+    b.area = f.area[i];
+    b.centroid = f.centroid[i];
+    b.base = f.base[i];
+    b.regions = std::move(f.regions[i]);
+  }
+  set.dropped_cuts = f.dropped_cuts;
+  set.joint_edges = f.joint_edges;
+  set.snapped_vertices = f.snapped_vertices;
+  return set;
+}
+
+FlatMesh flatten(const Mesh& mesh) {
+  FlatMesh f{mesh.gp_position, mesh.gp_block,       mesh.zone_gp, mesh.zone_block, mesh.block_first_gp,
+             mesh.block_first_zone, {}, {}, {0}};
+  for (const auto& loops : mesh.block_boundary) {
+    for (const BoundaryLoop& loop : loops) {
+      f.loop_gridpoints.push_back(loop.gridpoints);
+      f.loop_edges.push_back(loop.edges);
+    }
+    f.first_loop.push_back(static_cast<int>(f.loop_gridpoints.size()));
+  }
+  return f;
+}
+
+Mesh unflatten(FlatMesh f) {
+  Mesh mesh;
+  const size_t gps = f.gp_position.size(), zones = f.zone_gp.size(), blocks = f.first_loop.size() - 1;
+  if (f.first_loop.empty() || f.gp_block.size() != gps || f.zone_block.size() != zones ||
+      f.block_first_gp.size() != blocks + 1 || f.block_first_zone.size() != blocks + 1 ||
+      f.loop_edges.size() != f.loop_gridpoints.size())
+    fail("its mesh is inconsistent");
+  check_offsets(f.first_loop, f.loop_gridpoints.size(), "boundary loop");
+  check_offsets(f.block_first_gp, gps, "block gridpoint");
+  check_offsets(f.block_first_zone, zones, "block zone");
+  const auto gridpoint = [&](int g) { return g >= 0 && static_cast<size_t>(g) < gps; };
+  for (const auto& corners : f.zone_gp)
+    for (int g : corners)
+      if (!gridpoint(g)) fail("a zone of its mesh has a gridpoint out of range ({})", g);
+  for (const auto& loop : f.loop_gridpoints)
+    for (int g : loop)
+      if (!gridpoint(g)) fail("a boundary loop of its mesh has a gridpoint out of range ({})", g);
+  mesh.block_boundary.resize(blocks);
+  for (size_t b = 0; b < blocks; ++b)
+    for (auto l = static_cast<size_t>(f.first_loop[b]); l < static_cast<size_t>(f.first_loop[b + 1]); ++l)
+      mesh.block_boundary[b].push_back({std::move(f.loop_gridpoints[l]), std::move(f.loop_edges[l])});
+  mesh.gp_position = std::move(f.gp_position);
+  mesh.gp_block = std::move(f.gp_block);
+  mesh.zone_gp = std::move(f.zone_gp);
+  mesh.zone_block = std::move(f.zone_block);
+  mesh.block_first_gp = std::move(f.block_first_gp);
+  mesh.block_first_zone = std::move(f.block_first_zone);
+  return mesh;
+}
+
+// Array lengths that must agree with the mesh and the node count; a file that passed its checksum
+// only fails these if an EDEM of the same schema wrote something else, but then the message is
+// better than a crash.
+void check_sizes(const Mechanics& m, const Mesh& mesh) {
+  const size_t zones = static_cast<size_t>(mesh.zone_count()), nodes = static_cast<size_t>(m.node_count);
+  const auto expect = [](size_t got, size_t want, std::string_view what) {
+    if (got != want) fail("its {} has {} entries where {} belong", what, got, want);
+  };
+  expect(m.zone_material.size(), zones, "zone_material");
+  expect(m.stress.size(), zones, "stress");
+  expect(m.zone_state.size(), zones, "zone_state");
+  expect(m.zone_excavated.size(), zones, "zone_excavated");
+  expect(m.gp_node.size(), static_cast<size_t>(mesh.gp_count()), "gp_node");
+  for (const auto* v : {&m.position, &m.u, &m.v, &m.origin, &m.force, &m.load}) expect(v->size(), 2 * nodes, "node vector");
+  expect(m.fix.size(), nodes, "fix");
+  expect(m.node_block.size(), nodes, "node_block");
+  if (!m.dirty) {
+    expect(m.geometry.size(), zones, "geometry");
+    expect(m.mass.size(), nodes, "mass");
+  }
+  expect(m.params.size(), m.materials.size(), "params");
+  expect(m.joint_params.size(), m.joint_materials.size(), "joint_params");
+  for (int material : m.zone_material)
+    if (material >= static_cast<int>(m.materials.size())) fail("a zone's material {} is out of range", material);
+  for (int node : m.gp_node)
+    if (node < 0 || static_cast<size_t>(node) >= nodes) fail("a gridpoint's node {} is out of range", node);
+  for (const Contact& c : m.contacts.list)
+    if (c.node < 0 || static_cast<size_t>(c.node) >= nodes || c.edge < 0 ||
+        static_cast<size_t>(c.edge) >= m.faces.edges.size())
+      fail("a contact refers to node {} or edge {}, out of range", c.node, c.edge);
+}
+
+std::string local_time_now() {
+  const std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  localtime_r(&now, &tm);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%d %H:%M:%S", &tm);
+  return text;
+}
+
+}  // namespace
+
+// Model's private members, for save and restore only.
+struct CheckpointAccess {
+  template <class Ar>
+  static void inputs(Ar& ar, Model& model) {
+    auto& in = model.inputs_;
+    ar("bases", in.bases);
+    ar("joint_sets", in.joint_sets);
+    ar("cracks", in.cracks);
+    ar("crack_seeds", in.crack_seeds);
+    ar("regions", in.regions);
+    std::int64_t requests = static_cast<std::int64_t>(in.zone_requests.size());
+    ar("zone_requests", requests);
+    if (requests < 0 || requests > 1'000'000) fail("it has {} zone requests", requests);
+    in.zone_requests.resize(static_cast<size_t>(requests));
+    for (size_t i = 0; i < in.zone_requests.size(); ++i) {
+      auto& r = in.zone_requests[i];
+      ar(fmt::format("zone_request_{}_size", i).c_str(), r.size);
+      ar(fmt::format("zone_request_{}_region", i).c_str(), r.region);
+      ar(fmt::format("zone_request_{}_polygon", i).c_str(), r.polygon);
+    }
+  }
+
+  static void save(const Model& model, const std::string& path, const CheckpointNote& note) {
+    const Mechanics& m = *model.mechanics_;
+    if (m.cycling_now)
+      fail("cannot save while cycling (from a callback): save between cycle() or solve{{}} calls");
+    write_checkpoint(path, [&](hid_t file) {
+      h5::Writer root(file, "");
+      auto& mutable_model = const_cast<Model&>(model);  // the archive's field lists take non-const refs
+      {
+        const h5::Handle group = root.group("note");
+        h5::Writer w(group.get(), "/note");
+        CheckpointNote n = note;
+        n.edem_version = EDEM_VERSION;
+        if (n.saved_at.empty()) n.saved_at = local_time_now();
+        w("script_path", n.script_path);
+        w("script", n.script);
+        w("saved_at", n.saved_at);
+        w("edem_version", n.edem_version);
+        w("callbacks", static_cast<std::int64_t>(m.callbacks.size()));
+        w("judge_criterion", static_cast<bool>(m.judge.criterion) || m.judge_criterion_missing);
+      }
+      const h5::Handle group = root.group("model");
+      h5::Writer w(group.get(), "/model");
+      w("title", model.def_.title);
+      w("tolerance", model.def_.tolerance);
+      {
+        const h5::Handle g = w.group("inputs");
+        h5::Writer in(g.get(), w.at("inputs"));
+        inputs(in, mutable_model);
+      }
+      w("blocks", flatten(model.blocks_));
+      w("mesh", flatten(model.mesh_));
+      w("mechanics", *model.mechanics_);
+      w("prepass_yield", model.prepass_yield_);
+      w("last_prepass", model.last_prepass_);
+    });
+  }
+
+  static Model restore(const std::string& path, CheckpointNote* note_out) {
+    CheckpointFile file = open_checkpoint(path);
+    const h5::QuietErrors quiet;
+    try {
+      h5::Reader root(file.file.get(), "");
+      CheckpointNote note;
+      bool judge_criterion = false;
+      {
+        const h5::Handle group = root.group("note");
+        h5::Reader r(group.get(), "/note");
+        r("script_path", note.script_path);
+        r("script", note.script);
+        r("saved_at", note.saved_at);
+        r("edem_version", note.edem_version);
+        r("judge_criterion", judge_criterion);
+      }
+      const h5::Handle group = root.group("model");
+      h5::Reader r(group.get(), "/model");
+      ModelDef def;
+      r("title", def.title);
+      r("tolerance", def.tolerance);
+      Model model(def);
+      {
+        const h5::Handle g = r.group("inputs");
+        h5::Reader in(g.get(), r.at("inputs"));
+        inputs(in, model);
+      }
+      FlatBlocks blocks;
+      r("blocks", blocks);
+      model.blocks_ = unflatten(std::move(blocks));
+      FlatMesh mesh;
+      r("mesh", mesh);
+      model.mesh_ = unflatten(std::move(mesh));
+      Mechanics& m = *model.mechanics_;
+      r("mechanics", m);
+      check_sizes(m, model.mesh_);
+      r("prepass_yield", model.prepass_yield_);
+      r("last_prepass", model.last_prepass_);
+      m.judge_criterion_missing = judge_criterion;
+      for (History& h : m.histories)
+        if (!h.quantity.empty()) h.sample = model.history_sampler(h.quantity, h.at);
+      model.restored_ = true;
+      if (note_out != nullptr) *note_out = std::move(note);
+      return model;
+    } catch (const Error& e) {
+      fail("cannot restore '{}': {}", path, e.what());
+    }
+  }
+};
+
+void Model::save(const std::string& path, const CheckpointNote& note) const { CheckpointAccess::save(*this, path, note); }
+
+Model Model::restore(const std::string& path, CheckpointNote* note) { return CheckpointAccess::restore(path, note); }
+
+}  // namespace edem

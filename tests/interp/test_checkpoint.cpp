@@ -1,0 +1,219 @@
+// save() and restore(): a run saved mid-stage and restored goes on bit for bit as the run that
+// was never stopped (cracks breaking, bolts loaded, contacts slipping, an excavation's release
+// half done), on any thread count; what a restored model needs from the script is asked for.
+#include <lua.hpp>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "interp_test.hpp"
+
+namespace edem::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A jointed block with potential cracks in weak rock, under gravity and in-situ stress, a
+// rectangular opening excavated with its load released over 300 cycles, a bolt across its roof,
+// a fn history, a built-in history and a callback.
+const char* kScene = R"(
+  model{ title = "checkpoint scene" }
+  block{ x = {-6, 6}, y = {-6, 6} }
+  jset{ angle = 35, spacing = 2.5, origin = {0.3, 0.2} }
+  region{ name = "hole", polygon = {{-1.5, -1}, {1.5, -1}, {1.5, 1}, {-1.5, 1}} }
+  crackseed{ angles = {110, 20}, spacing = 1.2, region = {{-4, -4}, {4, -4}, {4, 4}, {-4, 4}},
+             material = "intact" }
+  zone{ edge = 0.4, far = 1.2, near = { "hole" } }
+  material{ "rock", density = 2500, young = 2e9, poisson = 0.25 }
+  material{ "intact", model = "mohr", density = 2500, young = 2e9, poisson = 0.25, cohesion = 0.15e6,
+            friction = 30, tension = 0.05e6 }
+  assign{ material = "rock" }
+  joint_material{ "joint", kn = 2e10, ks = 2e9, friction = 25 }
+  jassign{ material = "joint" }
+  gravity{ 0, -9.81 }
+  insitu{ surface = 40, density = 2500, k0 = 0.5 }
+  boundary{ side = "left", fix = "x" }
+  boundary{ side = "right", fix = "x" }
+  boundary{ side = "bottom", fix = "y" }
+  boundary{ side = "top", stress = "insitu" }
+  bolt_material{ "rebar", young = 200e9, area = 4.9e-4, yield_tension = 0.156e6, failure_strain = 0.035,
+                 bond_stiffness = 50e6, bond_strength = 0.2e6, spacing = 1.5 }
+  solve{ ratio = 1e-5, max_cycles = 3000 }
+  excavate{ region = "hole", release = 300 }
+  bolt{ from = {0.2, 1}, to = {0.6, 4}, segments = 12, material = "rebar" }
+)";
+
+// What the script registers in Lua, again after a restore.
+const char* kFunctions = R"(
+  calls = 0
+  every(50, function() calls = calls + 1 end)
+  history{ name = "roof", every = 10, fn = function() return gp_near(0, 1).uy end }
+)";
+
+// Every number a later cycle or a reader could see, in hexadecimal floating point.
+const char* kDump = R"(
+  local out = {}
+  local function put(...) for _, v in ipairs({...}) do out[#out + 1] = type(v) == "number" and ("%a"):format(v) or tostring(v) end end
+  local i = info()
+  put(i.cycle, i.time, i.step, i.ratio, i.contacts, i.cracks, i.stage, calls)
+  for g in gridpoints() do put(g.ux, g.uy, g.vx, g.vy, g.fx, g.fy) end
+  for z in zones() do put(z.sxx, z.syy, z.sxy, z.szz, z.state) end
+  for c in contacts() do put(c.fn, c.fs, c.un, c.us, c.slip, c.state, c.material) end
+  for b in bolts() do
+    put(b.head_force)
+    for _, s in ipairs(b.segments) do put(s.force, s.strain, s.slip, s.plastic_slip, s.state) end
+  end
+  for c in cracks() do put(c.section, c.mode, c.cycle, c.stage, c.sxx) end
+  dump = table.concat(out, " ")
+  slipping, broken = 0, 0
+  for c in contacts() do if c.slip > 0 then slipping = slipping + 1 end end
+  for _ in cracks() do broken = broken + 1 end
+)";
+
+class Checkpoint : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("edem_checkpoint_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string file(const std::string& name) const { return (dir_ / name).string(); }
+
+  static std::string global(Interpreter& interpreter, const char* name) {
+    lua_getglobal(interpreter.state(), name);
+    std::string value = lua_isstring(interpreter.state(), -1) ? lua_tostring(interpreter.state(), -1) : "";
+    lua_pop(interpreter.state(), 1);
+    return value;
+  }
+
+  static std::string slurp(const std::string& path) {
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+
+  fs::path dir_;
+};
+
+TEST_F(Checkpoint, RestoredRunGoesOnBitForBitMidStage) {
+  // Uninterrupted: 150 cycles into the release, then 450 more.
+  Interpreter whole({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+  expect_runs(whole, std::string(kScene) + kFunctions + "cycle(150)\ncycle(450)\n" + kDump +
+                         "history_write('" + file("whole.csv") + "')");
+  const std::string expected = global(whole, "dump");
+  ASSERT_FALSE(expected.empty());
+  // The scene must exercise what a checkpoint has to carry.
+  EXPECT_GT(std::stoi(global(whole, "slipping")), 0) << "no contact has slipped";
+  EXPECT_GT(std::stoi(global(whole, "broken")), 0) << "no crack broke";
+
+  // Saved after 150 cycles (mid-release: cracks, bolt, contacts live), restored in a fresh
+  // interpreter, on 1 and on 2 threads.
+  {
+    Interpreter first({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+    expect_runs(first, std::string(kScene) + kFunctions + "cycle(150)\nsave('" + file("mid.h5") + "')\n" +
+                           "assert(info().cracks > 0 and stage() == 1)");
+  }
+  for (int threads : {1, 2}) {
+    Interpreter second({.quiet = true, .threads = threads, .stdlib_dirs = {}});
+    const std::string csv = file("restored" + std::to_string(threads) + ".csv");
+    expect_runs(second, "restore('" + file("mid.h5") + "')\n" + kFunctions +
+                            "calls = 3  -- the callback ran at cycles 50, 100, 150 before the save\n" +
+                            "cycle(450)\n" + kDump + "history_write('" + csv + "')");
+    EXPECT_TRUE(global(second, "dump") == expected) << "restored on " << threads << " thread(s) differs";
+    EXPECT_EQ(slurp(csv), slurp(file("whole.csv"))) << "histories differ";
+  }
+}
+
+TEST_F(Checkpoint, SavedFileNamesItsScriptAndVersion) {
+  Interpreter interpreter({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+  const std::string script = file("make.lua");
+  std::ofstream(script) << "block{ x = {0, 1}, y = {0, 1} }\nzone{ edge = 0.5 }\nsave('" << file("a.h5") << "')\n";
+  EXPECT_FALSE(interpreter.run_file(script, {}));
+  const std::string head = slurp(file("a.h5")).substr(0, 40);
+  EXPECT_TRUE(starts_with(head, "EDEM checkpoint\nschema 1\nversion " EDEM_VERSION "\n"));
+  Interpreter reader({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+  expect_runs(reader, "restore('" + file("a.h5") + "')\nassert(info().zones > 0)");
+}
+
+TEST_F(Checkpoint, FnHistoryMustBeGivenAgain) {
+  Interpreter first({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+  expect_runs(first, std::string(kScene) + kFunctions + "cycle(20)\nsave('" + file("h.h5") + "')");
+  Interpreter second({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+  const std::string error = error_of(second, "restore('" + file("h.h5") + "')\ncycle(10)");
+  EXPECT_TRUE(contains(error, "test.lua:2: cycle: history 'roof' was restored without its function"));
+  Interpreter third({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+  EXPECT_TRUE(contains(error_of(third, "restore('" + file("h.h5") + "')\n"
+                                       "history{ name = 'roof', every = 5, fn = function() return 0 end }"),
+                       "was recorded every 10 cycles before it was saved; give every = 10"));
+}
+
+TEST_F(Checkpoint, JudgeCriterionMustBeGivenAgain) {
+  Interpreter first({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+  expect_runs(first, std::string(kScene) + "judge{ every = 10, criterion = function(s) return nil end }\n"
+                                           "cycle(20)\nsave('" + file("j.h5") + "')");
+  Interpreter second({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+  EXPECT_TRUE(contains(error_of(second, "restore('" + file("j.h5") + "')\ncycle(10)"),
+                       "the restored judge{} had a criterion function"));
+  Interpreter third({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+  expect_runs(third, "restore('" + file("j.h5") + "')\njudge{ every = 10 }\ncycle(10)");
+}
+
+TEST_F(Checkpoint, RestoredGeometryIsFixed) {
+  Interpreter first({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+  expect_runs(first, "block{ x = {0, 1}, y = {0, 1} }\nzone{ edge = 0.5 }\nsave('" + file("g.h5") + "')");
+  Interpreter second({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+  EXPECT_TRUE(contains(error_of(second, "restore('" + file("g.h5") + "')\njset{ angle = 10, spacing = 0.3 }"),
+                       "test.lua:2: jset: the geometry of a model restored from a checkpoint cannot change"));
+}
+
+TEST_F(Checkpoint, NotFromACallbackWhileCycling) {
+  Interpreter interpreter({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+  const std::string error = error_of(interpreter, std::string(kScene) + "every(5, function() save('" +
+                                                      file("c.h5") + "') end)\ncycle(10)");
+  EXPECT_TRUE(contains(error, "cannot save while cycling (from a callback)"));
+  EXPECT_FALSE(fs::exists(file("c.h5")));
+}
+
+TEST_F(Checkpoint, BadFileKeepsTheCurrentModel) {
+  Interpreter interpreter({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+  std::ofstream(file("junk.h5")) << "not a checkpoint";
+  expect_runs(interpreter, "block{ x = {0, 1}, y = {0, 1} }\nzone{ edge = 0.5 }\n"
+                           "local ok, e = pcall(restore, '" + file("junk.h5") + "')\n"
+                           "assert(not ok and e:find('is not an EDEM checkpoint'), e)\n"
+                           "assert(info().zones > 0)");
+}
+
+TEST_F(Checkpoint, PrepassResultIsKept) {
+  Interpreter first({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+  const char* model = R"(
+    block{ x = {-10, 10}, y = {-10, 10} }
+    region{ name = "hole", polygon = {{-2, -2}, {2, -2}, {2, 2}, {-2, 2}} }
+    zone{ edge = 1 }
+    material{ "rock", model = "mohr", density = 2500, young = 1e9, poisson = 0.25, cohesion = 0.2e6, friction = 30 }
+    assign{ material = "rock" }
+    gravity{ 0, -9.81 }
+    insitu{ surface = 60, density = 2500, k0 = 0.8 }
+    boundary{ side = "left", fix = "x" } boundary{ side = "right", fix = "x" }
+    boundary{ side = "bottom", fix = "y" } boundary{ side = "top", stress = "insitu" }
+  )";
+  const char* summary = R"(
+    local p = prepass_result()
+    local yielded = 0
+    for _, z in ipairs(p.zones) do if z.state ~= "none" then yielded = yielded + 1 end end
+    summary = ("%d %d %a %a"):format(#p.zones, yielded, p.zones[7].s1, p.gridpoints[5].ux)
+  )";
+  expect_runs(first, std::string(model) + "assert(prepass_result() == nil)\nprepass{ stages = {'hole'}, steps = 2 }\n" +
+                         summary + "save('" + file("p.h5") + "')");
+  Interpreter second({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+  expect_runs(second, "restore('" + file("p.h5") + "')\n" + summary);
+  EXPECT_FALSE(global(first, "summary").empty());
+  EXPECT_EQ(global(second, "summary"), global(first, "summary"));
+}
+
+}  // namespace
+}  // namespace edem::test
