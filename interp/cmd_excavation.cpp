@@ -26,6 +26,7 @@ int run_excavate(lua_State*, Context& context, const Args& args) {
     def.region = region_of(args, "excavate(\"stage1\")");
   }
   def.release = static_cast<long>(args.integer("release"));
+  if (def.block < 0) context.write_stage_frames();  // the state the stage reached (not for mucking out a block)
   context.model().excavate(def);
   return 0;
 }

@@ -23,6 +23,7 @@ int run_plot(lua_State*, Context& context, const Args& args) {
     if (w.size() != 4) fail("window must be four numbers {{x0, x1, y0, y1}}, got {}", w.size());
     def.window = std::array<double, 4>{w[0], w[1], w[2], w[3]};
   }
+  if (args.has("colour")) def.colour = args.string("colour");
   plot(context.model(), def);
   return 0;
 }
@@ -49,9 +50,17 @@ const Command& plot_command() {
                "edges), blocks (outlines), joints (edges by origin: joint sets coloured, crack{} "
                "traces red, region outlines, potential cracks dotted, the boundary thick), cracks "
                "(crack{} traces, and the new cracks as their sections: tension red, shear blue, "
-               "counted in the legend)",
+               "counted in the legend), stress (principal stress ticks at zone centroids, length in "
+               "proportion to magnitude: compression dark, tension red), bolts (segments where they are "
+               "now: tension red, compression blue, out of service grey dashed; largest forces in the "
+               "legend)",
                {},
                plot_layers},
+              {"colour", Type::string, "", any_value, kOptional,
+               "fill the zones in place by a quantity in 8 equal bands listed in the legend, as a contour "
+               "plot: zone stresses sxx, syy, sxy, szz, s1, s3 [Pa] or displacements ux, uy, u (magnitude) "
+               "[m], the mean of each zone's corners",
+               "none", plot_colours},
               {"size", Type::int_pair, "px", between(kPlotMinSize, kPlotMaxSize), "{1200, 900}",
                "width and height (points for SVG and PDF)"},
               {"window", Type::numbers, "m", any_value, kOptional,
@@ -60,7 +69,7 @@ const Command& plot_command() {
                "the whole model"},
           },
       .run = run_plot,
-      .usage = R"(plot{ file = "model.png", show = {"blocks", "joints"} } or plot{ file = "wall.png", show = {"zones", "cracks"}, window = {-20, -4, -20, -2} })",
+      .usage = R"(plot{ file = "model.png", show = {"blocks", "joints"} } or plot{ file = "wall.png", show = {"zones", "cracks"}, window = {-20, -4, -20, -2} } or plot{ file = "uy.png", show = {"blocks", "bolts"}, colour = "uy" })",
   };
   return command;
 }

@@ -57,6 +57,7 @@ const std::vector<const Command*>& commands() {
       &plot_command(),           // cmd_plot.cpp
       &chart_command(),          // cmd_chart.cpp
       &profile_command(),        // cmd_profile.cpp
+      &output_command(),         // cmd_output.cpp
       &save_command(),           // cmd_checkpoint.cpp
       &restore_command(),        //
   };

@@ -52,6 +52,7 @@ const Command& contact_near_command();
 const Command& plot_command();
 const Command& chart_command();
 const Command& profile_command();
+const Command& output_command();
 const Command& save_command();
 const Command& restore_command();
 const Command& prepass_result_command();

@@ -9,11 +9,13 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "io/field_output.hpp"
 #include "model/model.hpp"
 
 struct lua_State;
@@ -42,6 +44,15 @@ struct Context {
   std::string out_dir;             // --out: where relative files that commands write go; "": here
   std::string script_path;         // the script being run, and its text (kept in checkpoints)
   std::string script_text;
+  std::map<std::string, FieldSeries> outputs;  // output{} series by XDMF file
+  std::vector<std::string> stage_outputs;      // output{ at = "stage" }: their files
+
+  // Appends a frame of the current model to the series of `file` (output{}).
+  void write_frame(const std::string& file) { outputs.at(file).append(model().field_frame()); }
+  // A frame to each output{ at = "stage" } series (before an excavation, at the end).
+  void write_stage_frames() {
+    for (const std::string& file : stage_outputs) write_frame(file);
+  }
   // The progress line of long runs (every model gets it; none with --quiet), and whether a
   // terminal line is showing that the next output must clear first.
   std::function<void(const RunProgress&)> progress;

@@ -15,6 +15,7 @@
 #include "adaptor.hpp"
 #include "commands.hpp"
 #include "context.hpp"
+#include "core/error.hpp"
 #include "errors.hpp"
 
 namespace edem {
@@ -172,7 +173,18 @@ std::optional<std::string> Interpreter::run_file(const std::string& path,
     for (const auto& a : args) lua_pushstring(L_, a.c_str());
   }
   if (auto error = run_loaded(status, path, static_cast<int>(args.size()))) return error;
+  if (auto error = write_stage_frames_at_end(path)) return error;
   return write_pending_histories(path);
+}
+
+std::optional<std::string> Interpreter::write_stage_frames_at_end(const std::string& path) {
+  if (context_.stage_outputs.empty() || !context_.current) return std::nullopt;
+  try {
+    context_.write_stage_frames();
+  } catch (const Error& e) {
+    return fmt::format("{}: output at the end of the script: {}", path, e.what());
+  }
+  return std::nullopt;
 }
 
 std::optional<std::string> Interpreter::write_pending_histories(const std::string& path) {

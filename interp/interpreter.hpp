@@ -57,6 +57,8 @@ class Interpreter {
 
  private:
   std::optional<std::string> run_loaded(int status, const std::string& path, int nargs);
+  // The last frame of each output{ at = "stage" } series once the script has run.
+  std::optional<std::string> write_stage_frames_at_end(const std::string& path);
   std::optional<std::string> write_pending_histories(const std::string& path);
 
   std::vector<std::pair<std::string, std::string>> settings_;  // InterpreterOptions::settings

@@ -9,6 +9,7 @@ packages=(
   libopenblas0-serial  # replaces reference BLAS under UMFPACK (prepass 1.6x faster); serial beside OpenMP
   libcgal-dev libgmp-dev libmpfr-dev libboost-dev
   libgtest-dev libbenchmark-dev libcairo2-dev libcli11-dev libfmt-dev
+  python3-h5py  # tests read the field output back with it (an independent reader)
 )
 
 missing=()

@@ -21,8 +21,14 @@
 namespace edem {
 
 const std::vector<std::string>& plot_layers() {
-  static const std::vector<std::string> layers{"regions", "plastic", "prepass", "zones", "blocks", "joints", "cracks"};
+  static const std::vector<std::string> layers{"regions", "plastic", "prepass", "zones",  "blocks",
+                                               "joints",  "cracks",  "stress",  "bolts"};
   return layers;
+}
+
+const std::vector<std::string>& plot_colours() {
+  static const std::vector<std::string> colours{"sxx", "syy", "sxy", "szz", "s1", "s3", "ux", "uy", "u"};
+  return colours;
 }
 
 namespace {
@@ -31,7 +37,8 @@ namespace {
 // What to draw, checked before anything is computed or written.
 
 struct Layers {
-  bool regions = false, plastic = false, prepass = false, zones = false, blocks = false, joints = false, cracks = false;
+  bool regions = false, plastic = false, prepass = false, zones = false, blocks = false, joints = false, cracks = false,
+       stress = false, bolts = false;
 };
 
 std::string join(const std::vector<std::string>& items) {
@@ -43,8 +50,10 @@ std::string join(const std::vector<std::string>& items) {
 Layers layers_of(const std::vector<std::string>& show) {
   const auto& valid = plot_layers();
   // The flag of each name in plot_layers(), in the same order.
-  constexpr std::array kFlags{&Layers::regions, &Layers::plastic, &Layers::prepass, &Layers::zones,
-                              &Layers::blocks,  &Layers::joints,  &Layers::cracks};
+  constexpr std::array kFlags{&Layers::regions, &Layers::plastic, &Layers::prepass,
+                              &Layers::zones,   &Layers::blocks,  &Layers::joints,
+                              &Layers::cracks,  &Layers::stress,  &Layers::bolts};
+  static_assert(kFlags.size() == 9, "one flag per name in plot_layers()");
   if (show.empty()) fail("show lists no layers: use any of {}", join(valid));
   Layers layers;
   for (const auto& name : show) {
@@ -281,6 +290,11 @@ std::string label_of(CrackMode mode, std::size_t count) {
   return fmt::format("{} crack ({})", mode == CrackMode::shear ? "shear" : "tension", count);
 }
 
+const Pen kCompressionTick{rgb(0x202020), 0.9, {}, false};
+const Pen kTensionTick{rgb(0xd62728), 0.9, {}, false};
+const Pen kBoltTension{rgb(0xb2182b), 2.2, {}};
+const Pen kBoltCompression{rgb(0x2166ac), 2.2, {}};
+const Pen kBoltOut{rgb(0x9a9a9a), 1.6, {3.0, 2.0}};
 const Pen kBlockPen{rgb(0x404040), 0.8, {}, false};
 const Pen kZonePen{rgb(0xc4c4c4), 0.45, {}, false};
 
@@ -631,6 +645,15 @@ struct Scene {
   // plastic and prepass layers: zones that yielded in shear only, tension only, both.
   std::array<std::vector<Polygon>, 3> yielded;
   std::string yield_source;              // "plastic" or "prepass", for the legend
+  // colour: zones in place by band, lowest first, and each band's legend line
+  std::vector<std::vector<Polygon>> bands;
+  std::vector<std::string> band_labels;
+  // stress layer: ticks in compression and in tension, and the largest magnitude of each [Pa]
+  Polylines compression_ticks, tension_ticks;
+  double max_compression = 0.0, max_tension = 0.0;
+  // bolts layer: segments in tension, compression, out of service; largest force of each [N/m]
+  Polylines bolts_tension, bolts_compression, bolts_out;
+  double max_bolt_tension = 0.0, max_bolt_compression = 0.0;
 };
 
 // Zones that yielded, as the seed's Figure 8 shows them: in the model's own run (plastic: now
@@ -651,7 +674,118 @@ void gather_yielded(const Model& model, bool from_prepass, Scene& scene) {
   }
 }
 
-Scene gather(Model& model, const Layers& layers) {
+// Zones in place: not excavated, with a material.
+bool in_place(const ZoneView& zone) { return zone.excavated == 0 && !zone.material.empty(); }
+
+Polygon triangle_of(const Mesh& mesh, int zone) {
+  Polygon triangle;
+  for (int gp : mesh.zone_gp[static_cast<std::size_t>(zone)]) triangle.push_back(mesh.gp_position[static_cast<std::size_t>(gp)]);
+  return triangle;
+}
+
+// An SI value in engineering notation, short: "-1.25 MPa", "3.4 mm".
+std::string with_unit(double value, const char* unit) {
+  const bool metres = std::string_view(unit) == "m";
+  const double a = std::abs(value);
+  if (metres) {
+    if (a != 0 && a < 0.01) return fmt::format("{:.3g} mm", value * 1e3);
+    return fmt::format("{:.3g} m", value);
+  }
+  if (a >= 1e6) return fmt::format("{:.3g} MPa", value * 1e-6);
+  if (a >= 1e3) return fmt::format("{:.3g} kPa", value * 1e-3);
+  return fmt::format("{:.3g} Pa", value);
+}
+
+constexpr int kBands = 8;
+// Viridis at 8 steps: dark blue (lowest) to yellow (highest), readable in grey.
+constexpr std::array<Rgb, kBands> kBandColours{rgb(0x440154), rgb(0x46327e), rgb(0x365c8d), rgb(0x277f8e),
+                                               rgb(0x1fa187), rgb(0x4ac16d), rgb(0xa0da39), rgb(0xfde725)};
+
+// Zones in place by `quantity` in kBands equal bands from its least to its largest value.
+void gather_bands(const Model& model, const std::string& quantity, Scene& scene) {
+  const Mesh& mesh = model.mesh();
+  if (mesh.zone_count() == 0) fail("colour = \"{}\": the model has no zones (zone{{}} first)", quantity);
+  const bool displacement = quantity == "ux" || quantity == "uy" || quantity == "u";
+  std::vector<int> zones;
+  std::vector<double> values;
+  for (int z = 0; z < mesh.zone_count(); ++z) {
+    const ZoneView zone = model.zone_view(z);
+    if (!in_place(zone)) continue;
+    double value = 0.0;
+    if (displacement) {
+      for (int gp : mesh.zone_gp[static_cast<std::size_t>(z)]) {
+        const Vec2 u = model.gridpoint(gp).u;
+        value += (quantity == "ux" ? u.x : quantity == "uy" ? u.y : norm(u)) / 3.0;
+      }
+    } else {
+      const std::map<std::string_view, double> stress{{"sxx", zone.sxx}, {"syy", zone.syy}, {"sxy", zone.sxy},
+                                                      {"szz", zone.szz}, {"s1", zone.s1},   {"s3", zone.s3}};
+      value = stress.at(quantity);
+    }
+    zones.push_back(z);
+    values.push_back(value);
+  }
+  if (zones.empty()) fail("colour = \"{}\": no zone is in place to colour", quantity);
+  const auto [low, high] = std::minmax_element(values.begin(), values.end());
+  const double lo = *low, width = (*high - *low) / kBands;
+  const char* unit = displacement ? "m" : "Pa";
+  scene.bands.assign(kBands, {});
+  for (std::size_t i = 0; i < zones.size(); ++i) {
+    const int band = width > 0 ? std::clamp(static_cast<int>((values[i] - lo) / width), 0, kBands - 1) : 0;
+    scene.bands[static_cast<std::size_t>(band)].push_back(triangle_of(mesh, zones[i]));
+  }
+  for (int b = kBands - 1; b >= 0; --b)  // the legend reads from the highest down
+    scene.band_labels.push_back(width > 0 ? fmt::format("{}: {} to {}", quantity, with_unit(lo + b * width, unit),
+                                                        with_unit(lo + (b + 1) * width, unit))
+                                          : fmt::format("{}: {}", quantity, with_unit(lo, unit)));
+}
+
+// Principal stress ticks through each zone's centroid, of length in proportion to magnitude: the
+// largest magnitude anywhere spans about the zone's width.
+void gather_stress(const Model& model, Scene& scene) {
+  const Mesh& mesh = model.mesh();
+  std::vector<ZoneView> zones;
+  double largest = 0.0;
+  for (int z = 0; z < mesh.zone_count(); ++z) {
+    ZoneView zone = model.zone_view(z);
+    if (!in_place(zone)) continue;
+    largest = std::max({largest, std::abs(zone.s1), std::abs(zone.s3)});
+    zones.push_back(std::move(zone));
+  }
+  if (zones.empty() || !(largest > 0)) return;
+  for (const ZoneView& zone : zones) {
+    const double tick = 1.6 * std::sqrt(mesh.zone_area(zone.id));  // about its zone across, graded as the mesh
+    // The direction of the algebraically larger principal stress s3; s1 is at right angles to it.
+    const double angle = 0.5 * std::atan2(2.0 * zone.sxy, zone.sxx - zone.syy);
+    const Vec2 d3{std::cos(angle), std::sin(angle)}, d1{-d3.y, d3.x};
+    for (const auto& [value, dir] : {std::pair{zone.s1, d1}, std::pair{zone.s3, d3}}) {
+      const double half = 0.5 * tick * std::abs(value) / largest;
+      if (!(half > 0)) continue;
+      Polylines& lines = value < 0 ? scene.compression_ticks : scene.tension_ticks;
+      lines.begin(zone.centroid - half * dir);
+      lines.add(zone.centroid + half * dir);
+      (value < 0 ? scene.max_compression : scene.max_tension) =
+          std::max(value < 0 ? scene.max_compression : scene.max_tension, std::abs(value));
+    }
+  }
+}
+
+void gather_bolts(const Model& model, Scene& scene) {
+  for (int b = 0; b < model.bolt_count(); ++b) {
+    const BoltView bolt = model.bolt(b);
+    for (const BoltSegmentView& seg : bolt.segments) {
+      const bool out = bolt.removed || seg.state == "broken";
+      Polylines& lines = out ? scene.bolts_out : seg.force >= 0 ? scene.bolts_tension : scene.bolts_compression;
+      lines.begin(seg.a);
+      lines.add(seg.b);
+      if (out) continue;
+      double& largest = seg.force >= 0 ? scene.max_bolt_tension : scene.max_bolt_compression;
+      largest = std::max(largest, std::abs(seg.force));
+    }
+  }
+}
+
+Scene gather(Model& model, const Layers& layers, const std::string& colour) {
   Scene scene;
   scene.title = model.title();
   const BlockSet& set = model.blocks();
@@ -680,6 +814,9 @@ Scene gather(Model& model, const Layers& layers) {
   if (joints || cracks) scene.edges = collect_edges(set, styled);
   if (cracks) scene.new_cracks = new_cracks_of(model);
   if (layers.plastic || layers.prepass) gather_yielded(model, layers.prepass, scene);
+  if (!colour.empty()) gather_bands(model, colour, scene);
+  if (layers.stress) gather_stress(model, scene);
+  if (layers.bolts) gather_bolts(model, scene);
   return scene;
 }
 
@@ -701,6 +838,19 @@ std::vector<LegendEntry> legend_of(const Scene& scene) {
   for (const EdgeClass& cls : classes) entries.push_back({label_of(cls), pen_of(cls)});
   for (const CrackBatch& batch : scene.new_cracks)
     entries.push_back({label_of(batch.mode, batch.lines.starts.size()), crack_pen(batch.mode)});
+  for (std::size_t i = 0; i < scene.band_labels.size(); ++i)
+    entries.push_back({scene.band_labels[i], {kBandColours[scene.band_labels.size() - 1 - i], 6.0, {}}});
+  if (!scene.compression_ticks.empty())
+    entries.push_back({"principal stress, compression (largest " + with_unit(scene.max_compression, "Pa") + ")",
+                       kCompressionTick});
+  if (!scene.tension_ticks.empty())
+    entries.push_back({"principal stress, tension (largest " + with_unit(scene.max_tension, "Pa") + ")", kTensionTick});
+  if (!scene.bolts_tension.empty())
+    entries.push_back({fmt::format("bolt in tension (largest {:.3g} kN/m)", scene.max_bolt_tension * 1e-3), kBoltTension});
+  if (!scene.bolts_compression.empty())
+    entries.push_back({fmt::format("bolt in compression (largest {:.3g} kN/m)", scene.max_bolt_compression * 1e-3),
+                       kBoltCompression});
+  if (!scene.bolts_out.empty()) entries.push_back({"bolt broken or out of service", kBoltOut});
   constexpr std::array<const char*, 3> kYieldNames{"shear", "tension", "shear and tension"};
   for (std::size_t i = 0; i < scene.yielded.size(); ++i)
     if (!scene.yielded[i].empty())
@@ -708,6 +858,28 @@ std::vector<LegendEntry> legend_of(const Scene& scene) {
                                      scene.yielded[i].size() == 1 ? "" : "s"),
                          {kYieldColours[i], 6.0, {}}});
   return entries;
+}
+
+void draw_bands(Painter& p, const Scene& scene, const View& view) {
+  cairo_t* cr = p.cr();
+  for (std::size_t b = 0; b < scene.bands.size(); ++b) {
+    const Rgb c = kBandColours[b];
+    cairo_set_source_rgb(cr, c.r, c.g, c.b);
+    cairo_new_path(cr);
+    for (const Polygon& triangle : scene.bands[b]) {
+      const Vec2 first = view(triangle[0]);
+      cairo_move_to(cr, first.x, first.y);
+      for (std::size_t i = 1; i < triangle.size(); ++i) {
+        const Vec2 d = view(triangle[i]);
+        cairo_line_to(cr, d.x, d.y);
+      }
+      cairo_close_path(cr);
+    }
+    // Filled and outlined in its own colour, so that no hairline gaps show between zones.
+    cairo_set_line_width(cr, 0.5 * p.s());
+    cairo_fill_preserve(cr);
+    cairo_stroke(cr);
+  }
 }
 
 void draw_yielded(Painter& p, const Scene& scene, const View& view) {
@@ -785,12 +957,18 @@ void render(cairo_t* cr, const Scene& scene, const Layers& layers, double width,
                   lay.model.h + 2 * pad);
   cairo_clip(cr);
   if (layers.regions) draw_regions(p, scene, view);
+  draw_bands(p, scene, view);
   draw_yielded(p, scene, view);
   p.hairlines(scene.zone_lines, view, kZonePen);
   p.stroke(scene.block_lines, view, kBlockPen);
   for (const auto& [cls, lines] : scene.edges) p.stroke(lines, view, pen_of(cls));
   for (const CrackBatch& batch : scene.new_cracks)
     p.stroke(batch.lines, view, crack_pen(batch.mode));
+  p.stroke(scene.compression_ticks, view, kCompressionTick);
+  p.stroke(scene.tension_ticks, view, kTensionTick);
+  p.stroke(scene.bolts_out, view, kBoltOut);
+  p.stroke(scene.bolts_compression, view, kBoltCompression);
+  p.stroke(scene.bolts_tension, view, kBoltTension);
   if (layers.regions) draw_region_labels(p, scene, view);
   cairo_restore(cr);
 
@@ -827,7 +1005,12 @@ void plot(Model& model, const PlotDef& def) {
   check_size(def.width, def.height);
   check_window(def.window);
   check_writable(def.file);
-  Scene scene = gather(model, layers);
+  if (!def.colour.empty()) {
+    const auto& valid = plot_colours();
+    if (std::find(valid.begin(), valid.end(), def.colour) == valid.end())
+      fail("unknown colour quantity '{}'{}: quantities are {}", def.colour, did_you_mean(def.colour, valid), join(valid));
+  }
+  Scene scene = gather(model, layers, def.colour);
   if (def.window) scene.box = Box{(*def.window)[0], (*def.window)[1], (*def.window)[2], (*def.window)[3]};
   write_picture(def.file, def.width, def.height, scene.title,
                 [&](cairo_t* cr) { render(cr, scene, layers, def.width, def.height); });

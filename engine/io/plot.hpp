@@ -21,6 +21,9 @@ struct PlotDef {
   int height = 900;                                   // [px]
   // {x0, x1, y0, y1} [m]: draw only this part of the model, fitted to the canvas; none: all of it
   std::optional<std::array<double, 4>> window;
+  // Zones in place filled by this quantity in 8 equal bands, with the bands in the legend (as
+  // UDEC's contour plots): any of plot_colours(); "": none.
+  std::string colour;
 };
 
 // The layer names `show` accepts, in drawing order:
@@ -34,7 +37,15 @@ struct PlotDef {
 //            (dashed when glued), potential cracks dotted, the boundary thick
 //   cracks   the crack{} edges, red, and the new cracks (broken potential-crack sections),
 //            each its section, thick: tension red, shear blue, with counts in the legend
+//   stress   principal stress ticks at zone centroids, along each principal direction, length
+//            in proportion to its magnitude: compression dark, tension red
+//   bolts    bolt segments where they are now, coloured by axial force: tension red,
+//            compression blue, out of service grey; the largest forces in the legend
 const std::vector<std::string>& plot_layers();
+
+// The quantities `colour` accepts: zone stresses sxx, syy, sxy, szz, s1, s3 [Pa]; gridpoint
+// displacements ux, uy and their magnitude u [m], averaged over each zone's corners.
+const std::vector<std::string>& plot_colours();
 
 // Smallest and largest accepted width or height [px].
 inline constexpr int kPlotMinSize = 64;

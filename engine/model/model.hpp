@@ -24,6 +24,7 @@
 namespace edem {
 
 struct Mechanics;  // solver/mechanics.hpp: materials, loads and the solver's arrays
+struct FieldFrame;  // io/field_output.hpp
 
 class Model {
  public:
@@ -149,6 +150,9 @@ class Model {
   // refused while cycling (from a callback). A restored model's geometry is fixed.
   void save(const std::string& path, const CheckpointNote& note) const;
   static Model restore(const std::string& path, CheckpointNote* note = nullptr);
+
+  // The model as it stands, for field output (model/field_frame.cpp, io/field_output.hpp).
+  FieldFrame field_frame() const;
 
   // ---- Potential cracks (crack/model_cracks.cpp).
   void judge(const JudgeDef& def);     // how and how often sections are judged

@@ -1,0 +1,84 @@
+// Model::field_frame: the model as it stands, for field output (io/field_output.hpp).
+#include <cmath>
+
+#include "io/field_output.hpp"
+#include "model/model.hpp"
+#include "solver/mechanics.hpp"
+
+namespace edem {
+namespace {
+
+size_t at(int i) { return static_cast<size_t>(i); }
+
+}  // namespace
+
+FieldFrame Model::field_frame() const {
+  const Mechanics& m = *mechanics_;
+  FieldFrame f;
+  f.time = m.info.time;
+  f.cycle = m.info.cycle;
+  f.stage = m.stage;
+  if (mesh_.zone_count() == 0 || m.gp_node.empty()) return f;
+  // Where each solver node is now, and each mesh gridpoint with it.
+  const auto node_at = [&](int node) {
+    const size_t n = at(node);
+    return Vec2{m.origin[2 * n] + m.u[2 * n], m.origin[2 * n + 1] + m.u[2 * n + 1]};
+  };
+  for (size_t g = 0; g < m.gp_node.size(); ++g) {
+    const size_t n = at(m.gp_node[g]);
+    f.points.push_back(node_at(m.gp_node[g]));
+    f.displacement.push_back({m.u[2 * n], m.u[2 * n + 1], 0.0});
+    f.velocity.push_back({m.v[2 * n], m.v[2 * n + 1], 0.0});
+  }
+  for (int z = 0; z < mesh_.zone_count(); ++z) {
+    const int material = m.zone_material[at(z)];
+    const bool null = material < 0 || m.params[at(material)].model == MaterialModel::null;
+    if (null || m.zone_excavated[at(z)] > 0) continue;
+    const Stress& s = m.stress[at(z)];
+    const Principal p = in_plane_principal(s);
+    f.triangles.push_back(mesh_.zone_gp[at(z)]);
+    f.sxx.push_back(s.xx), f.syy.push_back(s.yy), f.sxy.push_back(s.xy), f.szz.push_back(s.zz);
+    f.s1.push_back(p.s1), f.s3.push_back(p.s3);
+    f.state.push_back(m.zone_state[at(z)]);
+    f.material.push_back(material);
+    f.block.push_back(mesh_.zone_block[at(z)]);
+  }
+  // Contacts: a line along the edge's direction through the gridpoint, of the contact's length.
+  for (int id = 0; id < contact_count(); ++id) {
+    const Contact& c = m.contacts.list[at(id)];
+    const ContactEdge& e = m.faces.edges[at(c.edge)];
+    const ContactView view = contact(id);
+    const Vec2 d = node_at(e.b) - node_at(e.a);
+    const Vec2 half = (0.5 * view.length / norm(d)) * d;
+    f.contact_points.push_back(view.position - half);
+    f.contact_points.push_back(view.position + half);
+    f.fn.push_back(view.fn), f.fs.push_back(view.fs), f.un.push_back(view.un), f.us.push_back(view.us);
+    f.slip.push_back(view.slip);
+    f.contact_state.push_back(static_cast<int>(c.state));
+    f.contact_kind.push_back(view.kind == "crack" ? 1 : 0);
+  }
+  // Cracks: from the section's end A to its end B, on side 0, where they are now.
+  for (const CrackView& c : m.cracks) {
+    const Section& s = m.sections[at(c.section)];
+    f.crack_points.push_back(node_at(m.gp_node[at(s.a[0])]));
+    f.crack_points.push_back(node_at(m.gp_node[at(s.b[0])]));
+    f.crack_mode.push_back(static_cast<int>(c.mode));
+    f.crack_cycle.push_back(static_cast<double>(c.cycle));
+    f.crack_stage.push_back(c.stage);
+  }
+  const BoltSet& bolts = m.bolts;
+  for (int b = 0; b < bolts.bolts(); ++b) {
+    const bool removed = m.bolt_hosts.removed[at(b)] != 0;
+    for (int s = bolts.bolt_first_segment[at(b)]; s < bolts.bolt_first_segment[at(b) + 1]; ++s) {
+      const size_t i = at(s), a = at(bolts.segments.a[i]), e = at(bolts.segments.b[i]);
+      f.bolt_points.push_back(bolts.nodes.x[a] + bolts.nodes.u[a]);
+      f.bolt_points.push_back(bolts.nodes.x[e] + bolts.nodes.u[e]);
+      f.bolt_force.push_back(bolts.segments.force[i]);
+      f.bolt_strain.push_back(bolts.segments.elongation[i] / bolts.segments.rest[i]);
+      f.bolt_state.push_back(removed ? 3 : static_cast<int>(bolts.segments.state[i]));
+    }
+  }
+  return f;
+}
+
+}  // namespace edem

@@ -1,0 +1,76 @@
+"""Reads EDEM's field output back with h5py (Debian's python3-h5py) and the XDMF index with the
+standard library, independently of EDEM: every DataItem the index names exists with the stated
+dimensions, and the last frame holds the counts and values the script wrote to expected.txt.
+Usage: read_back.py DIR (where scene.lua ran). Exit status 0 when all holds."""
+import sys
+import xml.etree.ElementTree as ET
+
+import h5py
+import numpy as np
+
+directory = sys.argv[1]
+expected = {}
+for line in open(f"{directory}/expected.txt"):
+    key, value = line.split(" = ")
+    expected[key] = float(value)
+failures = []
+
+
+def check(what, measured, wanted, tolerance=0.0):
+    error = abs(measured - wanted)
+    ok = error <= tolerance * max(abs(wanted), 1.0)
+    print(f"{what}: measured {measured!r}, expected {wanted!r}{'' if ok else '  FAIL'}")
+    if not ok:
+        failures.append(what)
+
+
+def read_index(name):
+    root = ET.parse(f"{directory}/{name}").getroot()
+    series = root.find("Domain/Grid")
+    assert series.get("CollectionType") == "Temporal"
+    frames = series.findall("Grid")
+    with h5py.File(f"{directory}/{name.rsplit('.', 1)[0]}.h5", "r") as data:
+        for frame in frames:
+            for item in frame.iter("DataItem"):
+                file, path = item.text.split(":")
+                dims = tuple(int(d) for d in item.get("Dimensions").split())
+                if data[path].shape != dims:
+                    failures.append(f"{name} {path}: shape {data[path].shape}, index says {dims}")
+    return frames
+
+
+frames = read_index("stages.xdmf")
+check("stage frames", len(frames), expected["frames"])
+check("frames every 400 cycles", len(read_index("every.xdmf")), expected["every_frames"])
+last = frames[-1]
+grids = {g.get("Name"): g for g in last.findall("Grid")}
+check("last frame time", float(last.find("Time").get("Value")), expected["cycle"])
+with h5py.File(f"{directory}/stages.h5", "r") as data:
+    f = data[f"/frames/{len(frames)}"]
+    check("cycle", int(f.attrs["cycle"]), expected["cycle"])
+    check("stage", int(f.attrs["stage"]), expected["stage"])
+    zones = f["zones"]
+    check("zone cells", zones["cells"].shape[0], expected["zones"])
+    check("zone cell attribute in the index", int(grids["zones"].find("Topology").get("NumberOfElements")),
+          expected["zones"])
+    check("points", zones["points"].shape[0], expected["gridpoints"])
+    check("first zone in place: sxx [Pa]", zones["sxx"][0], expected["zone_first_sxx"])
+    check("last zone in place: s1 [Pa]", zones["s1"][-1], expected["zone_last_s1"])
+    check("first gridpoint: uy [m]", zones["displacement"][0, 1], expected["gridpoint_first_uy"])
+    check("first gridpoint: y now [m]", zones["points"][0, 1], expected["gridpoint_first_y"])
+    cells = zones["cells"][:]
+    check("zone corners in range", int(cells.min() >= 0 and cells.max() < zones["points"].shape[0]), 1)
+    contacts = f["contacts"]
+    check("contact cells", contacts["cells"].shape[0], expected["contacts"])
+    check("contact fn sum [N/m]", float(np.sum(contacts["fn"][:])), expected["contact_fn_sum"], 1e-12)
+    check("slipping contacts", int(np.sum(contacts["state"][:] == 2)), expected["contact_slipping"])
+    cracks = f["cracks"]
+    check("crack cells", cracks["cells"].shape[0], expected["cracks"])
+    check("shear cracks", int(np.sum(cracks["mode"][:] == 1)), expected["cracks_shear"])
+    bolts = f["bolts"]
+    check("bolt segment cells", bolts["cells"].shape[0], expected["bolt_segments"])
+    check("largest bolt force [N/m]", float(np.max(bolts["force"][:])), expected["bolt_force_max"])
+if failures:
+    print("FAILED:", "; ".join(failures))
+    sys.exit(1)
+print("field output read back: all checks hold")
