@@ -56,6 +56,11 @@ bool has_attribute(hid_t group, const char* name) { return H5Aexists(group, name
 
 bool has_link(hid_t group, const char* name) { return H5Lexists(group, name, H5P_DEFAULT) > 0; }
 
+std::size_t link_count(hid_t group) {
+  H5G_info_t info;
+  return H5Gget_info(group, &info) < 0 ? 0 : static_cast<std::size_t>(info.nlinks);
+}
+
 Handle open_group(hid_t parent, const char* name, const std::string& path) {
   if (!has_link(parent, name)) fail("it has no {}", path);
   Handle group(H5Gopen2(parent, name, H5P_DEFAULT), H5Gclose);
@@ -103,7 +108,13 @@ std::vector<hsize_t> dataset_extent(hid_t group, const char* name, int rank, hsi
   std::vector<hsize_t> dims(static_cast<size_t>(rank));
   H5Sget_simple_extent_dims(space.get(), dims.data(), nullptr);
   if (rank == 2 && dims[1] != columns) fail("{} has {} columns, not {}", path, dims[1], columns);
-  if (dims[0] > (hsize_t{1} << 40)) fail("{} is impossibly long ({})", path, dims[0]);
+  // No more elements than the file holds bytes for: an altered extent is refused before memory
+  // is reserved for it.
+  const Handle stored(H5Dget_type(set.get()), H5Tclose);
+  const hsize_t element = H5Tget_size(stored.get()), bytes = H5Dget_storage_size(set.get());
+  const hsize_t count = dims[0] * (rank == 2 ? dims[1] : 1);
+  if (dims[0] > (hsize_t{1} << 40) || (count > 0 && (element == 0 || count > bytes / element)))
+    fail("{} claims {} elements, more than the file holds", path, dims[0]);
   return dims;
 }
 

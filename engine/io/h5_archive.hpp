@@ -195,6 +195,7 @@ Handle create_group(hid_t parent, const char* name, const std::string& path);
 Handle open_group(hid_t parent, const char* name, const std::string& path);
 bool has_attribute(hid_t group, const char* name);
 bool has_link(hid_t group, const char* name);
+std::size_t link_count(hid_t group);  // objects in a group
 // Reads an attribute of `count` elements (1 for a scalar) into `data`, as `type`.
 void read_attribute(hid_t group, const char* name, hid_t type, size_t count, void* data, const std::string& path);
 std::string read_string_attribute(hid_t group, const char* name, const std::string& path);
@@ -356,7 +357,8 @@ class Reader {
       Reader inner(sub.get(), at(name));
       std::int64_t count = 0;
       inner("count", count);
-      if (count < 0 || count > (std::int64_t{1} << 40)) fail("{}: impossible count {}", at(name), count);
+      if (count < 0 || static_cast<std::size_t>(count) > link_count(sub.get()))
+        fail("{}: a count of {} where it holds {}", at(name), count, link_count(sub.get()));
       v.assign(static_cast<size_t>(count), E{});
       for (size_t i = 0; i < v.size(); ++i) inner(std::to_string(i).c_str(), v[i]);
     }
@@ -372,11 +374,10 @@ class Reader {
     inner("data", data);
     if (first.empty() || first.front() != 0 || first.back() != static_cast<std::int64_t>(data.size()))
       fail("{}: its offsets do not match its data", at(name));
-    v.assign(first.size() - 1, {});
-    for (size_t i = 0; i + 1 < first.size(); ++i) {
+    for (size_t i = 0; i + 1 < first.size(); ++i)
       if (first[i + 1] < first[i]) fail("{}: its offsets decrease", at(name));
-      v[i].assign(data.begin() + first[i], data.begin() + first[i + 1]);
-    }
+    v.assign(first.size() - 1, {});
+    for (size_t i = 0; i + 1 < first.size(); ++i) v[i].assign(data.begin() + first[i], data.begin() + first[i + 1]);
   }
 
   hid_t group_;

@@ -7,6 +7,7 @@
 // Lua functions (callbacks, fn histories, a judge criterion, the commands replayed after a
 // re-zone) cannot be stored; Model::restore leaves them for the script to give again.
 #include <ctime>
+#include <new>
 
 #include "core/error.hpp"
 #include "io/checkpoint_file.hpp"
@@ -328,6 +329,9 @@ Mesh unflatten(FlatMesh f) {
   for (const auto& loop : f.loop_gridpoints)
     for (int g : loop)
       if (!gridpoint(g)) fail("a boundary loop of its mesh has a gridpoint out of range ({})", g);
+  for (const auto* owners : {&f.gp_block, &f.zone_block})
+    for (int b : *owners)
+      if (b < 0 || static_cast<size_t>(b) >= blocks) fail("its mesh refers to block {}, out of range", b);
   mesh.block_boundary.resize(blocks);
   for (size_t b = 0; b < blocks; ++b)
     for (auto l = static_cast<size_t>(f.first_loop[b]); l < static_cast<size_t>(f.first_loop[b + 1]); ++l)
@@ -344,6 +348,91 @@ Mesh unflatten(FlatMesh f) {
 // Array lengths that must agree with the mesh and the node count; a file that passed its checksum
 // only fails these if an EDEM of the same schema wrote something else, but then the message is
 // better than a crash.
+// Every entry of `values` in [low, count); `what` names them in the message.
+void check_range(const std::vector<int>& values, int low, size_t count, std::string_view what) {
+  for (const int v : values)
+    if (v < low || (v >= 0 && static_cast<size_t>(v) >= count)) fail("its {} refer to {}, out of range", what, v);
+}
+
+// Offsets into an array of `total` entries: one per item + 1, from 0, not decreasing.
+void check_first(const std::vector<int>& first, size_t items, size_t total, std::string_view what) {
+  if (first.empty() && items == 0) return;
+  if (first.size() != items + 1) fail("its {} offsets are {}, for {} items", what, first.size(), items);
+  check_offsets(first, total, what);
+}
+
+// The indices a cycle or a query follows: a file that passed its checksum fails these only when
+// it was altered and its checksum forged, but then with a message rather than a crash.
+void check_indices(const Mechanics& m, const Mesh& mesh) {
+  const size_t nodes = static_cast<size_t>(m.node_count), zones = static_cast<size_t>(mesh.zone_count());
+  const size_t blocks = mesh.block_boundary.size(), edges = m.faces.edges.size();
+  std::vector<int> ends, links, edge_blocks, contact_nodes, contact_edges, contact_blocks, materials;
+  for (const ContactEdge& e : m.faces.edges) {
+    ends.insert(ends.end(), {e.a, e.b});
+    links.insert(links.end(), {e.prev, e.next});
+    edge_blocks.push_back(e.block);
+    materials.push_back(e.material);
+  }
+  check_range(ends, 0, nodes, "contact edges' nodes");
+  check_range(links, -1, edges, "contact edges' neighbours");
+  check_range(edge_blocks, 0, blocks, "contact edges' blocks");
+  check_range(materials, -1, m.joint_materials.size(), "contact edges' joint materials");
+  check_first(m.faces.block_first_edge, blocks, edges, "block edge");
+  check_range(m.faces.nodes, 0, nodes, "contact nodes");
+  check_first(m.faces.edge_first, m.faces.nodes.size(), m.faces.node_edges.size(), "node edge");
+  check_range(m.faces.node_edges, 0, edges, "node edges");
+  check_first(m.faces.block_first, m.faces.nodes.size(), m.faces.node_blocks.size(), "node block");
+  check_range(m.faces.node_blocks, 0, blocks, "node blocks");
+  if (m.faces.reach.size() != m.faces.nodes.size() && !m.faces.reach.empty()) fail("its contact reaches do not match");
+  materials.clear();
+  for (const Contact& c : m.contacts.list) {
+    contact_nodes.push_back(c.node);
+    contact_edges.push_back(c.edge);
+    contact_blocks.insert(contact_blocks.end(), {c.block, c.other});
+    materials.push_back(c.material);
+  }
+  check_range(contact_nodes, 0, nodes, "contacts' nodes");
+  check_range(contact_edges, 0, edges, "contacts' edges");
+  check_range(contact_blocks, 0, blocks, "contacts' blocks");
+  check_range(materials, 0, m.joint_materials.size(), "contacts' joint materials");
+  std::vector<int> section_gps, section_edges, section_blocks;
+  for (const Section& s : m.sections) {
+    section_gps.insert(section_gps.end(), {s.a[0], s.a[1], s.b[0], s.b[1]});
+    section_edges.insert(section_edges.end(), {s.edge[0], s.edge[1]});
+    section_blocks.insert(section_blocks.end(), {s.block[0], s.block[1]});
+  }
+  check_range(section_gps, -1, static_cast<size_t>(mesh.gp_count()), "sections' gridpoints");
+  check_range(section_blocks, -1, blocks, "sections' blocks");
+  check_range(m.edge_section, -1, m.sections.size(), "edges' sections");
+  check_range(section_edges, -1, m.edge_section.size(), "sections' edges");
+  if (m.edge_glued.size() != m.edge_section.size()) fail("its loop edges do not match");
+  for (size_t s = 0; s < m.sections.size(); ++s)
+    for (const int e : m.sections[s].edge)
+      if (e >= 0 && m.edge_section[static_cast<size_t>(e)] != static_cast<int>(s))
+        fail("its section {} and loop edge {} disagree", s, e);
+  if (!m.fits.first.empty()) check_first(m.fits.first, m.sections.size(), m.fits.zone.size(), "section fit");
+  check_range(m.fits.zone, 0, zones, "section fits' zones");
+  check_range(m.fits.after, -1, m.joint_materials.size(), "sections' joint materials once broken");
+  std::vector<int> seeds;
+  for (const Section& s : m.sections) seeds.push_back(s.seed);
+  check_range(seeds, -1, m.crack_seeds.size(), "sections' crack seeds");
+  std::vector<int> crack_sections;
+  for (const CrackView& c : m.cracks) crack_sections.push_back(c.section);
+  check_range(crack_sections, 0, m.sections.size(), "cracks' sections");
+  std::vector<int> corners;
+  for (const ZoneGeometry& g : m.geometry) corners.insert(corners.end(), g.node.begin(), g.node.end());
+  check_range(corners, 0, nodes, "zones' nodes");
+  check_range(m.active, 0, zones, "active zones");
+  check_range(m.zone_material, -1, m.materials.size(), "zones' materials");
+  check_range(m.bolts.segments.a, 0, m.bolts.nodes.size(), "bolt segments' nodes");
+  check_range(m.bolts.segments.b, 0, m.bolts.nodes.size(), "bolt segments' nodes");
+  check_range(m.bolts.segments.material, 0, m.bolts.laws.size(), "bolt segments' materials");
+  check_first(m.bolts.bolt_first_node, m.bolt_hosts.material.size(), m.bolts.nodes.size(), "bolt node");
+  check_first(m.bolts.bolt_first_segment, m.bolt_hosts.material.size(), m.bolts.segments.size(), "bolt segment");
+  check_range(m.bolt_hosts.zone, -1, zones, "bolt hosts' zones");
+  check_range(m.bolt_hosts.material, 0, m.bolt_materials.size(), "bolts' materials");
+}
+
 void check_sizes(const Mechanics& m, const Mesh& mesh) {
   const size_t zones = static_cast<size_t>(mesh.zone_count()), nodes = static_cast<size_t>(m.node_count);
   const auto expect = [](size_t got, size_t want, std::string_view what) {
@@ -479,6 +568,7 @@ struct CheckpointAccess {
       Mechanics& m = *model.mechanics_;
       r("mechanics", m);
       check_sizes(m, model.mesh_);
+      check_indices(m, model.mesh_);
       r("prepass_yield", model.prepass_yield_);
       r("last_prepass", model.last_prepass_);
       m.judge_criterion_missing = judge_criterion;
@@ -489,6 +579,8 @@ struct CheckpointAccess {
       return model;
     } catch (const Error& e) {
       fail("cannot restore '{}': {}", path, e.what());
+    } catch (const std::bad_alloc&) {
+      fail("cannot restore '{}': it asks for more memory than there is (is it damaged?)", path);
     }
   }
 };
