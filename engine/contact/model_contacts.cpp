@@ -75,8 +75,11 @@ int Model::contact_count() const {
 }
 
 ContactView Model::contact(int id) const {
-  const Mechanics& m = *mechanics_;
   if (id < 0 || id >= contact_count()) fail("no contact {}", id + 1);
+  return contact_view(*mechanics_, id);
+}
+
+ContactView contact_view(const Mechanics& m, int id) {
   const Contact& c = m.contacts.list[static_cast<size_t>(id)];
   const ContactEdge& e = m.faces.edges[static_cast<size_t>(c.edge)];
   auto at = [&](int node) {

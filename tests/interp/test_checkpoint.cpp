@@ -1,6 +1,7 @@
 // save() and restore(): a run saved mid-stage and restored goes on bit for bit as the run that
 // was never stopped (cracks breaking, bolts loaded, contacts slipping, an excavation's release
-// half done), on any thread count; what a restored model needs from the script is asked for.
+// half done), on any thread count; what a restored model needs from the script is asked for. And
+// field output taken during a run, which reads the same state, leaves the run as it was.
 #include <lua.hpp>
 #include <unistd.h>
 
@@ -127,6 +128,19 @@ TEST_F(Checkpoint, RestoredRunGoesOnBitForBitMidStage) {
     EXPECT_TRUE(global(second, "dump") == expected) << "restored on " << threads << " thread(s) differs";
     EXPECT_EQ(slurp(csv), slurp(file("whole.csv"))) << "histories differ";
   }
+}
+
+// Output frames taken while the model cycles (every 7 cycles, so some right after sections broke,
+// when the contacts are not current) leave the run as it would be without them.
+TEST_F(Checkpoint, OutputFramesDoNotChangeTheRun) {
+  Interpreter plain({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+  expect_runs(plain, std::string(kScene) + kFunctions + "cycle(300)\n" + kDump);
+  Interpreter watched({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+  expect_runs(watched, std::string(kScene) + kFunctions + "output{ file = '" + file("run.xdmf") +
+                           "', every = 7 }\ncycle(300)\n" + kDump);
+  EXPECT_FALSE(global(plain, "dump").empty());
+  EXPECT_TRUE(global(watched, "dump") == global(plain, "dump")) << "output changed the run";
+  EXPECT_TRUE(fs::exists(file("run.h5")));
 }
 
 TEST_F(Checkpoint, SavedFileNamesItsScriptAndVersion) {
