@@ -2,15 +2,15 @@
 --
 --   local seed = require "edem.seed"
 --   seed.region{ cross_spacing = 16, edge = 4 }   -- builds, zones, loads; returns info()
---   seed.P.rock, seed.P.joint                      -- the parameter set it uses
+--   seed.P.rock, seed.P.joint                      -- the parameter sets it uses (seed.M too)
 --   seed.elastoplastic{}                           -- Mohr-Coulomb rock, bonded joints (a prepass)
 --
--- The region: 200 m x 180 m, centred on the origin, the Case 3 joints (60 deg, spacing 16, 12,
--- 8 m in turn) and a cross set at right angles (-30 deg, `cross_spacing`, default 16 m as in
--- scripts/examples/jointed_cavern.lua), zoned uniformly at `edge` (default 4 m), elastic rock
--- and Coulomb joints of Set P, gravity, in-situ stress with the cavern roof (y = 24) `depth`
--- below the ground (default 158 m) and K0 (default 0.6), rollers on the sides and the base, the
--- top loaded by the in-situ stress.
+-- The region: 200 m x 180 m, centred on the origin, the joints of `case` (seed.cases; default 3:
+-- 60 deg, spacing 16, 12, 8 m in turn) and a cross set at right angles (`cross_spacing`, default
+-- 16 m as in scripts/examples/jointed_cavern.lua), zoned uniformly at `edge` (default 4 m),
+-- elastic rock and Coulomb joints of `set` ("P", the default, or "M": seed.P, seed.M), gravity,
+-- in-situ stress with the cavern roof (y = 24) `depth` below the ground (default 158 m) and K0
+-- (default 0.6), rollers on the sides and the base, the top loaded by the in-situ stress.
 --
 -- Optional keys for an excavation in the region (none given: the uniform model above):
 --   regions  list of { name = ..., polygon = ... } (e.g. edem.cavern's stages), each cut with
@@ -33,21 +33,43 @@ seed.P = {
   joint = { kn = 83.9e6, ks = 3.60e6, friction = 31.2 },
 }
 
+-- Set M, "reproduce the paper's numbers" (VERIFICATION.md S.3): the values the seed lists for its
+-- numerical model, at full geometry. Its joints close by the seed's lab curve (kn_law "seed-cubic").
+seed.M = {
+  rock = { density = 1505, young = 415.5e6, poisson = 0.136, cohesion = 0.143e6, friction = 34,
+           tension = 0.0546e6 },
+  joint = { kn_law = "seed-cubic", ks = 80.7e6, friction = 31.2 },
+}
+
+-- The seed's three joint patterns (its Table 1): the main set's angle from +x (it dips towards -x,
+-- the cavern's left side rising to the right) and its spacings in turn; each with the cross set
+-- at right angles to it.
+seed.cases = {
+  { angle = 45, spacing = {16} },
+  { angle = 60, spacing = {16} },
+  { angle = 60, spacing = {16, 12, 8} },
+}
+
 function seed.region(t)
   t = t or {}
   local cross, edge = t.cross_spacing or 16, t.edge or 4
   local depth, k0 = t.depth or 158, t.k0 or 0.6
-  local rock, joint = seed.P.rock, seed.P.joint
-  model{ title = ("seed region, Case 3 joints, cross joints every %g m"):format(cross),
+  local case = seed.cases[t.case or 3] or error(("seed.region: case must be 1, 2 or 3, got %s"):format(t.case), 2)
+  local set = seed[t.set or "P"]
+  if t.set ~= nil and t.set ~= "P" and t.set ~= "M" then
+    error(("seed.region: set must be \"P\" or \"M\", got %s"):format(tostring(t.set)), 2)
+  end
+  local rock, joint = set.rock, set.joint
+  model{ title = ("seed region, Case %d joints, cross joints every %g m"):format(t.case or 3, cross),
          tolerance = t.tolerance }
   block{ x = {-100, 100}, y = {-90, 90} }
-  jset{ angle = 60, spacing = {16, 12, 8} }
-  jset{ angle = -30, spacing = cross }
+  jset{ angle = case.angle, spacing = case.spacing }
+  jset{ angle = case.angle - 90, spacing = cross }
   for _, r in ipairs(t.regions or {}) do region{ name = r.name, polygon = r.polygon } end
   zone{ edge = edge, near = t.near, far = t.far, growth = t.growth }
   material{ "rock", density = rock.density, young = rock.young, poisson = rock.poisson }
   assign{ material = "rock" }
-  joint_material{ "joint", kn = joint.kn, ks = joint.ks, friction = joint.friction }
+  joint_material{ "joint", kn = joint.kn, kn_law = joint.kn_law, ks = joint.ks, friction = joint.friction }
   jassign{ material = "joint" }
   gravity{ 0, -9.81 }
   insitu{ surface = 24 + depth, density = rock.density, k0 = k0 }

@@ -71,6 +71,18 @@ TEST_F(CheckpointFiles, InfoSummarisesACheckpoint) {
   EXPECT_TRUE(contains(with_script.out, "---- script ----\n" + make_script("0.25")));
 }
 
+// A checkpoint of a model that cannot cycle yet (not zoned, or zones without material) is still
+// a good file: info summarises it.
+TEST_F(CheckpointFiles, InfoOfAModelNotReadyToCycle) {
+  write("plain.lua", "block{ x = {0, 1}, y = {0, 1} }\nsave('blocks.h5')\nzone{ edge = 0.5 }\nsave('zones.h5')\n");
+  ASSERT_EQ(edem("-q plain.lua").status, 0);
+  for (const char* file : {"blocks.h5", "zones.h5"}) {
+    const Outcome r = edem(std::string("info ") + file);
+    EXPECT_EQ(r.status, 0) << file << ": " << r.err;
+    EXPECT_TRUE(contains(r.out, "contacts: none yet"));
+  }
+}
+
 // Each damaged file, and what the message must say. `edem info` and a script's restore() both
 // exit 1 with it, naming the file; neither crashes.
 TEST_F(CheckpointFiles, DamagedFilesAreRefusedClearly) {
