@@ -80,7 +80,8 @@ void watch(Mechanics& m, const Mesh& mesh, const Measure& measure, int batch) {
     const JointParams& jp = m.joint_params[static_cast<size_t>(c.material)];
     fail("cycle {}: overlap too great: the gridpoint at ({:.6g}, {:.6g}) of block {} is {:.3g} m inside "
          "block {}, more than half its shortest boundary edge ({:.3g} m); normal stress {:.4g} Pa "
-         "there, over a contact {:.3g} m long, {:.3g} of it over the edge (at {:.3g} of the edge's length); likely cause: joint material '{}' too soft for this stress (a closure of {:.3g} m "
+         "there, over a contact {:.3g} m long, {:.3g} of it over the edge (at {:.3g} of the edge's "
+         "length); likely cause: joint material '{}' too soft for this stress (a closure of {:.3g} m "
          "at its largest stiffness {:.4g} Pa/m), or blocks driven into each other faster than the "
          "contacts can push back (a boundary velocity or a time step too large)",
          cycle, p.x, p.y, c.block + 1, measure.overlap, c.other + 1, c.limit, c.sn, c.length, c.share, c.t,
