@@ -29,7 +29,11 @@
 --   where          function(x, y) -> boolean, optional: lay only the bolts whose head (x, y) it
 --                  accepts; the others keep their places in the spacing
 --   free_length m  >= 0, optional: passed on to bolt{} (the ungrouted length from the head)
---   Returns the list of the bolt ids laid, in order along the surface, and their count.
+--   missing        "error" (default) or "skip": what a head with no rock near it on either side
+--                  does (see below); "skip" leaves its bolt out, as where rock has fallen out
+--                  deeper than half a bolt and there is nothing to bolt
+--   Returns the list of the bolt ids laid, in order along the surface, their count, and the
+--   number of heads skipped (missing = "skip").
 --   The normal: a head inside a segment takes the segment's normal; a head on a vertex between
 --   two segments takes the mean of their unit normals (the bisector of the corner). The rock's
 --   side is found at each head: zone_at() a tenth of the bolt's length off the wall on both
@@ -77,6 +81,8 @@ local kinds = {
                    read = function(v) return type(v) == "function" and v or nil end },
   surface = { says = "a polyline { {x, y}, ... } or a list of them",
               read = function(v) return type(v) == "table" and v or nil end },
+  missing = { says = "\"error\" or \"skip\"",
+              read = function(v) return (v == "error" or v == "skip") and v or nil end },
 }
 
 -- Reads t against spec (edem.args); errors are blamed on the caller of the public function.
@@ -201,6 +207,7 @@ function bolts.pattern(t)
     { "surface", "surface" }, { "spacing", "positive" }, { "length", "positive" },
     { "segments", "count" }, { "segment_length", "positive" }, { "material", "name" },
     { "where", "function" }, { "first", "nonnegative" }, { "free_length", "nonnegative" },
+    { "missing", "missing" },
   })
   for _, key in ipairs({ "surface", "spacing", "length", "material" }) do
     if o[key] == nil then error(("bolts.pattern: %s is required"):format(key), 2) end
@@ -223,7 +230,7 @@ function bolts.pattern(t)
   local tol, probe = 1e-9 * size, 0.1 * o.length
   local heads = {}
   for _, line in ipairs(lines) do heads_along(line, first, o.spacing, tol, heads) end
-  local plan = {}
+  local plan, skipped = {}, 0
   for _, h in ipairs(heads) do
     local x, y, n = h.point[1], h.point[2], h.normal
     if not o.where or o.where(x, y) then
@@ -246,9 +253,10 @@ function bolts.pattern(t)
         start = rock_within(sign * n[1], sign * n[2])
       else
         local ahead, behind = rock_within(n[1], n[2]), rock_within(-n[1], -n[2])
-        if not ahead and not behind then
+        if not ahead and not behind and o.missing ~= "skip" then
           error(("bolts.pattern: the wall at (%s, %s) has rock on neither side"):format(show(x), show(y)), 2)
         end
+        if not ahead and not behind then skipped = skipped + 1 end
         sign = (ahead and (not behind or ahead <= behind)) and 1 or -1
         start = sign == 1 and ahead or behind
       end
@@ -271,7 +279,7 @@ function bolts.pattern(t)
     end
     ids[#ids + 1] = id
   end
-  return ids, #ids
+  return ids, #ids, skipped
 end
 
 -- bolts.exposed ----------------------------------------------------------------------------------

@@ -21,7 +21,8 @@
 --   the seed's sequence in small (in-situ stress, each stage excavated, solved, then bolted): the
 --     same bolts, the first stage's in tension at the end, none out of service;
 --   bad input: the key and value named and the caller's line blamed; a wall in solid rock
---     ("rock on both sides") or in the opening ("on neither side"); bolt{}'s own refusal (a bolt
+--     ("rock on both sides") or in the opening ("on neither side"; with missing = "skip" its
+--     heads are skipped and counted); bolt{}'s own refusal (a bolt
 --     running out of the model) named with the bolt.
 local check = require "edem.check"
 local cavern = require "edem.cavern"
@@ -276,6 +277,7 @@ for _, case in ipairs({
   { "pattern", with{ surface = { { { 0, 0 }, { 1, 0 } }, { { 0, 0 }, { 1, "a" } } } }, "surface[2][2] = {1, \"a\"}: must be a point {x, y}" },
   { "pattern", with{ surface = { { 20, -5 }, { 20, 5 } } }, "bolts.pattern: the wall at (20, -4.25) has rock on both sides" },
   { "pattern", with{ surface = { { -1, 0 }, { 1, 0 } } }, "bolts.pattern: the wall at (-0.25, 0) has rock on neither side" },
+  { "pattern", with{ missing = "maybe" }, "missing = \"maybe\": must be \"error\" or \"skip\"" },
   { "pattern", with{ length = 40 }, "bolts.pattern: bolt 1 of " },
   { "pattern", with{ material = "steel" }, "bolts.pattern: bolt 1 of " },
   { "exposed", c.stages[1], nil, "bolts.exposed: outline = nil: must be a list of points" },
@@ -295,6 +297,15 @@ end
 local after = 0
 for _ in bolts() do after = after + 1 end
 check.report("bad input laid no bolt", after - before, 0, 0, { absolute = true })
+-- The same wall with no rock near it, told to skip such heads (rock fallen out deeper than half
+-- a bolt): nothing laid, every head counted as skipped.
+do
+  local t = with{ surface = { { -1, 0 }, { 1, 0 } }, missing = "skip" }
+  local _, laid, skipped = bolts.pattern(t)
+  local heads = math.floor((2 - t.spacing / 2) / t.spacing) + 1
+  check.report("missing = \"skip\": bolts laid on a wall with no rock near it", laid, 0, 0, { absolute = true })
+  check.report("missing = \"skip\": heads skipped", skipped, heads, 0, { absolute = true })
+end
 
 -- 4. A closed loop with heads on its corners: a rectangle 8 m x 6 m excavated at once, its
 --    outline from the floor's middle; spacing 2 from 0 puts heads on the four corners and on the

@@ -1,0 +1,167 @@
+-- The seed paper's study, one case per run (issue 9): the 24 m x 48 m warhead cavern in the
+-- seed's 200 m x 180 m region, excavated in its 16 steps, with or without bolts.
+--
+--   edem --set case=3 --set depth=158 --set bolts=none run scripts/paper/case.lua
+--
+-- Settings (--set KEY=VALUE; the defaults in brackets):
+--   case      1, 2 or 3: the seed's joint patterns (edem.seed.cases) [3]
+--   depth     m from the ground to the crown [158]
+--   bolts     none, 1 (pattern 1: 5 m at 1.5 m on the walls each step exposes) or 2 (pattern 1
+--             and 15 m bolts between them in the two weak zones the seed names: the upper right
+--             sidewall, A, y from 0 to the springline; the lower left sidewall, B, y below -8) [none]
+--   set       M or P: the parameter set (edem.seed; VERIFICATION.md S.3) [M]
+--   edge, far m: zone size near the cavern and far from it [1.5, 10]
+--   stages    how many of the 16 steps to excavate [16]
+--   release   cycles over which each step's load comes off [1000]
+--   similar   deg: crackseed{ auto }'s grouping angle [45]
+--   tolerance model{}'s geometric tolerance [7e-4]
+--   table     CSV file the result row is appended to [case_results.csv]
+-- Steps: the region with the case's joints and the cavern's steps cut as regions; the prepass of
+-- the rock mass as one continuum (Mohr-Coulomb rock of the set, joints tied) over all the steps;
+-- potential cracks where it yields (crackseed{ auto }, spacing a tenth of the cavern's height,
+-- 4.8 m; the set's intact strength); then elastic rock, the set's Coulomb joints and the
+-- potential cracks, in-situ stress solved, displacements reset, and each step excavated, solved
+-- and bolted. Blocks that come loose (a gridpoint 1 m from where it started) are mucked out every
+-- 200 cycles, as fallen rock is. A step that stops on an error ends the run; the row says where.
+-- Writes: the result row, and pictures CASE_prepass.png (the seed's Figure 8), CASE_cracks.png
+-- (Figures 9 and 11) and CASE_profile.png (Figure 12, the settlement 10 m above the crown).
+local seed = require "edem.seed"
+local cavern = require "edem.cavern"
+local rockbolts = require "edem.bolts"
+
+local function setting(key, default)
+  local v = arg and arg[key]
+  if v == nil then return default end
+  return v
+end
+local CASE, DEPTH, BOLTS = setting("case", 3), setting("depth", 158), tostring(setting("bolts", "none"))
+local SET, EDGE, FAR = tostring(setting("set", "M")), setting("edge", 1.5), setting("far", 10)
+local STAGES, RELEASE = setting("stages", 16), setting("release", 1000)
+local SIMILAR, TOLERANCE = setting("similar", 45), setting("tolerance", 7e-4)
+local TABLE = tostring(setting("table", "case_results.csv"))
+assert(BOLTS == "none" or BOLTS == "1" or BOLTS == "2", "bolts must be none, 1 or 2, got " .. BOLTS)
+local tag = ("case%d_%s_h%g_%s"):format(CASE, SET, DEPTH, BOLTS == "none" and "none" or "pattern" .. BOLTS)
+local started = os.time()
+
+local c = cavern.warhead{}
+seed.region{ case = CASE, set = SET, depth = DEPTH, regions = c.stages, near = { c.outline }, edge = EDGE,
+             far = FAR, tolerance = TOLERANCE }
+local rock = seed[SET].rock
+
+-- 1. Where the rock mass yields, as one continuum (joints tied), over all the steps.
+material{ "intact", model = "mohr", density = rock.density, young = rock.young, poisson = rock.poisson,
+          cohesion = rock.cohesion, friction = rock.friction, tension = rock.tension }
+assign{ material = "intact" }
+local names = {}
+for _, s in ipairs(c.stages) do names[#names + 1] = s.name end
+local pre = prepass{ stages = names, joints = false, steps = 2 }
+local yielded = 0
+for _, z in ipairs(pre.zones) do if z.state ~= "none" then yielded = yielded + 1 end end
+plot{ file = tag .. "_prepass.png", show = { "prepass", "joints" }, window = { -60, 60, -50, 60 } }
+
+-- 2. Potential cracks there, then the discontinuum.
+local groups = crackseed{ auto = pre, spacing = 4.8, material = "intact", similar = SIMILAR }
+material{ "rock", density = rock.density, young = rock.young, poisson = rock.poisson }
+assign{ material = "rock" }
+local n = info()
+print(("%s: %d zones yielded in the prepass, %d crack groups, %d sections; %d blocks, %d zones"):format(
+  tag, yielded, #groups, n.sections, n.blocks, n.zones))
+local r = solve{ ratio = 1e-6, max_cycles = 20000 }
+reset{ "displacement", "velocity" }
+
+-- Measuring points: the crown, and the side walls at mid-height of the lowest arch step.
+local crown = gp_near(c.crown[1], c.crown[2] + 0.01)
+local left, right = gp_near(-12.01, 0), gp_near(12.01, 0)
+local function width_now()
+  local a, b
+  for g in gridpoints() do
+    if g.id == left.id then a = g end
+    if g.id == right.id then b = g end
+  end
+  return (b.x + b.ux) - (a.x + a.ux)
+end
+local width0 = width_now()
+local function settlement()
+  for g in gridpoints() do if g.id == crown.id then return -g.uy end end
+end
+
+-- Mucking out: blocks whose gridpoints have moved more than 1 m.
+local fallen = 0
+local function muck_out()
+  local worst = {}
+  for g in gridpoints() do
+    local u = math.sqrt(g.ux * g.ux + g.uy * g.uy)
+    if u > (worst[g.block] or 0) then worst[g.block] = u end
+  end
+  local gone = {}
+  for z in zones() do if z.excavated then gone[z.block] = true end end
+  for block, u in pairs(worst) do
+    if not gone[block] and u > 1.0 then
+      excavate{ block = block }
+      fallen = fallen + 1
+    end
+  end
+end
+local mucking = every(200, muck_out)
+
+if BOLTS ~= "none" then
+  bolt_material{ "bolt", young = 190e9, area = 446e-6, density = 6083, yield_tension = 0.156e6,
+                 failure_strain = 0.035, bond_stiffness = 50e6, bond_strength = 0.2e6, spacing = 1.5 }
+end
+local laid, skipped = 0, 0
+local function bolt_step(s)
+  local surface = rockbolts.exposed(s, c.outline)
+  local _, count, missed = rockbolts.pattern{ surface = surface, spacing = 1.5, length = 5, segments = 10,
+                                              material = "bolt", missing = "skip" }
+  laid, skipped = laid + count, skipped + missed
+  if BOLTS == "2" then
+    local weak = function(x, y) return (x > 0 and y >= 0) or (x < 0 and y <= -8) end
+    local _, more, missed2 = rockbolts.pattern{ surface = surface, spacing = 1.5, first = 1.5, length = 15,
+                                                segments = 20, material = "bolt", where = weak, missing = "skip" }
+    laid, skipped = laid + more, skipped + missed2
+  end
+end
+
+print(("  %5s %-20s %7s %9s %10s %7s %6s %6s"):format("step", "name", "cycles", "ratio", "crown [m]", "cracks",
+                                                   "fallen", "time"))
+local done, stopped = 0, ""
+for i, s in ipairs(c.stages) do
+  if i > STAGES then break end
+  excavate{ region = s.name, release = RELEASE }
+  local ok, result = pcall(solve, { ratio = 1e-5, max_cycles = 40000 })
+  if not ok then
+    stopped = ("step %d: %s"):format(i, tostring(result):gsub("^.-cycle %d+: ", ""):sub(1, 160))
+    print("  stopped at " .. stopped)
+    break
+  end
+  if BOLTS ~= "none" then bolt_step(s) end
+  done = i
+  print(("  %5d %-20s %7d %9.2e %10.4f %7d %6d %6d"):format(i, s.name, result.cycles, result.ratio, settlement(),
+                                                           info().cracks, fallen, os.time() - started))
+end
+cancel(mucking)
+
+-- The result row.
+local tension, shear, left_cracks, right_cracks = 0, 0, 0, 0
+for k in cracks() do
+  if k.mode == "tension" then tension = tension + 1 else shear = shear + 1 end
+  if k.x < 0 then left_cracks = left_cracks + 1 else right_cracks = right_cracks + 1 end
+end
+local convergence = width0 - width_now()
+local seconds = os.time() - started
+local header = "case,set,depth,bolts,steps,cracks,tension,shear,left,right,crown_settlement_m,convergence_m,fallen,bolts_laid,bolts_skipped,seconds,stopped"
+local existing = io.open(TABLE, "r")
+local out = assert(io.open(TABLE, "a"))
+if not existing then out:write(header, "\n") else existing:close() end
+out:write(("%d,%s,%g,%s,%d,%d,%d,%d,%d,%d,%.5f,%.5f,%d,%d,%d,%d,\"%s\"\n"):format(CASE, SET, DEPTH, BOLTS, done,
+  tension + shear, tension, shear, left_cracks, right_cracks, settlement(), convergence, fallen, laid, skipped,
+  seconds, stopped:gsub("\"", "'")))
+out:close()
+print(("%s: %d steps, %d cracks (%d tension, %d shear; %d left, %d right), crown %.4f m, convergence %.4f m, "
+       .. "%d fallen, %d bolts (%d skipped), %d s%s"):format(tag, done, tension + shear, tension, shear,
+  left_cracks, right_cracks, settlement(), convergence, fallen, laid, skipped, seconds,
+  stopped ~= "" and ("; stopped at " .. stopped) or ""))
+
+plot{ file = tag .. "_cracks.png", show = { "blocks", "cracks", "bolts" }, window = { -50, 50, -40, 50 } }
+profile{ from = { -60, c.crown[2] + 10 }, to = { 60, c.crown[2] + 10 }, quantity = "uy", points = 61,
+         file = tag .. "_profile.png", title = tag .. ": vertical displacement 10 m above the crown" }
