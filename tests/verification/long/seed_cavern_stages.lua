@@ -228,6 +228,15 @@ check.report("no support: cracks (no crackseed)", plain.cracks, 0, 0, { absolute
 --     (no support), and at (-16.4, 1.4) at 2.3 GPa (bolts): the left wall collapses.
 --   Set P with listed stiffness, bolts laid 500 cycles into each stage's 1,000-cycle release
 --     (before the rock has relaxed): crown 0.0628 m either way, 38 against 39 slipping.
+-- Tried 2026-11-22 (session 13; scripts/paper/case.lua does these steps): Set M, auto cracks,
+--   blocks mucked out once any of their gridpoints has moved 1 m. Both runs still stop in stage
+--   12, not at the cavern: at (38.9, 51.1), 233 MPa on a contact 2.9 mm long (a block corner whose
+--   half-edges face the other block almost square: tiny projected length), and with bolts at
+--   (-38.0, 4.4), 337 MPa. A floor on the contact length (a quarter of the half-edges' span; an
+--   experiment, not kept) moves the no-support stop to a block whose shortest edge is 7 cm; the
+--   bolted run then passes stage 12's solve. The auto-crack groups' outlines follow zone edges
+--   and leave strips of zone-sized triangles along the walls and joints (scripts/paper/case.lua's
+--   crack picture): those small blocks and short edges are what stops the runs.
 -- So the trend wants a scene where the roof loosens but does not collapse; not found yet.
 local bolted = run(true)
 check.report("bolts: stages left short of equilibrium", #bolted.unconverged, 0, 0, { absolute = true })
