@@ -69,9 +69,26 @@ print(("%s: %d zones yielded in the prepass, %d crack groups, %d sections; %d bl
 local r = solve{ ratio = 1e-6, max_cycles = 20000 }
 reset{ "displacement", "velocity" }
 
--- Measuring points: the crown, and the side walls at mid-height of the lowest arch step.
-local crown = gp_near(c.crown[1], c.crown[2] + 0.01)
-local left, right = gp_near(-12.01, 0), gp_near(12.01, 0)
+-- Measuring points, in the rock left in place: the gridpoint nearest to the crown, and those
+-- nearest to the side walls at y = 0.
+local in_cavern = {}
+do
+  local stage_names = {}
+  for _, s in ipairs(c.stages) do stage_names[s.name] = true end
+  for b in blocks() do
+    for _, name in ipairs(b.regions) do if stage_names[name] then in_cavern[b.id] = true end end
+  end
+end
+local function rock_gridpoint_near(x, y)
+  local best, found = math.huge, nil
+  for g in gridpoints() do
+    local d = (g.x - x) ^ 2 + (g.y - y) ^ 2
+    if not in_cavern[g.block] and d < best then best, found = d, g end
+  end
+  return found
+end
+local crown = rock_gridpoint_near(c.crown[1], c.crown[2])
+local left, right = rock_gridpoint_near(-12, 0), rock_gridpoint_near(12, 0)
 local function width_now()
   local a, b
   for g in gridpoints() do
@@ -127,7 +144,10 @@ print(("  %5s %-20s %7s %9s %10s %7s %6s %6s"):format("step", "name", "cycles", 
 local done, stopped = 0, ""
 for i, s in ipairs(c.stages) do
   if i > STAGES then break end
-  excavate{ region = s.name, release = RELEASE }
+  -- Rock of a later step may have been mucked out already, all of it: then there is nothing left
+  -- to excavate, and the step is only solved.
+  local ok_excavate, why = pcall(excavate, { region = s.name, release = RELEASE })
+  if not ok_excavate and not tostring(why):find("was excavated already", 1, true) then error(why, 0) end
   local ok, result = pcall(solve, { ratio = 1e-5, max_cycles = 40000 })
   if not ok then
     stopped = ("step %d: %s"):format(i, tostring(result):gsub("^.-cycle %d+: ", ""):sub(1, 160))
