@@ -30,8 +30,8 @@
 --                  accepts; the others keep their places in the spacing
 --   free_length m  >= 0, optional: passed on to bolt{} (the ungrouted length from the head)
 --   missing        "error" (default) or "skip": what a head with no rock near it on either side
---                  does (see below); "skip" leaves its bolt out, as where rock has fallen out
---                  deeper than half a bolt and there is nothing to bolt
+--                  does (see below), and a bolt whose far end lies outside the rock; "skip" leaves
+--                  such bolts out, as where rock has fallen out and there is nothing to bolt into
 --   Returns the list of the bolt ids laid, in order along the surface, their count, and the
 --   number of heads skipped (missing = "skip").
 --   The normal: a head inside a segment takes the segment's normal; a head on a vertex between
@@ -271,13 +271,15 @@ function bolts.pattern(t)
                   segments = o.segments, segment_length = o.segment_length,
                   free_length = o.free_length, material = o.material }
     local ok, id = pcall(bolt, def)
-    if not ok then
+    if not ok and o.missing == "skip" and tostring(id):find("is not in the rock", 1, true) then
+      skipped = skipped + 1  -- its far end lies where rock has fallen out
+    elseif not ok then
       local text = tostring(id):gsub("^.-:%d+: ", "", 1)
       error(("bolts.pattern: bolt %d of %d, from (%s, %s) to (%s, %s) (%d laid): %s"):format(
         i, #plan, show(def.from[1]), show(def.from[2]), show(def.to[1]), show(def.to[2]),
-        i - 1, text), 2)
+        #ids, text), 2)
     end
-    ids[#ids + 1] = id
+    if ok then ids[#ids + 1] = id end
   end
   return ids, #ids, skipped
 end

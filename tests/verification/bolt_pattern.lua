@@ -306,6 +306,14 @@ do
   check.report("missing = \"skip\": bolts laid on a wall with no rock near it", laid, 0, 0, { absolute = true })
   check.report("missing = \"skip\": heads skipped", skipped, heads, 0, { absolute = true })
 end
+-- Bolts whose far end lies outside the rock (40 m: out of the model), told to skip: the rest laid,
+-- those counted, no error. The same heads with 5 m bolts are all laid.
+do
+  local _, laid, skipped = bolts.pattern(with{ length = 40, missing = "skip" })
+  local _, heads = bolts.pattern(with{})
+  check.report("missing = \"skip\", 40 m bolts: laid + skipped = the heads", laid + skipped, heads, 0, { absolute = true })
+  check.report("missing = \"skip\", 40 m bolts: some skipped", skipped > 0 and 1 or 0, 1, 0, { absolute = true })
+end
 
 -- 4. A closed loop with heads on its corners: a rectangle 8 m x 6 m excavated at once, its
 --    outline from the floor's middle; spacing 2 from 0 puts heads on the four corners and on the
