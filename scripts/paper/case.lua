@@ -16,6 +16,8 @@
 --   similar   deg: crackseed{ auto }'s grouping angle [45]
 --   tolerance model{}'s geometric tolerance [7e-4]
 --   table     CSV file the result row is appended to [case_results.csv]
+--   strict    true: a step that stops on an error fails the script (after the row and pictures)
+--             instead of only being recorded [false]
 -- Steps: the region with the case's joints and the cavern's steps cut as regions; the prepass of
 -- the rock mass as one continuum (Mohr-Coulomb rock of the set, joints tied) over all the steps;
 -- potential cracks where it yields (crackseed{ auto }, spacing a tenth of the cavern's height,
@@ -185,3 +187,4 @@ print(("%s: %d steps, %d cracks (%d tension, %d shear; %d left, %d right), crown
 plot{ file = tag .. "_cracks.png", show = { "blocks", "cracks", "bolts" }, window = { -50, 50, -40, 50 } }
 profile{ from = { -60, c.crown[2] + 10 }, to = { 60, c.crown[2] + 10 }, quantity = "uy", points = 61,
          file = tag .. "_profile.png", title = tag .. ": vertical displacement 10 m above the crown" }
+if setting("strict", false) == true and stopped ~= "" then error("stopped at " .. stopped, 0) end
