@@ -26,8 +26,9 @@ void assign_joint_materials(Mechanics& m);
 // a contact forms on an edge without a joint material.
 void detect_contacts(Mechanics& m);
 
-// Contact `id` of m.contacts.list as contacts() shows it (model_contacts.cpp).
-ContactView contact_view(const Mechanics& m, int id);
+// Contact `id` of `set` (m.contacts, or one found on a copy of m) as contacts() shows it
+// (model_contacts.cpp).
+ContactView contact_view(const Mechanics& m, const ContactSet& set, int id);
 
 // Whether anything on a block boundary has moved far enough since the last detection that the
 // contacts must be found again (or none have been found yet).

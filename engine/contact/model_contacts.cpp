@@ -20,6 +20,26 @@ void ensure_contacts(Mechanics& m, const Mesh& mesh) {
   update_masses(m);
 }
 
+// The contacts a view shows: the model's, found now if they are not current. From a callback
+// while cycling they are found on a copy instead, once a cycle: finding them on the model would
+// prepare it and find them out of turn, and the run would go on differently for having been
+// looked at.
+const ContactSet& view_contacts(Mechanics& m, const Mesh& mesh) {
+  if (m.contacts.detected) return m.contacts;
+  if (!m.cycling_now) {
+    ensure_contacts(m, mesh);
+    return m.contacts;
+  }
+  if (m.viewed_cycle != m.info.cycle) {
+    Mechanics copy = m;
+    prepare(copy, mesh);
+    detect_contacts(copy);
+    m.viewed_contacts = std::move(copy.contacts);
+    m.viewed_cycle = m.info.cycle;
+  }
+  return m.viewed_contacts;
+}
+
 }  // namespace
 
 void Model::add_joint_material(const JointMaterialDef& def) {
@@ -70,17 +90,17 @@ void Model::jassign(const JassignDef& def) {
 }
 
 int Model::contact_count() const {
-  ensure_contacts(*mechanics_, mesh_);
-  return static_cast<int>(mechanics_->contacts.list.size());
+  return static_cast<int>(view_contacts(*mechanics_, mesh_).list.size());
 }
 
 ContactView Model::contact(int id) const {
-  if (id < 0 || id >= contact_count()) fail("no contact {}", id + 1);
-  return contact_view(*mechanics_, id);
+  const ContactSet& set = view_contacts(*mechanics_, mesh_);
+  if (id < 0 || id >= static_cast<int>(set.list.size())) fail("no contact {}", id + 1);
+  return contact_view(*mechanics_, set, id);
 }
 
-ContactView contact_view(const Mechanics& m, int id) {
-  const Contact& c = m.contacts.list[static_cast<size_t>(id)];
+ContactView contact_view(const Mechanics& m, const ContactSet& set, int id) {
+  const Contact& c = set.list[static_cast<size_t>(id)];
   const ContactEdge& e = m.faces.edges[static_cast<size_t>(c.edge)];
   auto at = [&](int node) {
     const size_t n = static_cast<size_t>(node);
@@ -109,15 +129,15 @@ ContactView contact_view(const Mechanics& m, int id) {
 }
 
 int Model::contact_near(Vec2 point) const {
-  const int count = contact_count();
+  const ContactSet& set = view_contacts(*mechanics_, mesh_);
   const Mechanics& m = *mechanics_;
   int best = -1;
   double best_distance = INFINITY;
-  for (int i = 0; i < count; ++i) {
-    const size_t n = static_cast<size_t>(m.contacts.list[static_cast<size_t>(i)].node);
+  for (size_t i = 0; i < set.list.size(); ++i) {
+    const size_t n = static_cast<size_t>(set.list[i].node);
     const double dx = m.origin[2 * n] + m.u[2 * n] - point.x, dy = m.origin[2 * n + 1] + m.u[2 * n + 1] - point.y;
     const double d = dx * dx + dy * dy;
-    if (d < best_distance) best_distance = d, best = i;
+    if (d < best_distance) best_distance = d, best = static_cast<int>(i);
   }
   return best;
 }

@@ -66,7 +66,7 @@ FieldFrame Model::field_frame() const {
   for (int id = 0; id < contacts; ++id) {
     const Contact& c = found->contacts.list[at(id)];
     const ContactEdge& e = found->faces.edges[at(c.edge)];
-    const ContactView view = contact_view(*found, id);
+    const ContactView view = contact_view(*found, found->contacts, id);
     const auto node_now = [&](int node) {
       const size_t n = at(node);
       return Vec2{found->origin[2 * n] + found->u[2 * n], found->origin[2 * n + 1] + found->u[2 * n + 1]};

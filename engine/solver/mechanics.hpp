@@ -179,6 +179,10 @@ struct Mechanics {
   // ---- contacts
   ContactBoundary faces;   // the touchable block boundaries (per mesh)
   ContactSet contacts;
+  // What a query from a callback saw while the contacts were not current: found on a copy, for
+  // the cycle `viewed_cycle` (contact/model_contacts.cpp). A cache, not state: not saved.
+  ContactSet viewed_contacts;
+  long viewed_cycle = -1;
 
   // ---- potential cracks (crack/sections.hpp, crack/judge.hpp)
   std::vector<CrackSeedDef> crack_seeds;  // the model's crackseed{} inputs

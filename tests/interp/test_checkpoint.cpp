@@ -143,6 +143,23 @@ TEST_F(Checkpoint, OutputFramesDoNotChangeTheRun) {
   EXPECT_TRUE(fs::exists(file("run.h5")));
 }
 
+// The same for a callback that reads the contacts (contacts(), contact_near) while cycling.
+TEST_F(Checkpoint, ContactQueriesFromCallbacksDoNotChangeTheRun) {
+  Interpreter plain({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+  expect_runs(plain, std::string(kScene) + kFunctions + "cycle(300)\n" + kDump);
+  Interpreter watched({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+  expect_runs(watched, std::string(kScene) + kFunctions + R"(
+    seen = 0
+    every(7, function()
+      for c in contacts() do seen = seen + 1 end
+      local near = contact_near(0, 1)
+    end)
+    cycle(300)
+  )" + kDump);
+  EXPECT_GT(std::stoi(global(watched, "seen")), 0);
+  EXPECT_TRUE(global(watched, "dump") == global(plain, "dump")) << "looking at the contacts changed the run";
+}
+
 TEST_F(Checkpoint, SavedFileNamesItsScriptAndVersion) {
   Interpreter interpreter({.quiet = true, .threads = 1, .stdlib_dirs = {}});
   const std::string script = file("make.lua");
