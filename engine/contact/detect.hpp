@@ -26,6 +26,11 @@ void assign_joint_materials(Mechanics& m);
 // a contact forms on an edge without a joint material.
 void detect_contacts(Mechanics& m);
 
+// The contacts a detection would find now, found on a copy of m: m is left as it is (a view from
+// a callback or a field-output frame must not change the run). Throws edem::Error as prepare()
+// and detect_contacts() do (model_contacts.cpp).
+ContactSet contacts_on_copy(const Mechanics& m, const Mesh& mesh);
+
 // Contact `id` of `set` (m.contacts, or one found on a copy of m) as contacts() shows it
 // (model_contacts.cpp).
 ContactView contact_view(const Mechanics& m, const ContactSet& set, int id);

@@ -31,16 +31,20 @@ const ContactSet& view_contacts(Mechanics& m, const Mesh& mesh) {
     return m.contacts;
   }
   if (m.viewed_cycle != m.info.cycle) {
-    Mechanics copy = m;
-    prepare(copy, mesh);
-    detect_contacts(copy);
-    m.viewed_contacts = std::move(copy.contacts);
+    m.viewed_contacts = contacts_on_copy(m, mesh);
     m.viewed_cycle = m.info.cycle;
   }
   return m.viewed_contacts;
 }
 
 }  // namespace
+
+ContactSet contacts_on_copy(const Mechanics& m, const Mesh& mesh) {
+  Mechanics copy = m;
+  prepare(copy, mesh);
+  detect_contacts(copy);
+  return std::move(copy.contacts);
+}
 
 void Model::add_joint_material(const JointMaterialDef& def) {
   const JointParams params = joint_params(def);

@@ -658,6 +658,15 @@ struct Scene {
 
 // Zones that yielded, as the seed's Figure 8 shows them: in the model's own run (plastic: now
 // or earlier) or in the last prepass{} (over all its stages), filled by mode.
+// Zones in place: not excavated, with a material.
+bool in_place(const ZoneView& zone) { return zone.excavated == 0 && !zone.material.empty(); }
+
+Polygon triangle_of(const Mesh& mesh, int zone) {
+  Polygon triangle;
+  for (int gp : mesh.zone_gp[static_cast<std::size_t>(zone)]) triangle.push_back(mesh.gp_position[static_cast<std::size_t>(gp)]);
+  return triangle;
+}
+
 void gather_yielded(const Model& model, bool from_prepass, Scene& scene) {
   const Mesh& mesh = model.mesh();
   const std::vector<std::uint8_t>& prepass = model.prepass_yield();
@@ -668,19 +677,8 @@ void gather_yielded(const Model& model, bool from_prepass, Scene& scene) {
     const std::uint8_t bits = from_prepass ? prepass[static_cast<std::size_t>(z)] : model.zone_view(z).state;
     const bool shear = bits & (kShearNow | kShearPast), tension = bits & (kTensionNow | kTensionPast);
     if (!shear && !tension) continue;
-    Polygon triangle;
-    for (int gp : mesh.zone_gp[static_cast<std::size_t>(z)]) triangle.push_back(mesh.gp_position[static_cast<std::size_t>(gp)]);
-    scene.yielded[shear && tension ? 2 : shear ? 0 : 1].push_back(std::move(triangle));
+    scene.yielded[shear && tension ? 2 : shear ? 0 : 1].push_back(triangle_of(mesh, z));
   }
-}
-
-// Zones in place: not excavated, with a material.
-bool in_place(const ZoneView& zone) { return zone.excavated == 0 && !zone.material.empty(); }
-
-Polygon triangle_of(const Mesh& mesh, int zone) {
-  Polygon triangle;
-  for (int gp : mesh.zone_gp[static_cast<std::size_t>(zone)]) triangle.push_back(mesh.gp_position[static_cast<std::size_t>(gp)]);
-  return triangle;
 }
 
 // An SI value in engineering notation, short: "-1.25 MPa", "3.4 mm".
@@ -860,38 +858,33 @@ std::vector<LegendEntry> legend_of(const Scene& scene) {
   return entries;
 }
 
-void draw_bands(Painter& p, const Scene& scene, const View& view) {
+// Zones filled in one colour as one path, each also outlined in it so that no hairline gaps show
+// between neighbours.
+void fill_zones(Painter& p, const std::vector<Polygon>& triangles, const View& view, Rgb c) {
+  if (triangles.empty()) return;
   cairo_t* cr = p.cr();
-  for (std::size_t b = 0; b < scene.bands.size(); ++b) {
-    const Rgb c = kBandColours[b];
-    cairo_set_source_rgb(cr, c.r, c.g, c.b);
-    cairo_new_path(cr);
-    for (const Polygon& triangle : scene.bands[b]) {
-      const Vec2 first = view(triangle[0]);
-      cairo_move_to(cr, first.x, first.y);
-      for (std::size_t i = 1; i < triangle.size(); ++i) {
-        const Vec2 d = view(triangle[i]);
+  cairo_new_path(cr);
+  for (const Polygon& triangle : triangles) {
+    for (std::size_t i = 0; i < triangle.size(); ++i) {
+      const Vec2 d = view(triangle[i]);
+      if (i == 0)
+        cairo_move_to(cr, d.x, d.y);
+      else
         cairo_line_to(cr, d.x, d.y);
-      }
-      cairo_close_path(cr);
     }
-    // Filled and outlined in its own colour, so that no hairline gaps show between zones.
-    cairo_set_line_width(cr, 0.5 * p.s());
-    cairo_fill_preserve(cr);
-    cairo_stroke(cr);
+    cairo_close_path(cr);
   }
+  p.set_pen({c, 0.5, {}});
+  cairo_fill_preserve(cr);
+  cairo_stroke(cr);
+}
+
+void draw_bands(Painter& p, const Scene& scene, const View& view) {
+  for (std::size_t b = 0; b < scene.bands.size(); ++b) fill_zones(p, scene.bands[b], view, kBandColours[b]);
 }
 
 void draw_yielded(Painter& p, const Scene& scene, const View& view) {
-  cairo_t* cr = p.cr();
-  for (std::size_t i = 0; i < scene.yielded.size(); ++i) {
-    const Rgb c = kYieldColours[i];
-    cairo_set_source_rgb(cr, c.r, c.g, c.b);
-    for (const Polygon& triangle : scene.yielded[i]) {
-      p.polygon_path(triangle, view);
-      cairo_fill(cr);
-    }
-  }
+  for (std::size_t i = 0; i < scene.yielded.size(); ++i) fill_zones(p, scene.yielded[i], view, kYieldColours[i]);
 }
 
 void draw_regions(Painter& p, const Scene& scene, const View& view) {

@@ -7,7 +7,6 @@
 #include "io/field_output.hpp"
 #include "model/model.hpp"
 #include "solver/mechanics.hpp"
-#include "solver/prepare.hpp"
 
 namespace edem {
 namespace {
@@ -47,31 +46,24 @@ FieldFrame Model::field_frame() const {
     f.material.push_back(material);
     f.block.push_back(mesh_.zone_block[at(z)]);
   }
-  // Contacts as a detection now finds them. When the list is not current (before the first cycle,
-  // or just after sections broke), they are found on a copy: a run with output must go on exactly
-  // as one without, and a detection here would also prepare the model out of its turn.
-  std::optional<Mechanics> copy;
+  // Contacts as a detection now finds them; when the list is not current (before the first cycle,
+  // or just after sections broke), found on a copy, so that a run with output goes on exactly as
+  // one without.
+  std::optional<ContactSet> fresh;
   if (!m.contacts.detected) {
-    copy.emplace(m);
     try {
-      prepare(*copy, mesh_);
-      detect_contacts(*copy);
+      fresh = contacts_on_copy(m, mesh_);
     } catch (const Error&) {
-      copy.reset();  // not ready to cycle (a zone without material...): no contacts to show
+      fresh = ContactSet{};  // not ready to cycle (a zone without material...): no contacts to show
     }
   }
-  const Mechanics* found = copy ? &*copy : m.contacts.detected ? &m : nullptr;
-  const int contacts = found ? static_cast<int>(found->contacts.list.size()) : 0;
+  const ContactSet& found = fresh ? *fresh : m.contacts;
   // Each a line along the edge's direction through the gridpoint, of the contact's length.
-  for (int id = 0; id < contacts; ++id) {
-    const Contact& c = found->contacts.list[at(id)];
-    const ContactEdge& e = found->faces.edges[at(c.edge)];
-    const ContactView view = contact_view(*found, found->contacts, id);
-    const auto node_now = [&](int node) {
-      const size_t n = at(node);
-      return Vec2{found->origin[2 * n] + found->u[2 * n], found->origin[2 * n + 1] + found->u[2 * n + 1]};
-    };
-    const Vec2 d = node_now(e.b) - node_now(e.a);
+  for (size_t id = 0; id < found.list.size(); ++id) {
+    const Contact& c = found.list[id];
+    const ContactEdge& e = m.faces.edges[at(c.edge)];
+    const ContactView view = contact_view(m, found, static_cast<int>(id));
+    const Vec2 d = node_at(e.b) - node_at(e.a);
     const Vec2 half = (0.5 * view.length / norm(d)) * d;
     f.contact_points.push_back(view.position - half);
     f.contact_points.push_back(view.position + half);
