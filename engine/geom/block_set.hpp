@@ -47,6 +47,7 @@ struct BlockSet {
   int dropped_cuts = 0;      // cut pieces that crossed no block and were dropped (as UDEC does)
   int joint_edges = 0;       // arrangement edges made by joints between two blocks
   int snapped_vertices = 0;  // cut vertices moved by at most the tolerance to avoid slivers
+  int cuts_left_out = 0;     // optional cut pieces left out: no bending kept them the tolerance apart
 };
 
 }  // namespace edem

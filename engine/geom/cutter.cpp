@@ -49,6 +49,7 @@ using Halfedge = Arrangement::Halfedge_const_handle;
 using Vertex = Arrangement::Vertex_const_handle;
 
 constexpr int kMaxSnapRounds = 12;
+constexpr int kMaxLeftOut = 200;  // optional pieces left out of one base before it fails all the same
 
 // A polyline that goes into the arrangement: a base outline, a region outline (both
 // closed) or one (clipped) cut.
@@ -57,6 +58,8 @@ struct Piece {
   EdgeOrigin origin;
   bool closed = false;  // the last point joins the first
   bool base = false;    // base outlines never move
+  bool optional = false;  // may be left out (CutSegment::optional)
+  bool left_out = false;  // it was: not in the arrangement any more
   size_t segment_count() const { return closed ? points.size() : points.size() - 1; }
   Segment segment(size_t i) const { return Segment(points[i], points[(i + 1) % points.size()]); }
 };
@@ -159,23 +162,60 @@ class BaseCutter {
       const int fixes = snap_small_features();
       if (fixes == 0) break;
       out.snapped_vertices += fixes;
-      if (round + 1 == kMaxSnapRounds)
-        fail("cannot resolve geometry features smaller than the tolerance ({:.3g} m) in block {}: "
+      if (round + 1 < kMaxSnapRounds) continue;
+      // Bending goes round in circles: the optional cuts still being bent give way, and the
+      // rest get half the rounds again to settle.
+      if (left_out_ < kMaxLeftOut && leave_out_optional(bent_in_round_)) {
+        round = kMaxSnapRounds / 2 - 1;
+        continue;
+      }
+      fail("cannot resolve geometry features smaller than the tolerance ({:.3g} m) in block {}: "
              "near ({:.4g}, {:.4g}) {} keep coming closer than that after being bent together "
              "(cuts crossing at a shallow angle?); move the cuts apart or change "
              "model{{tolerance=}}",
-             tolerance_, base_index_ + 1, last_fix_.x, last_fix_.y, describe_pieces(last_bent_));
+           tolerance_, base_index_ + 1, last_fix_.x, last_fix_.y, describe_pieces(last_bent_));
     }
     out.dropped_cuts += dropped_;
+    out.cuts_left_out += left_out_;
     extract(out);
   }
 
  private:
+  // Leaves out, of each optional piece bent at p, the segment nearest to p: a piece that is one
+  // segment goes, a longer one splits in two there. False if there was none.
+  bool leave_out_optional(const std::vector<std::pair<int, Vec2>>& bent) {
+    std::vector<int> done;
+    for (const auto& [id, p] : bent) {
+      if (!pieces_[static_cast<size_t>(id)].optional || pieces_[static_cast<size_t>(id)].left_out ||
+          std::find(done.begin(), done.end(), id) != done.end())
+        continue;
+      done.push_back(id);
+      ++left_out_;
+      Piece& piece = pieces_[static_cast<size_t>(id)];
+      size_t nearest = 0;
+      double best = INFINITY;
+      for (size_t i = 0; i < piece.segment_count(); ++i) {
+        const Vec2 a = to_vec(piece.points[i]), b = to_vec(piece.points[i + 1]);
+        const Vec2 d = b - a;
+        const double t = std::clamp(dot(p - a, d) / std::max(dot(d, d), 1e-300), 0.0, 1.0);
+        const double distance = norm(a + t * d - p);
+        if (distance < best) best = distance, nearest = i;
+      }
+      Piece after = piece;
+      after.points.erase(after.points.begin(), after.points.begin() + static_cast<long>(nearest) + 1);
+      piece.points.resize(nearest + 1);
+      if (piece.points.size() < 2) piece.left_out = true;
+      if (after.points.size() >= 2) pieces_.push_back(std::move(after));
+    }
+    return !done.empty();
+  }
+
   void build() {
     arrangement_.clear();
     std::vector<Traits::Curve_2> curves;
     for (size_t id = 0; id < pieces_.size(); ++id) {
       const Piece& piece = pieces_[id];
+      if (piece.left_out) continue;
       for (size_t i = 0; i < piece.segment_count(); ++i) {
         const Segment s = piece.segment(i);
         if (!s.is_degenerate()) curves.emplace_back(s, static_cast<int>(id));
@@ -373,6 +413,7 @@ class BaseCutter {
   int snap_small_features() {
     const double slack = 4.0 * tolerance_;
     std::vector<Vec2> fixed_at;
+    bent_in_round_.clear();
     auto near_a_fix = [&](Vec2 p) {
       return std::any_of(fixed_at.begin(), fixed_at.end(), [&](Vec2 q) {
         return std::abs(p.x - q.x) < 2.0 * slack && std::abs(p.y - q.y) < 2.0 * slack;
@@ -402,6 +443,7 @@ class BaseCutter {
             fixed_at.push_back(pv);
             last_fix_ = pv;
             last_bent_ = ids;
+            for (int id : ids) bent_in_round_.emplace_back(id, pv);
             break;
           }
         }
@@ -483,12 +525,14 @@ class BaseCutter {
   double tolerance_;
   Vec2 last_fix_{};             // where the last small feature was, for the error message
   std::vector<int> last_bent_;  // the pieces its fix bent
+  std::vector<std::pair<int, Vec2>> bent_in_round_;  // the pieces the last round's fixes bent, and where
   std::vector<Piece> pieces_;
   std::vector<Point> base_vertices_;
   Arrangement arrangement_;
   std::unordered_set<const void*> inside_faces_;
   std::vector<FaceRings> inside_;
   int dropped_ = 0;
+  int left_out_ = 0;
 };
 
 bool boxes_overlap(const Box& a, const Box& b) {
@@ -519,6 +563,7 @@ BlockSet cut_blocks(const CutInput& input) {
       Piece piece;
       piece.points = {p, q};
       piece.origin = cut.origin;
+      piece.optional = cut.optional;
       const Vec2 pv = to_vec(p), qv = to_vec(q);
       piece_boxes.push_back(bounding_box({pv, qv}));
       pieces.push_back(std::move(piece));

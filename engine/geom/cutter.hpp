@@ -5,6 +5,8 @@
 // (UDEC's rule). Features smaller than the tolerance (a cut passing within `tolerance` of a
 // vertex, a nearly parallel cut forming a sliver) are resolved by bending the cut through the
 // vertex, so no block has an edge or a thickness below the tolerance and none has zero area.
+// Where bending cannot resolve a feature, an optional cut taking part in it (the automatic
+// potential cracks) is left out and counted; any other cut fails with a message naming the cuts.
 #pragma once
 
 #include <vector>
@@ -18,6 +20,7 @@ struct CutSegment {
   Vec2 a, b;           // end points [m]
   EdgeOrigin origin;   // what it is
   int clip = -1;       // keep only the part inside clip_polygons[clip] (-1: no clipping)
+  bool optional = false;  // may be left out where it cannot be laid without a feature below the tolerance
 };
 
 struct CutInput {

@@ -220,11 +220,13 @@ struct FlatBlocks {
   std::vector<int> base;
   std::vector<std::vector<int>> regions;
   int dropped_cuts = 0, joint_edges = 0, snapped_vertices = 0;
+  std::optional<int> cuts_left_out;  // optional: schema-1 files written before it existed have none
 };
 template <class Ar> void fields(Ar& ar, FlatBlocks& b) {
   ar("ring_points", b.ring_points); ar("ring_edges", b.ring_edges); ar("first_ring", b.first_ring);
   ar("area", b.area); ar("centroid", b.centroid); ar("base", b.base); ar("regions", b.regions);
   ar("dropped_cuts", b.dropped_cuts); ar("joint_edges", b.joint_edges); ar("snapped_vertices", b.snapped_vertices);
+  ar("cuts_left_out", b.cuts_left_out);
 }
 
 struct FlatMesh {
@@ -263,6 +265,7 @@ FlatBlocks flatten(const BlockSet& set) {
   f.dropped_cuts = set.dropped_cuts;
   f.joint_edges = set.joint_edges;
   f.snapped_vertices = set.snapped_vertices;
+  f.cuts_left_out = set.cuts_left_out;
   return f;
 }
 
@@ -296,6 +299,7 @@ BlockSet unflatten(FlatBlocks f) {
   set.dropped_cuts = f.dropped_cuts;
   set.joint_edges = f.joint_edges;
   set.snapped_vertices = f.snapped_vertices;
+  set.cuts_left_out = f.cuts_left_out.value_or(0);
   return set;
 }
 

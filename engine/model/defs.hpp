@@ -109,6 +109,7 @@ struct ModelInfo {
   int gridpoints = 0;
   int joint_edges = 0;      // block edges made by joints, each counted once per side
   int dropped_cuts = 0;
+  int cuts_left_out = 0;    // automatic potential-crack cuts that could not be laid clear of the rest
   int regions = 0;
   int joint_sets = 0;
   int crack_seeds = 0;      // crackseed{} inputs

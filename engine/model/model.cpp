@@ -191,8 +191,11 @@ BlockSet Model::cut(const Inputs& inputs) const {
       clip = static_cast<int>(input.clip_polygons.size());
       input.clip_polygons.push_back(resolve_in(inputs, seed.region));
     }
+    // The automatic ones (they come with an outline) are laid where the prepass yielded, not
+    // where a user drew them: one that cannot be laid the tolerance clear of the rest is left out.
+    const bool optional = !seed.outline.empty();
     for (const auto& [a, b] : seed.cuts)
-      input.cuts.push_back({a, b, {EdgeKind::potential, -1, static_cast<int>(i), true}, clip});
+      input.cuts.push_back({a, b, {EdgeKind::potential, -1, static_cast<int>(i), true}, clip, optional});
     for (const auto& [a, b] : seed.outline) input.cuts.push_back({a, b, {EdgeKind::region, -1, -1, true}, -1});
     if (!seed.cuts.empty()) continue;
     for (const double angle : seed.angles) {
@@ -261,6 +264,7 @@ ModelInfo Model::info() const {
   info.gridpoints = mesh_.gp_count();
   info.joint_edges = blocks_.joint_edges;
   info.dropped_cuts = blocks_.dropped_cuts;
+  info.cuts_left_out = blocks_.cuts_left_out;
   info.regions = static_cast<int>(inputs_.regions.size());
   info.joint_sets = static_cast<int>(inputs_.joint_sets.size());
   info.crack_seeds = static_cast<int>(inputs_.crack_seeds.size());

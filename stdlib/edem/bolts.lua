@@ -30,8 +30,9 @@
 --                  accepts; the others keep their places in the spacing
 --   free_length m  >= 0, optional: passed on to bolt{} (the ungrouted length from the head)
 --   missing        "error" (default) or "skip": what a head with no rock near it on either side
---                  does (see below), and a bolt whose far end lies outside the rock; "skip" leaves
---                  such bolts out, as where rock has fallen out and there is nothing to bolt into
+--                  or with rock on both sides does (see below), and a bolt whose far end lies
+--                  outside the rock; "skip" leaves such bolts out, as where rock has fallen out and
+--                  there is nothing to bolt into, or fallen rock lies against the wall
 --   Returns the list of the bolt ids laid, in order along the surface, their count, and the
 --   number of heads skipped (missing = "skip").
 --   The normal: a head inside a segment takes the segment's normal; a head on a vertex between
@@ -39,7 +40,8 @@
 --   side is found at each head: zone_at() a tenth of the bolt's length off the wall on both
 --   sides along the normal (not nearer: a model{ tolerance } can bend the blocks' outlines off
 --   the drawn outline by a fraction of a metre); a point is rock when a zone holds it that
---   is not excavated and has a material other than "null". Rock on both sides stops the script:
+--   is not excavated and has a material other than "null". Rock on both sides stops the script
+--   (unless missing = "skip"):
 --   "bolts.pattern: the wall at (x, y) has rock on both sides". Rock on neither (the wall is
 --   gone there: a block fell out of it) takes the side where rock comes first along the normal,
 --   up to half the bolt's length away, and the bolt starts where the rock begins (found in steps
@@ -245,11 +247,13 @@ function bolts.pattern(t)
       end
       local plus = is_rock(x + probe * n[1], y + probe * n[2])
       local minus = is_rock(x - probe * n[1], y - probe * n[2])
-      if plus and minus then
+      if plus and minus and o.missing ~= "skip" then
         error(("bolts.pattern: the wall at (%s, %s) has rock on both sides"):format(show(x), show(y)), 2)
       end
       local sign, start = plus and 1 or -1, nil
-      if plus or minus then
+      if plus and minus then
+        skipped = skipped + 1  -- rock that fell into the opening lies against the wall
+      elseif plus or minus then
         start = rock_within(sign * n[1], sign * n[2])
       else
         local ahead, behind = rock_within(n[1], n[2]), rock_within(-n[1], -n[2])

@@ -21,7 +21,7 @@
 --   the seed's sequence in small (in-situ stress, each stage excavated, solved, then bolted): the
 --     same bolts, the first stage's in tension at the end, none out of service;
 --   bad input: the key and value named and the caller's line blamed; a wall in solid rock
---     ("rock on both sides") or in the opening ("on neither side"; with missing = "skip" its
+--     ("rock on both sides") or in the opening ("on neither side"; with missing = "skip" either's
 --     heads are skipped and counted); bolt{}'s own refusal (a bolt
 --     running out of the model) named with the bolt.
 local check = require "edem.check"
@@ -305,6 +305,15 @@ do
   local heads = math.floor((2 - t.spacing / 2) / t.spacing) + 1
   check.report("missing = \"skip\": bolts laid on a wall with no rock near it", laid, 0, 0, { absolute = true })
   check.report("missing = \"skip\": heads skipped", skipped, heads, 0, { absolute = true })
+end
+-- A "wall" inside the rock (as where fallen rock lies against it), told to skip: nothing laid,
+-- every head counted as skipped.
+do
+  local t = with{ surface = { { 20, -5 }, { 20, 5 } }, missing = "skip" }
+  local _, laid, skipped = bolts.pattern(t)
+  local heads = math.floor((10 - t.spacing / 2) / t.spacing) + 1
+  check.report("missing = \"skip\": bolts laid on a wall with rock on both sides", laid, 0, 0, { absolute = true })
+  check.report("missing = \"skip\": heads with rock on both sides skipped", skipped, heads, 0, { absolute = true })
 end
 -- Bolts whose far end lies outside the rock (40 m: out of the model), told to skip: the rest laid,
 -- those counted, no error. The same heads with 5 m bolts are all laid.
