@@ -17,6 +17,11 @@ const std::vector<std::string>& solvers() {
   return names;
 }
 
+const std::vector<std::string>& failure_modes() {
+  static const std::vector<std::string> names{"error", "keep"};
+  return names;
+}
+
 const char* state_name(std::uint8_t bits) {
   if (bits & kExcavatedInPrepass) return "excavated";
   const bool shear = bits & kShearNow, tension = bits & kTensionNow;
@@ -43,6 +48,8 @@ void push_stages(lua_State* L, const PrepassResult& r) {
     set_field(L, "cutbacks", s.log.cutbacks);
     set_field(L, "seconds", s.log.seconds);
     set_field(L, "force_scale", s.log.scale);
+    set_field(L, "reached", s.log.reached);
+    if (!s.log.failure.empty()) set_field(L, "failure", std::string_view(s.log.failure));
     lua_createtable(L, static_cast<int>(s.log.steps.size()), 0);
     for (size_t j = 0; j < s.log.steps.size(); ++j) {
       const LoadStep& step = s.log.steps[j];
@@ -110,8 +117,10 @@ void push_gridpoints(lua_State* L, const PrepassResult& r) {
 
 // The table prepass{} returns.
 void push_result(lua_State* L, const PrepassResult& r) {
-  lua_createtable(L, 0, 4);
+  lua_createtable(L, 0, 5);
   set_field(L, "seconds", r.seconds);
+  if (!r.stages.empty() && !r.stages.back().log.failure.empty())
+    set_field(L, "failure", std::string_view(r.stages.back().log.failure));
   push_stages(L, r);
   push_zones(L, r);
   push_gridpoints(L, r);
@@ -130,11 +139,15 @@ int run_prepass(lua_State* L, Context& context, const Args& args) {
                                             : PrepassSolver::umfpack;
   def.joints = args.boolean("joints");
   def.duration = args.number("duration");
+  def.newton.keep_on_failure = args.string("on_failure") == "keep";
   const PrepassResult r = context.model().prepass(def);
   if (!context.quiet) {
     int iterations = 0;
     for (const PrepassStage& s : r.stages) iterations += s.log.iterations;
     fmt::print("prepass: {} stage(s), {} Newton iterations, {:.3g} s\n", r.stages.size(), iterations, r.seconds);
+    if (!r.stages.empty() && !r.stages.back().log.failure.empty())
+      fmt::print("prepass: stopped short, kept to load factor {:.4g} of the last stage: {}\n",
+                 r.stages.back().log.reached, r.stages.back().log.failure);
     std::fflush(stdout);
   }
   push_result(L, r);
@@ -160,9 +173,12 @@ const Command& prepass_command() {
           "triangles, small strain, plane strain; elastic and Mohr-Coulomb zones), then excavates each of "
           "`stages` in turn and solves again, with KINSOL's Newton method and line search on the consistent "
           "tangent. Each stage's out-of-balance force is applied in `steps` load steps, a step that fails is "
-          "halved (up to 10 times) before the stage fails with a message naming it. The model is left as it "
-          "was. Returns a table: stages (name, iterations, cutbacks, seconds, steps with each Newton "
-          "iterate's residual), zones (id, x, y, state over all stages and states per stage: none, shear, "
+          "halved (up to 10 times) before the stage fails with a message naming it (on_failure = \"keep\": "
+          "the prepass ends there instead and returns what it found up to that stage's last converged step, "
+          "with failure set, as near collapse where the continuum has no static state). The model is left as it "
+          "was. Returns a table: failure (only when it stopped short: the message), stages (name, iterations, "
+          "cutbacks, seconds, reached (load factor of the last converged step: 1 unless it stopped short), "
+          "failure (the stage that stopped short), steps with each Newton iterate's residual), zones (id, x, y, state over all stages and states per stage: none, shear, "
           "tension, shear+tension, excavated; stresses, principal s1 (most compressive) and s3, angle of "
           "s1 from +x in degrees) and gridpoints (id, ux, uy: displacement the prepass adds). Joints are "
           "zero-thickness interface elements between node pairs across them (the zoning puts the two faces' "
@@ -185,6 +201,10 @@ const Command& prepass_command() {
               {"duration", Type::number, "s", ge(0), "0",
                "held gridpoints with a velocity (boundary{ xvel, yvel }) move by velocity x duration in the first "
                "stage, in its load steps (static mode: velocities are per cycle, so this is cycles)"},
+              {"on_failure", Type::string, "", any_value, "\"error\"",
+               "a stage whose Newton iterations do not converge: error stops the script; keep ends the prepass "
+               "there and returns the result so far (its failure says why)",
+               "", failure_modes},
               {"joints", Type::boolean, "", any_value, "true",
                "joints as interface elements; false: each joint's faces tied together (the rock mass as one "
                "continuum)"},

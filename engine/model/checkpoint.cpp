@@ -171,6 +171,13 @@ template <class Ar> void fields(Ar& ar, LoadStep& s) {
 template <class Ar> void fields(Ar& ar, StageLog& l) {
   ar("steps", l.steps); ar("iterations", l.iterations); ar("cutbacks", l.cutbacks); ar("scale", l.scale);
   ar("seconds", l.seconds);
+  // Optional: schema-1 files written before a prepass could stop short have neither.
+  std::optional<std::string> failure = l.failure;
+  std::optional<double> reached = l.reached;
+  ar("failure", failure);
+  ar("reached", reached);
+  l.failure = failure.value_or("");
+  l.reached = reached.value_or(1.0);
 }
 template <class Ar> void fields(Ar& ar, PrepassStage& s) { ar("name", s.name); ar("log", s.log); }
 template <class Ar> void fields(Ar& ar, PrepassResult& r) {

@@ -116,7 +116,9 @@ PrepassResult Model::prepass(const PrepassDef& def) {
     }
     u = p.u0;
     for (size_t k = 0; k < p.pairs.size(); ++k) pair_state[static_cast<size_t>(p.pair_index[k])] = p.pair_state0[k];
+    const bool stopped = !log.failure.empty();
     result.stages.push_back({name, std::move(log)});
+    if (stopped) break;  // kept: the result ends with the stage that failed
   }
   for (int z : result.zones) result.stress.push_back(stress[static_cast<size_t>(z)]);
   result.gridpoint_u.resize(static_cast<size_t>(mesh_.gp_count()));

@@ -21,6 +21,7 @@ struct NewtonSettings {
   int max_iterations = 30;       // Newton iterations per load step before it is cut back
   int max_cutbacks = 10;         // halvings of one step before the stage fails
   PrepassSolver solver = PrepassSolver::umfpack;
+  bool keep_on_failure = false;  // a stage that fails ends the prepass there instead of throwing
 };
 
 struct LoadStep {
@@ -35,6 +36,8 @@ struct StageLog {
   int cutbacks = 0;
   double scale = 0.0;             // force scale [N/m]
   double seconds = 0.0;
+  std::string failure;            // keep_on_failure: why the stage stopped short of its full load
+  double reached = 1.0;           // the load factor of its last converged step
 };
 
 

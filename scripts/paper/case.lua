@@ -16,10 +16,12 @@
 --   similar   deg: crackseed{ auto }'s grouping angle [45]
 --   tolerance model{}'s geometric tolerance [7e-4]
 --   table     CSV file the result row is appended to [case_results.csv]
+--   threads   recorded in the table: the threads the run was given [OMP_NUM_THREADS, else default]
 --   strict    true: a step that stops on an error fails the script (after the row and pictures)
 --             instead of only being recorded [false]
 -- Steps: the region with the case's joints and the cavern's steps cut as regions; the prepass of
--- the rock mass as one continuum (Mohr-Coulomb rock of the set, joints tied) over all the steps;
+-- the rock mass as one continuum (Mohr-Coulomb rock of the set, joints tied) over all the steps
+-- (where the continuum has no static state it ends there: on_failure = "keep", noted in the row);
 -- potential cracks where it yields (crackseed{ auto }, spacing a tenth of the cavern's height,
 -- 4.8 m; the set's intact strength); then elastic rock, the set's Coulomb joints and the
 -- potential cracks, in-situ stress solved, displacements reset, and each step excavated, solved
@@ -41,6 +43,8 @@ local SET, EDGE, FAR = tostring(setting("set", "M")), setting("edge", 1.5), sett
 local STAGES, RELEASE = setting("stages", 16), setting("release", 1000)
 local SIMILAR, TOLERANCE = setting("similar", 45), setting("tolerance", 7e-4)
 local TABLE = tostring(setting("table", "case_results.csv"))
+-- For the table only: the threads it ran on, as the caller set them (edem --threads N --set threads=N).
+local THREADS = tostring(setting("threads", os.getenv("OMP_NUM_THREADS") or "default"))
 assert(BOLTS == "none" or BOLTS == "1" or BOLTS == "2", "bolts must be none, 1 or 2, got " .. BOLTS)
 local tag = ("case%d_%s_h%g_%s"):format(CASE, SET, DEPTH, BOLTS == "none" and "none" or "pattern" .. BOLTS)
 local started = os.time()
@@ -56,7 +60,16 @@ material{ "intact", model = "mohr", density = rock.density, young = rock.young, 
 assign{ material = "intact" }
 local names = {}
 for _, s in ipairs(c.stages) do names[#names + 1] = s.name end
-local pre = prepass{ stages = names, joints = false, steps = 2 }
+-- Near collapse the continuum may have no static state at a late step (Set M deeper than 158 m):
+-- the prepass then ends there, and the cracks go where it yielded up to that point.
+local pre = prepass{ stages = names, joints = false, steps = 2, on_failure = "keep" }
+local prepass_note = "complete"
+if pre.failure then
+  local last = pre.stages[#pre.stages]
+  prepass_note = ("%s at load factor %.3g"):format(last.name, last.reached)
+  print(("%s: the prepass found no static state in %s: cracks placed from the zones yielded so far"):format(
+    tag, prepass_note))
+end
 local yielded = 0
 for _, z in ipairs(pre.zones) do if z.state ~= "none" then yielded = yielded + 1 end end
 plot{ file = tag .. "_prepass.png", show = { "prepass", "joints" }, window = { -60, 60, -50, 60 } }
@@ -66,8 +79,8 @@ local groups = crackseed{ auto = pre, spacing = 4.8, material = "intact", simila
 material{ "rock", density = rock.density, young = rock.young, poisson = rock.poisson }
 assign{ material = "rock" }
 local n = info()
-print(("%s: %d zones yielded in the prepass, %d crack groups, %d sections; %d blocks, %d zones"):format(
-  tag, yielded, #groups, n.sections, n.blocks, n.zones))
+print(("%s: %d zones yielded in the prepass, %d crack groups, %d sections (%d crack pieces left out); %d blocks, "
+       .. "%d zones"):format(tag, yielded, #groups, n.sections, n.cuts_left_out, n.blocks, n.zones))
 local r = solve{ ratio = 1e-6, max_cycles = 20000 }
 reset{ "displacement", "velocity" }
 
@@ -90,16 +103,17 @@ local function rock_gridpoint_near(x, y)
   return found
 end
 local crown = rock_gridpoint_near(c.crown[1], c.crown[2])
-local left, right = rock_gridpoint_near(-12, 0), rock_gridpoint_near(12, 0)
-local function width_now()
-  local a, b
-  for g in gridpoints() do
-    if g.id == left.id then a = g end
-    if g.id == right.id then b = g end
-  end
-  return (b.x + b.ux) - (a.x + a.ux)
+-- Each side wall's points at the springline (y = 0) and halfway down the benches (y = -12).
+local left_wall = { rock_gridpoint_near(-12, 0).id, rock_gridpoint_near(-12, -12).id }
+local right_wall = { rock_gridpoint_near(12, 0).id, rock_gridpoint_near(12, -12).id }
+local function ux_of(ids)
+  local want, sum = {}, 0
+  for _, id in ipairs(ids) do want[id] = true end
+  for g in gridpoints() do if want[g.id] then sum = sum + g.ux end end
+  return sum / #ids
 end
-local width0 = width_now()
+-- How far each wall has moved into the opening, the mean of its two points [m].
+local function wall_moves() return ux_of(left_wall), -ux_of(right_wall) end
 local function settlement()
   for g in gridpoints() do if g.id == crown.id then return -g.uy end end
 end
@@ -164,25 +178,42 @@ end
 cancel(mucking)
 
 -- The result row.
-local tension, shear, left_cracks, right_cracks = 0, 0, 0, 0
+local tension, shear, left_cracks, right_cracks, left_y, right_y = 0, 0, 0, 0, 0, 0
 for k in cracks() do
   if k.mode == "tension" then tension = tension + 1 else shear = shear + 1 end
-  if k.x < 0 then left_cracks = left_cracks + 1 else right_cracks = right_cracks + 1 end
+  if k.x < 0 then
+    left_cracks, left_y = left_cracks + 1, left_y + k.y
+  else
+    right_cracks, right_y = right_cracks + 1, right_y + k.y
+  end
 end
-local convergence = width0 - width_now()
+local function mean(sum, n) return n > 0 and sum / n or 0 end
+local slipping, slipped = 0, 0
+for k in contacts() do
+  if k.state == "slip" then slipping = slipping + 1 end
+  if k.slip > 0 then slipped = slipped + 1 end
+end
+local left_moves, right_moves = wall_moves()
 local seconds = os.time() - started
-local header = "case,set,depth,bolts,steps,cracks,tension,shear,left,right,crown_settlement_m,convergence_m,fallen,bolts_laid,bolts_skipped,seconds,stopped"
+local columns = { "case", "set", "depth", "bolts", "steps", "cracks", "tension", "shear", "left", "right",
+                  "left_mean_y_m", "right_mean_y_m", "crown_settlement_m", "left_wall_m", "right_wall_m",
+                  "convergence_m", "slipping", "slipped", "fallen", "bolts_laid", "bolts_skipped", "cuts_left_out",
+                  "threads", "seconds", "prepass_stopped", "stopped" }
+local row = { CASE, SET, DEPTH, BOLTS, done, tension + shear, tension, shear, left_cracks, right_cracks,
+              ("%.3f"):format(mean(left_y, left_cracks)), ("%.3f"):format(mean(right_y, right_cracks)),
+              ("%.5f"):format(settlement()), ("%.5f"):format(left_moves), ("%.5f"):format(right_moves),
+              ("%.5f"):format(left_moves + right_moves), slipping, slipped, fallen, laid, skipped, info().cuts_left_out,
+              THREADS, seconds, prepass_note == "complete" and '""' or ('"' .. prepass_note .. '"'), '"' .. stopped:gsub('"', "'") .. '"' }
+for i, v in ipairs(row) do row[i] = tostring(v) end
 local existing = io.open(TABLE, "r")
 local out = assert(io.open(TABLE, "a"))
-if not existing then out:write(header, "\n") else existing:close() end
-out:write(("%d,%s,%g,%s,%d,%d,%d,%d,%d,%d,%.5f,%.5f,%d,%d,%d,%d,\"%s\"\n"):format(CASE, SET, DEPTH, BOLTS, done,
-  tension + shear, tension, shear, left_cracks, right_cracks, settlement(), convergence, fallen, laid, skipped,
-  seconds, stopped:gsub("\"", "'")))
+if not existing then out:write(table.concat(columns, ","), "\n") else existing:close() end
+out:write(table.concat(row, ","), "\n")
 out:close()
-print(("%s: %d steps, %d cracks (%d tension, %d shear; %d left, %d right), crown %.4f m, convergence %.4f m, "
-       .. "%d fallen, %d bolts (%d skipped), %d s%s"):format(tag, done, tension + shear, tension, shear,
-  left_cracks, right_cracks, settlement(), convergence, fallen, laid, skipped, seconds,
-  stopped ~= "" and ("; stopped at " .. stopped) or ""))
+print(("%s: %d steps, %d cracks (%d tension, %d shear; %d left, %d right), crown %.4f m, walls in %.4f (left) "
+       .. "and %.4f m (right), %d contacts slipping, %d fallen, %d bolts (%d skipped), %d s%s"):format(tag, done,
+  tension + shear, tension, shear, left_cracks, right_cracks, settlement(), left_moves, right_moves, slipping, fallen,
+  laid, skipped, seconds, stopped ~= "" and ("; stopped at " .. stopped) or ""))
 
 plot{ file = tag .. "_cracks.png", show = { "blocks", "cracks", "bolts" }, window = { -50, 50, -40, 50 } }
 profile{ from = { -60, c.crown[2] + 10 }, to = { 60, c.crown[2] + 10 }, quantity = "uy", points = 61,

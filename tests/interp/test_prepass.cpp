@@ -92,6 +92,53 @@ TEST(Prepass, YieldedZonesAreReported) {
   )");
 }
 
+// Rock too weak for the hole (c = 0.3 MPa, 10 deg, under 2 and 1 MPa): the continuum has no static
+// state once the hole is half unloaded. By default that stops the script naming the stage; with
+// on_failure = "keep" the prepass ends there and returns what it found up to the last converged
+// step: the stage's reached load factor, its yielded zones, no later stage, and the model as it was.
+TEST(Prepass, AStageWithNoStaticStateEndsThePrepassWhenKept) {
+  const std::string weak = std::string(kPlate) + R"(
+    zone{ edge = 1 }
+    material{ "rock", model = "mohr", young = 1e9, poisson = 0.25, cohesion = 0.3e6, friction = 10 }
+  )";
+  {
+    Interpreter interpreter;
+    interpreter.context().quiet = true;
+    EXPECT_TRUE(contains(error_of(interpreter, weak + "prepass{ stages = { \"hole\", \"slot\" }, iterations = 8 }"),
+                         "stage 1 (hole): Newton did not converge from load factor"));
+  }
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, weak + R"(
+    local pre = prepass{ stages = { "hole", "slot" }, iterations = 8, on_failure = "keep" }
+    assert(pre.failure and pre.failure:find("stage 1 (hole): Newton did not converge", 1, true), tostring(pre.failure))
+    assert(#pre.stages == 2, "present state and the hole, no slot: " .. #pre.stages)
+    assert(pre.stages[1].reached == 1 and pre.stages[1].failure == nil)
+    local reached = pre.stages[2].reached
+    assert(reached > 0.1 and reached < 1, "reached " .. reached)
+    assert(pre.stages[2].failure == pre.failure)
+    local yielded, excavated, in_hole = 0, 0, 0
+    for _, z in ipairs(pre.zones) do
+      assert(#z.states == 2)
+      local inside = z.x > 4 and z.x < 6 and z.y > 4 and z.y < 6
+      if inside then in_hole = in_hole + 1 end
+      if z.states[2] == "excavated" then
+        assert(inside, "excavated outside the hole")
+        excavated = excavated + 1
+      elseif z.states[2] ~= "none" then
+        yielded = yielded + 1
+      end
+    end
+    assert(excavated == in_hole, ("the hole's zones: %d excavated of %d"):format(excavated, in_hole))
+    assert(yielded > 0, "the wall yields before the collapse")
+    for z in zones() do assert(not z.excavated and z.state == "elastic") end
+    assert(info().cycle == 0)
+    -- crackseed{ auto } takes the kept result as any other.
+    local groups = crackseed{ auto = pre, spacing = 1, material = "rock" }
+    assert(#groups > 0)
+  )");
+}
+
 // Joints as interface elements: two blocks on a horizontal joint, pressed from the top with the
 // sides on rollers (uniaxial strain): the top moves p H / M + p / kn (M = E (1 - nu) / ((1 + nu)
 // (1 - 2 nu))), as the explicit solver finds too.

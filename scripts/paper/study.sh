@@ -1,0 +1,88 @@
+#!/usr/bin/env bash
+# The seed paper's study (issue 9) in one command: every run of scripts/paper/case.lua the
+# trends need, then scripts/paper/trends.lua over their rows.
+#
+#   bash scripts/paper/study.sh [--edem PATH] [--out DIR] [--jobs N] [--threads T] [--reduced]
+#                               [--strict] [-- --set KEY=VALUE ...]
+#
+#   --edem     the edem to run [build/interp/edem]
+#   --out      where the table, the pictures and the logs go [paper-study]
+#   --jobs     runs at a time [1]
+#   --threads  threads each run cycles on [2]
+#   --reduced  the version CI runs: zones twice as large (edge 3 m near the cavern, 20 m far) and
+#              the first 8 of the 16 steps; the same runs and trends
+#   --strict   exit 1 unless every trend holds
+#   after --    more settings for every run (e.g. -- --set set=P)
+#
+# The runs (Set M unless told otherwise): Cases 1, 2 and 3 at 158 m without bolts; Case 3 at
+# 212 m and 262 m without bolts; Case 3 at 158 m with bolt patterns 1 and 2. Each writes its own
+# row (OUT/TAG.csv) and pictures; OUT/study.csv gathers the rows and OUT/trends.md the verdicts.
+set -euo pipefail
+
+here=$(cd "$(dirname "$0")" && pwd)
+edem=build/interp/edem out=paper-study jobs=1 threads=2 reduced=0 strict=false
+extra=()
+while [[ $# -gt 0 ]]; do
+  case "$1" in
+    --edem) edem=$2; shift 2 ;;
+    --out) out=$2; shift 2 ;;
+    --jobs) jobs=$2; shift 2 ;;
+    --threads) threads=$2; shift 2 ;;
+    --reduced) reduced=1; shift ;;
+    --strict) strict=true; shift ;;
+    --) shift; extra=("$@"); break ;;
+    *) echo "study.sh: unknown option '$1' (see the comment at the top of $0)" >&2; exit 2 ;;
+  esac
+done
+edem=$(cd "$(dirname "$edem")" && pwd)/$(basename "$edem")
+[[ -x $edem ]] || { echo "study.sh: no edem at $edem (build it, or give --edem)" >&2; exit 2; }
+mkdir -p "$out"
+out=$(cd "$out" && pwd)
+
+common=(--set "threads=$threads")
+if [[ $reduced == 1 ]]; then common+=(--set edge=3 --set far=20 --set stages=8); fi
+runs=(
+  "case=1 depth=158 bolts=none"
+  "case=2 depth=158 bolts=none"
+  "case=3 depth=158 bolts=none"
+  "case=3 depth=212 bolts=none"
+  "case=3 depth=262 bolts=none"
+  "case=3 depth=158 bolts=1"
+  "case=3 depth=158 bolts=2"
+)
+
+one_run() {  # one_run "case=1 depth=158 bolts=none"
+  local settings=() name
+  for kv in $1; do settings+=(--set "$kv"); done
+  name=$(echo "$1" | tr ' =' '_-')
+  rm -f "$out/$name.csv"
+  if (cd "$out" && "$edem" --quiet --threads "$threads" "${common[@]}" "${extra[@]}" "${settings[@]}" \
+        --set "table=$name.csv" run "$here/case.lua" > "$name.log" 2>&1); then
+    echo "study: $1 done ($(tail -n 1 "$out/$name.log" | cut -c1-160))"
+  else
+    echo "study: $1 failed; its last lines:"; tail -n 3 "$out/$name.log"
+  fi
+}
+export -f one_run
+export edem out threads here
+export common_flat="${common[*]}" extra_flat="${extra[*]}"
+
+started=$(date +%s)
+printf '%s\n' "${runs[@]}" | xargs -P "$jobs" -I{} bash -c \
+  'common=($common_flat); extra=($extra_flat); one_run "$1"' _ {}
+
+# One table: the header once, then each run's row.
+tables=()
+for r in "${runs[@]}"; do
+  f="$out/$(echo "$r" | tr ' =' '_-').csv"
+  [[ -f $f ]] && tables+=("$f")
+done
+{
+  [[ ${#tables[@]} -gt 0 ]] && head -n 1 "${tables[0]}"
+  for f in "${tables[@]}"; do tail -n +2 "$f"; done
+} > "$out/study.csv"
+echo "study: ${#tables[@]} of ${#runs[@]} runs wrote a row, $(($(date +%s) - started)) s; table $out/study.csv"
+set_arg=()
+for kv in "${extra[@]}"; do [[ $kv == set=* ]] && set_arg=(--set "$kv"); done
+cd "$out" && "$edem" --quiet "${set_arg[@]}" --set tables=study.csv --set markdown=trends.md \
+  --set strict=$strict run "$here/trends.lua"
