@@ -170,9 +170,9 @@ class BaseCutter {
         continue;
       }
       fail("cannot resolve geometry features smaller than the tolerance ({:.3g} m) in block {}: "
-             "near ({:.4g}, {:.4g}) {} keep coming closer than that after being bent together "
-             "(cuts crossing at a shallow angle?); move the cuts apart or change "
-             "model{{tolerance=}}",
+           "near ({:.4g}, {:.4g}) {} keep coming closer than that after being bent together "
+           "(cuts crossing at a shallow angle?); move the cuts apart or change "
+           "model{{tolerance=}}",
            tolerance_, base_index_ + 1, last_fix_.x, last_fix_.y, describe_pieces(last_bent_));
     }
     out.dropped_cuts += dropped_;

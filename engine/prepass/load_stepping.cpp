@@ -224,20 +224,17 @@ StageLog solve_stage(const Mechanics& m, ImplicitProblem& p, const NewtonSetting
       continue;
     }
     ++log.cutbacks;
-    if (++halvings > settings.max_cutbacks && settings.keep_on_failure) {
-      // The state stays at the last converged step; the caller solves no further stage.
-      log.failure = fmt::format("{}: Newton did not converge from load factor {:.6g} to {:.6g} after {} cut-backs: "
-                                "out-of-balance force {:.3g} of the scale {:.3g} N/m (KINSOL: {})",
-                                stage, done, to, settings.max_cutbacks, largest / s.scale, s.scale,
-                                s.error.empty() ? flag_name(flag) : s.error);
+    if (++halvings > settings.max_cutbacks) {
+      const std::string why = fmt::format(
+          "{}: Newton did not converge from load factor {:.6g} to {:.6g} after {} cut-backs: out-of-balance force "
+          "{:.3g} of the scale {:.3g} N/m (KINSOL: {})",
+          stage, done, to, settings.max_cutbacks, largest / s.scale, s.scale, s.error.empty() ? flag_name(flag) : s.error);
+      if (!settings.keep_on_failure) fail("{}; more steps, or a softer load path, may help", why);
+      // Kept: the state stays at the last converged step, and the caller solves no further stage.
+      log.failure = why;
       log.reached = done;
       break;
     }
-    if (halvings > settings.max_cutbacks)
-      fail("{}: Newton did not converge from load factor {:.6g} to {:.6g} after {} cut-backs: out-of-balance "
-           "force {:.3g} of the scale {:.3g} N/m (KINSOL: {}); more steps, or a softer load path, may help",
-           stage, done, to, settings.max_cutbacks, largest / s.scale, s.scale,
-           s.error.empty() ? flag_name(flag) : s.error);
     size = 0.5 * (to - done);  // of the step tried, which may have been clamped at the end
   }
   log.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -15,7 +15,8 @@
 --   release   cycles over which each step's load comes off [1000]
 --   similar   deg: crackseed{ auto }'s grouping angle [45]
 --   tolerance model{}'s geometric tolerance [7e-4]
---   table     CSV file the result row is appended to [case_results.csv]
+--   table     CSV file the result row is appended to [case_results.csv]; a row after each step
+--             goes to the same name with _steps before .csv
 --   threads   recorded in the table: the threads the run was given [OMP_NUM_THREADS, else default]
 --   strict    true: a step that stops on an error fails the script (after the row and pictures)
 --             instead of only being recorded [false]
@@ -43,6 +44,7 @@ local SET, EDGE, FAR = tostring(setting("set", "M")), setting("edge", 1.5), sett
 local STAGES, RELEASE = setting("stages", 16), setting("release", 1000)
 local SIMILAR, TOLERANCE = setting("similar", 45), setting("tolerance", 7e-4)
 local TABLE = tostring(setting("table", "case_results.csv"))
+local STEPS_TABLE = TABLE:gsub("%.csv$", "") .. "_steps.csv"  -- a row after each step
 -- For the table only: the threads it ran on, as the caller set them (edem --threads N --set threads=N).
 local THREADS = tostring(setting("threads", os.getenv("OMP_NUM_THREADS") or "default"))
 assert(BOLTS == "none" or BOLTS == "1" or BOLTS == "2", "bolts must be none, 1 or 2, got " .. BOLTS)
@@ -155,9 +157,53 @@ local function bolt_step(s)
   end
 end
 
+local done, stopped = 0, ""  -- steps done; where the run stopped, if it did
+
+-- The result row: after each step into TABLE's _steps file, and at the end into TABLE.
+local columns = { "case", "set", "depth", "bolts", "steps", "cracks", "tension", "shear", "left", "right",
+                  "left_mean_y_m", "right_mean_y_m", "crown_settlement_m", "left_wall_m", "right_wall_m",
+                  "convergence_m", "slipping", "slipped", "fallen", "bolts_laid", "bolts_skipped", "cuts_left_out",
+                  "threads", "seconds", "prepass_stopped", "stopped" }
+local function result_row()
+  local r = { tension = 0, shear = 0, left = 0, right = 0 }
+  local left_y, right_y = 0, 0
+  for k in cracks() do
+    if k.mode == "tension" then r.tension = r.tension + 1 else r.shear = r.shear + 1 end
+    if k.x < 0 then
+      r.left, left_y = r.left + 1, left_y + k.y
+    else
+      r.right, right_y = r.right + 1, right_y + k.y
+    end
+  end
+  r.left_mean_y = r.left > 0 and left_y / r.left or 0
+  r.right_mean_y = r.right > 0 and right_y / r.right or 0
+  r.slipping, r.slipped = 0, 0
+  for k in contacts() do
+    if k.state == "slip" then r.slipping = r.slipping + 1 end
+    if k.slip > 0 then r.slipped = r.slipped + 1 end
+  end
+  r.left_moves, r.right_moves = wall_moves()
+  r.seconds = os.time() - started
+  local row = { CASE, SET, DEPTH, BOLTS, done, r.tension + r.shear, r.tension, r.shear, r.left, r.right,
+                ("%.3f"):format(r.left_mean_y), ("%.3f"):format(r.right_mean_y), ("%.5f"):format(settlement()),
+                ("%.5f"):format(r.left_moves), ("%.5f"):format(r.right_moves),
+                ("%.5f"):format(r.left_moves + r.right_moves), r.slipping, r.slipped, fallen, laid, skipped,
+                info().cuts_left_out, THREADS, r.seconds,
+                prepass_note == "complete" and '""' or ('"' .. prepass_note .. '"'),
+                '"' .. stopped:gsub('"', "'") .. '"' }
+  for i, v in ipairs(row) do row[i] = tostring(v) end
+  return r, table.concat(row, ",")
+end
+local function append_row(file, line)
+  local existing = io.open(file, "r")
+  local out = assert(io.open(file, "a"))
+  if not existing then out:write(table.concat(columns, ","), "\n") else existing:close() end
+  out:write(line, "\n")
+  out:close()
+end
+
 print(("  %5s %-20s %7s %9s %10s %7s %6s %6s"):format("step", "name", "cycles", "ratio", "crown [m]", "cracks",
                                                    "fallen", "time"))
-local done, stopped = 0, ""
 for i, s in ipairs(c.stages) do
   if i > STAGES then break end
   -- Rock of a later step may have been mucked out already, all of it: then there is nothing left
@@ -174,46 +220,17 @@ for i, s in ipairs(c.stages) do
   done = i
   print(("  %5d %-20s %7d %9.2e %10.4f %7d %6d %6d"):format(i, s.name, result.cycles, result.ratio, settlement(),
                                                            info().cracks, fallen, os.time() - started))
+  append_row(STEPS_TABLE, select(2, result_row()))
 end
 cancel(mucking)
 
--- The result row.
-local tension, shear, left_cracks, right_cracks, left_y, right_y = 0, 0, 0, 0, 0, 0
-for k in cracks() do
-  if k.mode == "tension" then tension = tension + 1 else shear = shear + 1 end
-  if k.x < 0 then
-    left_cracks, left_y = left_cracks + 1, left_y + k.y
-  else
-    right_cracks, right_y = right_cracks + 1, right_y + k.y
-  end
-end
-local function mean(sum, n) return n > 0 and sum / n or 0 end
-local slipping, slipped = 0, 0
-for k in contacts() do
-  if k.state == "slip" then slipping = slipping + 1 end
-  if k.slip > 0 then slipped = slipped + 1 end
-end
-local left_moves, right_moves = wall_moves()
-local seconds = os.time() - started
-local columns = { "case", "set", "depth", "bolts", "steps", "cracks", "tension", "shear", "left", "right",
-                  "left_mean_y_m", "right_mean_y_m", "crown_settlement_m", "left_wall_m", "right_wall_m",
-                  "convergence_m", "slipping", "slipped", "fallen", "bolts_laid", "bolts_skipped", "cuts_left_out",
-                  "threads", "seconds", "prepass_stopped", "stopped" }
-local row = { CASE, SET, DEPTH, BOLTS, done, tension + shear, tension, shear, left_cracks, right_cracks,
-              ("%.3f"):format(mean(left_y, left_cracks)), ("%.3f"):format(mean(right_y, right_cracks)),
-              ("%.5f"):format(settlement()), ("%.5f"):format(left_moves), ("%.5f"):format(right_moves),
-              ("%.5f"):format(left_moves + right_moves), slipping, slipped, fallen, laid, skipped, info().cuts_left_out,
-              THREADS, seconds, prepass_note == "complete" and '""' or ('"' .. prepass_note .. '"'), '"' .. stopped:gsub('"', "'") .. '"' }
-for i, v in ipairs(row) do row[i] = tostring(v) end
-local existing = io.open(TABLE, "r")
-local out = assert(io.open(TABLE, "a"))
-if not existing then out:write(table.concat(columns, ","), "\n") else existing:close() end
-out:write(table.concat(row, ","), "\n")
-out:close()
+local r, line = result_row()
+append_row(TABLE, line)
 print(("%s: %d steps, %d cracks (%d tension, %d shear; %d left, %d right), crown %.4f m, walls in %.4f (left) "
        .. "and %.4f m (right), %d contacts slipping, %d fallen, %d bolts (%d skipped), %d s%s"):format(tag, done,
-  tension + shear, tension, shear, left_cracks, right_cracks, settlement(), left_moves, right_moves, slipping, fallen,
-  laid, skipped, seconds, stopped ~= "" and ("; stopped at " .. stopped) or ""))
+  r.tension + r.shear, r.tension, r.shear, r.left, r.right, settlement(), r.left_moves, r.right_moves, r.slipping,
+  fallen, laid, skipped, r.seconds, stopped ~= "" and ("; stopped at " .. stopped) or ""))
+
 
 plot{ file = tag .. "_cracks.png", show = { "blocks", "cracks", "bolts" }, window = { -50, 50, -40, 50 } }
 profile{ from = { -60, c.crown[2] + 10 }, to = { 60, c.crown[2] + 10 }, quantity = "uy", points = 61,

@@ -16,7 +16,10 @@
 #
 # The runs (Set M unless told otherwise): Cases 1, 2 and 3 at 158 m without bolts; Case 3 at
 # 212 m and 262 m without bolts; Case 3 at 158 m with bolt patterns 1 and 2. Each writes its own
-# row (OUT/TAG.csv) and pictures; OUT/study.csv gathers the rows and OUT/trends.md the verdicts.
+# row (OUT/TAG.csv, a row after each step in OUT/TAG_steps.csv) and pictures; OUT/study.csv and
+# OUT/steps.csv gather them; OUT/trends.md has the verdicts at the runs' ends, and
+# OUT/trends_common_step.md after the last step all runs reached. Exit 1 when a run wrote no row
+# (a script error, not a stop: a stop is recorded in the row), or with --strict a trend fails.
 set -euo pipefail
 
 here=$(cd "$(dirname "$0")" && pwd)
@@ -71,18 +74,32 @@ started=$(date +%s)
 printf '%s\n' "${runs[@]}" | xargs -P "$jobs" -I{} bash -c \
   'common=($common_flat); extra=($extra_flat); one_run "$1"' _ {}
 
-# One table: the header once, then each run's row.
-tables=()
-for r in "${runs[@]}"; do
-  f="$out/$(echo "$r" | tr ' =' '_-').csv"
-  [[ -f $f ]] && tables+=("$f")
-done
-{
-  [[ ${#tables[@]} -gt 0 ]] && head -n 1 "${tables[0]}"
-  for f in "${tables[@]}"; do tail -n +2 "$f"; done
-} > "$out/study.csv"
-echo "study: ${#tables[@]} of ${#runs[@]} runs wrote a row, $(($(date +%s) - started)) s; table $out/study.csv"
+# One table of the runs' ends (study.csv) and one of their rows after each step (steps.csv): the
+# header once, then each run's rows.
+gather() {  # gather SUFFIX FILE
+  local tables=() r f
+  for r in "${runs[@]}"; do
+    f="$out/$(echo "$r" | tr ' =' '_-')$1.csv"
+    [[ -f $f ]] && tables+=("$f")
+  done
+  {
+    [[ ${#tables[@]} -gt 0 ]] && head -n 1 "${tables[0]}"
+    for f in "${tables[@]}"; do tail -n +2 "$f"; done
+  } > "$out/$2"
+  echo "${#tables[@]}"
+}
+written=$(gather "" study.csv)
+gather _steps steps.csv > /dev/null
+echo "study: $written of ${#runs[@]} runs wrote a row, $(($(date +%s) - started)) s; table $out/study.csv"
 set_arg=()
 for kv in "${extra[@]}"; do [[ $kv == set=* ]] && set_arg=(--set "$kv"); done
-cd "$out" && "$edem" --quiet "${set_arg[@]}" --set tables=study.csv --set markdown=trends.md \
-  --set strict=$strict run "$here/trends.lua"
+cd "$out"
+# The trends after the last step every run reached (before any collapse), then at the runs' ends.
+"$edem" --quiet "${set_arg[@]}" --set tables=steps.csv --set step=common --set markdown=trends_common_step.md \
+  run "$here/trends.lua"
+echo
+trends=0
+"$edem" --quiet "${set_arg[@]}" --set tables=study.csv --set markdown=trends.md --set strict=$strict \
+  run "$here/trends.lua" || trends=$?
+[[ $written == "${#runs[@]}" ]] || { echo "study: only $written of ${#runs[@]} runs wrote their row" >&2; exit 1; }
+exit $trends
