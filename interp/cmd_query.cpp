@@ -90,7 +90,7 @@ int zone_count_of(const Mesh& mesh, size_t block) {
 
 void push_block(lua_State* L, const Model& model, size_t index) {
   const Block& block = model.blocks().blocks[index];
-  lua_createtable(L, 0, 12);
+  lua_createtable(L, 0, 14);
   set_field(L, "id", static_cast<long long>(index + 1));
   set_field(L, "area", block.area);
   set_centroid(L, block.centroid);
@@ -112,6 +112,9 @@ void push_block(lua_State* L, const Model& model, size_t index) {
     lua_rawseti(L, -2, static_cast<lua_Integer>(r + 1));
   }
   lua_setfield(L, -2, "regions");
+  const BlockMotion motion = model.block_motion(static_cast<int>(index));
+  set_field(L, "max_displacement", motion.max_displacement);
+  if (motion.excavated > 0) set_field(L, "excavated", motion.excavated);
 }
 
 void push_zone(lua_State* L, const Model& model, size_t index) {
@@ -303,8 +306,11 @@ const Command& blocks_command() {
           "an iterator; each block is a table: id, area, centroid {x =, y =}, x, y, "
           "vertices (list of points), holes (list of point lists), base (its block{} "
           "number), zones (count), region (innermost region's name or nil), regions "
-          "(names of all regions containing it)",
-      .usage = "for b in blocks() do print(b.id, b.area) end",
+          "(names of all regions containing it), max_displacement (the largest displacement of its "
+          "gridpoints [m]), excavated (the last stage that excavated its zones, nil while any "
+          "is in place)",
+      .usage = "for b in blocks() do if not b.excavated and b.max_displacement > 1 then "
+               "excavate{ block = b.id } end end",
   };
   return command;
 }

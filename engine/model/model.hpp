@@ -137,6 +137,7 @@ class Model {
   int zone_at(Vec2 point) const;         // -1 when no zone contains the point
   GridpointView gridpoint(int id) const;
   ZoneView zone_view(int id) const;
+  BlockMotion block_motion(int block) const;  // 0-based block; all zero for a block not zoned
   // Contacts as last found (found now if cycling has not begun); ids are 0-based positions.
   int contact_count() const;
   ContactView contact(int id) const;

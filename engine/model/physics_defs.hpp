@@ -245,6 +245,12 @@ struct ContactView {
   int block = -1, other = -1;  // the gridpoint's block and the edge's block, 0-based
 };
 
+// How far a block has moved and whether it is still there (Model::block_motion).
+struct BlockMotion {
+  double max_displacement = 0.0;  // the largest displacement of its gridpoints [m]
+  int excavated = 0;              // the last stage that excavated its zones, 0 while any is in place
+};
+
 struct ZoneView {
   int id = -1;          // 0-based zone
   Vec2 centroid;        // [m]

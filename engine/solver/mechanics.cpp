@@ -557,4 +557,30 @@ ZoneView Model::zone_view(int id) const {
   return view;
 }
 
+// Mucking out fallen rock asks this of every block every few hundred cycles, so it reads the
+// arrays directly instead of building a view per gridpoint.
+BlockMotion Model::block_motion(int block) const {
+  if (block < 0 || block >= static_cast<int>(blocks_.blocks.size())) fail("no block {}", block + 1);
+  BlockMotion motion;
+  const Mechanics& m = *mechanics_;
+  const size_t b = static_cast<size_t>(block);
+  if (b + 1 >= mesh_.block_first_gp.size() || m.gp_node.empty()) return motion;
+  double largest = 0.0;
+  for (int gp = mesh_.block_first_gp[b]; gp < mesh_.block_first_gp[b + 1]; ++gp) {
+    const size_t n = static_cast<size_t>(m.gp_node[static_cast<size_t>(gp)]);
+    const double u2 = m.u[2 * n] * m.u[2 * n] + m.u[2 * n + 1] * m.u[2 * n + 1];
+    if (!std::isfinite(u2)) fail("block {} holds no finite state: the run went unstable earlier", block + 1);
+    largest = std::max(largest, u2);
+  }
+  motion.max_displacement = std::sqrt(largest);
+  if (m.zone_excavated.empty()) return motion;
+  const int first = mesh_.block_first_zone[b], last = mesh_.block_first_zone[b + 1];
+  for (int z = first; z < last; ++z) {
+    const int stage = m.zone_excavated[static_cast<size_t>(z)];
+    if (stage <= 0) return {motion.max_displacement, 0};
+    motion.excavated = std::max(motion.excavated, stage);
+  }
+  return motion;
+}
+
 }  // namespace edem

@@ -123,16 +123,9 @@ end
 -- Mucking out: blocks whose gridpoints have moved more than 1 m.
 local fallen = 0
 local function muck_out()
-  local worst = {}
-  for g in gridpoints() do
-    local u = math.sqrt(g.ux * g.ux + g.uy * g.uy)
-    if u > (worst[g.block] or 0) then worst[g.block] = u end
-  end
-  local gone = {}
-  for z in zones() do if z.excavated then gone[z.block] = true end end
-  for block, u in pairs(worst) do
-    if not gone[block] and u > 1.0 then
-      excavate{ block = block }
+  for b in blocks() do
+    if not b.excavated and b.max_displacement > 1.0 then
+      excavate{ block = b.id }
       fallen = fallen + 1
     end
   end

@@ -54,6 +54,38 @@ TEST(Excavation, ZonesTurnNullAndTheStageCounts) {
   )");
 }
 
+// blocks() says how far each block has moved and whether it is gone: what mucking out needs.
+TEST(Excavation, BlocksTellTheirLargestDisplacementAndWhetherTheyAreGone) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, std::string(kStack) + R"(
+    for b in blocks() do assert(b.max_displacement == 0 and b.excavated == nil) end
+    solve{ ratio = 1e-6 }
+    local largest = {}
+    for g in gridpoints() do
+      largest[g.block] = math.max(largest[g.block] or 0, math.sqrt(g.ux ^ 2 + g.uy ^ 2))
+    end
+    local moved = 0
+    for b in blocks() do
+      assert(b.max_displacement == largest[b.id], ("block %d: %.17g against %.17g"):format(
+        b.id, b.max_displacement, largest[b.id] or -1))
+      if b.max_displacement > 0 then moved = moved + 1 end
+    end
+    assert(moved > 0, "the blocks settle under gravity")
+    excavate("cut")
+    local gone = 0
+    for b in blocks() do
+      if b.region == "cut" then
+        assert(b.excavated == 1, "the cut's block went in stage 1")
+        gone = gone + 1
+      else
+        assert(b.excavated == nil, "block " .. b.id .. " is in place")
+      end
+    end
+    assert(gone > 0)
+  )");
+}
+
 TEST(Excavation, ContactsWithAnExcavatedBlockGo) {
   Interpreter interpreter;
   interpreter.context().quiet = true;
