@@ -27,7 +27,8 @@
 -- 4.8 m; the set's intact strength); then elastic rock, the set's Coulomb joints and the
 -- potential cracks, in-situ stress solved, displacements reset, and each step excavated, solved
 -- and bolted. Blocks that come loose (a gridpoint 1 m from where it started) are mucked out every
--- 200 cycles, as fallen rock is. A step that stops on an error ends the run; the row says where.
+-- 200 cycles, as fallen rock is. A step that stops on an error ends the run; the row says where,
+-- and which steps reached their 40,000 cycles short of equilibrium (column unconverged).
 -- Writes: the result row, and pictures CASE_prepass.png (the seed's Figure 8), CASE_cracks.png
 -- (Figures 9 and 11) and CASE_profile.png (Figure 12, the settlement 10 m above the crown).
 local seed = require "edem.seed"
@@ -151,12 +152,13 @@ local function bolt_step(s)
 end
 
 local done, stopped = 0, ""  -- steps done; where the run stopped, if it did
+local unconverged = {}       -- steps whose solve reached max_cycles short of the ratio
 
 -- The result row: after each step into TABLE's _steps file, and at the end into TABLE.
 local columns = { "case", "set", "depth", "bolts", "steps", "cracks", "tension", "shear", "left", "right",
                   "left_mean_y_m", "right_mean_y_m", "crown_settlement_m", "left_wall_m", "right_wall_m",
                   "convergence_m", "slipping", "slipped", "fallen", "bolts_laid", "bolts_skipped", "cuts_left_out",
-                  "threads", "seconds", "prepass_stopped", "stopped" }
+                  "threads", "seconds", "prepass_stopped", "unconverged", "stopped" }
 local function result_row()
   local r = { tension = 0, shear = 0, left = 0, right = 0 }
   local left_y, right_y = 0, 0
@@ -183,6 +185,7 @@ local function result_row()
                 ("%.5f"):format(r.left_moves + r.right_moves), r.slipping, r.slipped, fallen, laid, skipped,
                 info().cuts_left_out, THREADS, r.seconds,
                 prepass_note == "complete" and '""' or ('"' .. prepass_note .. '"'),
+                '"' .. table.concat(unconverged, " ") .. '"',
                 '"' .. stopped:gsub('"', "'") .. '"' }
   for i, v in ipairs(row) do row[i] = tostring(v) end
   return r, table.concat(row, ",")
@@ -209,10 +212,11 @@ for i, s in ipairs(c.stages) do
     print("  stopped at " .. stopped)
     break
   end
+  if not result.converged then unconverged[#unconverged + 1] = i end
   if BOLTS ~= "none" then bolt_step(s) end
   done = i
-  print(("  %5d %-20s %7d %9.2e %10.4f %7d %6d %6d"):format(i, s.name, result.cycles, result.ratio, settlement(),
-                                                           info().cracks, fallen, os.time() - started))
+  print(("  %5d %-20s %7d %9.2e %10.4f %7d %6d %6d%s"):format(i, s.name, result.cycles, result.ratio, settlement(),
+    info().cracks, fallen, os.time() - started, result.converged and "" or "  NOT CONVERGED"))
   append_row(STEPS_TABLE, select(2, result_row()))
 end
 cancel(mucking)
@@ -222,7 +226,8 @@ append_row(TABLE, line)
 print(("%s: %d steps, %d cracks (%d tension, %d shear; %d left, %d right), crown %.4f m, walls in %.4f (left) "
        .. "and %.4f m (right), %d contacts slipping, %d fallen, %d bolts (%d skipped), %d s%s"):format(tag, done,
   r.tension + r.shear, r.tension, r.shear, r.left, r.right, settlement(), r.left_moves, r.right_moves, r.slipping,
-  fallen, laid, skipped, r.seconds, stopped ~= "" and ("; stopped at " .. stopped) or ""))
+  fallen, laid, skipped, r.seconds, stopped ~= "" and ("; stopped at " .. stopped) or "")
+  .. (#unconverged > 0 and ("; short of equilibrium after step " .. table.concat(unconverged, ", ")) or ""))
 
 
 plot{ file = tag .. "_cracks.png", show = { "blocks", "cracks", "bolts" }, window = { -50, 50, -40, 50 } }
