@@ -656,8 +656,6 @@ struct Scene {
   double max_bolt_tension = 0.0, max_bolt_compression = 0.0;
 };
 
-// Zones that yielded, as the seed's Figure 8 shows them: in the model's own run (plastic: now
-// or earlier) or in the last prepass{} (over all its stages), filled by mode.
 // Zones in place: not excavated, with a material.
 bool in_place(const ZoneView& zone) { return zone.excavated == 0 && !zone.material.empty(); }
 
@@ -667,6 +665,8 @@ Polygon triangle_of(const Mesh& mesh, int zone) {
   return triangle;
 }
 
+// Zones that yielded, as the seed's Figure 8 shows them: in the model's own run (plastic: now
+// or earlier) or in the last prepass{} (over all its stages), filled by mode.
 void gather_yielded(const Model& model, bool from_prepass, Scene& scene) {
   const Mesh& mesh = model.mesh();
   const std::vector<std::uint8_t>& prepass = model.prepass_yield();

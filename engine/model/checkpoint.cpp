@@ -356,9 +356,6 @@ Mesh unflatten(FlatMesh f) {
   return mesh;
 }
 
-// Array lengths that must agree with the mesh and the node count; a file that passed its checksum
-// only fails these if an EDEM of the same schema wrote something else, but then the message is
-// better than a crash.
 // Every entry of `values` in [low, count); `what` names them in the message.
 void check_range(const std::vector<int>& values, int low, size_t count, std::string_view what) {
   for (const int v : values)
@@ -444,6 +441,9 @@ void check_indices(const Mechanics& m, const Mesh& mesh) {
   check_range(m.bolt_hosts.material, 0, m.bolt_materials.size(), "bolts' materials");
 }
 
+// Array lengths that must agree with the mesh and the node count; a file that passed its checksum
+// only fails these if an EDEM of the same schema wrote something else, but then the message is
+// better than a crash.
 void check_sizes(const Mechanics& m, const Mesh& mesh) {
   const size_t zones = static_cast<size_t>(mesh.zone_count()), nodes = static_cast<size_t>(m.node_count);
   const auto expect = [](size_t got, size_t want, std::string_view what) {
