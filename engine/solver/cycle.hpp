@@ -30,8 +30,8 @@ struct Measure {
   bool finite = true;        // every force and velocity finite
 };
 
-// Runs `count` cycles (>= 1) on prepared mechanics; the last one measures. Deterministic:
-// the same bits for any thread count.
+// Runs `count` cycles (>= 1) on prepared mechanics, each taking its step off a running release;
+// the last one measures. Deterministic: the same bits for any thread count.
 Measure run_cycles(Mechanics& m, int count);
 
 }  // namespace edem

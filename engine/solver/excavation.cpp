@@ -201,21 +201,24 @@ void Model::fill(const FillDef& def) {
 
 int Model::stage() const { return mechanics_->stage; }
 
-// Takes the next cycle's step off the excavation loads; true while a release runs.
-bool step_release(Mechanics& m) {
+long release_cycles_left(const Mechanics& m) {
+  return m.release.dof.empty() ? 0 : std::max(0L, m.release.cycles - m.release.done);
+}
+
+void step_release(Mechanics& m) {
   ReleaseLoad& r = m.release;
-  if (r.dof.empty()) return false;
+  if (r.dof.empty() || r.done >= r.cycles) return;
   r.done += 1;
   const double next = r.done >= r.cycles ? 0.0 : 1.0 - static_cast<double>(r.done) / static_cast<double>(r.cycles);
   for (size_t i = 0; i < r.dof.size(); ++i)
     m.load[static_cast<size_t>(r.dof[i])] += (next - r.factor) * r.force[i];
   r.factor = next;
-  if (next == 0.0) {
-    r = ReleaseLoad{};
-    lump_boundary_loads(m);  // exactly the boundary's own loads again
-    m.dirty = true;          // the applied load the ratio is measured against changed
-  }
-  return true;
+}
+
+void end_release(Mechanics& m) {
+  m.release = ReleaseLoad{};
+  lump_boundary_loads(m);
+  m.dirty = true;  // the applied load the ratio is measured against changed
 }
 
 }  // namespace edem

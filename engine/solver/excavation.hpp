@@ -5,8 +5,15 @@ namespace edem {
 
 struct Mechanics;
 
-// Takes one cycle's share off the loads an excavate{ release = n } holds on the new surface;
-// false when no release is running.
-bool step_release(Mechanics& m);
+// Cycles the running excavate{ release = n } still has to go; 0 when none runs.
+long release_cycles_left(const Mechanics& m);
+
+// Takes one cycle's share off the loads the release holds on the new surface. Touches only
+// Mechanics::load and the release, so the cycle may call it while the zones' forces are summed.
+void step_release(Mechanics& m);
+
+// The release's last step: it ends, and the boundary gets its own loads back exactly (the steps
+// summed would leave rounding behind on the new surface).
+void end_release(Mechanics& m);
 
 }  // namespace edem

@@ -221,17 +221,29 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
       start_adaptive(m);
     }
     const long cycle = m.info.cycle;
-    // An excavation's loads come off a step every cycle while its release runs.
-    const bool releasing = step_release(m);
-    const long batch = releasing ? 1 : std::min(max_cycles - result.cycles, next_due(m, cycle) - cycle);
+    // An excavation's loads come off a step every cycle while its release runs (run_cycles takes
+    // the steps); the last step gives the boundary its own loads back, exactly, before its cycle.
+    const long release_left = release_cycles_left(m);
+    const bool releasing = release_left > 0;
+    long batch = std::min(max_cycles - result.cycles, next_due(m, cycle) - cycle);
+    if (release_left > 1) batch = std::min(batch, release_left - 1);
+    if (release_left == 1) {
+      end_release(m);
+      batch = 1;
+    }
+    // What the run's course depends on is decided on measuring cycles only (contacts found again,
+    // bolts rehosted, the damping adapted), never where a callback or an output frame cut a batch
+    // short: watching a run does not change it.
+    const bool measuring = cycle % kMeasureInterval == 0;
     // Contacts are found again before anything can move a quarter of a reach from where they
-    // were found (allowing twice the last speed over the batch).
-    if (contacts_due(m, 2.0 * speed * m.step * static_cast<double>(batch))) {
+    // were found (allowing twice the last speed until the next measuring cycle), and at once
+    // when the list is no longer current.
+    if ((measuring || !m.contacts.detected) && contacts_due(m, 2.0 * speed * m.step * kMeasureInterval)) {
       detect_contacts(m);
       update_masses(m);
     }
     // Bolt nodes that slid out of their zone take the one they are in now.
-    if (!m.bolts.nodes.x.empty() && rehost_bolts(m)) {
+    if (measuring && !m.bolts.nodes.x.empty() && rehost_bolts(m)) {
       tie_bolts(m);
       update_masses(m);
     }
@@ -244,7 +256,7 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
     m.info.kinetic = measure.kinetic;
     m.info.ratio = measure.applied > 0.0 ? measure.unbalanced / measure.applied : 0.0;
     watch(m, mesh, measure, static_cast<int>(batch));
-    if (m.settings.damping == Damping::adaptive) adapt_damping(m, measure);
+    if (m.settings.damping == Damping::adaptive && m.info.cycle % kMeasureInterval == 0) adapt_damping(m, measure);
     // A model that has just cracked is not in equilibrium, whatever the ratio said before.
     const bool cracked = run_due(m, mesh, m.info.cycle);
     // Nor is one whose excavation loads are still coming off.
