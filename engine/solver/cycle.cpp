@@ -362,7 +362,6 @@ Measure run_cycles(Mechanics& m, int count) {
   const Motion motion = motion_of(m);
   const bool record = !m.adaptive.have_r_start;
   const bool grouped = !m.mates.empty();
-  const bool releasing = release_cycles_left(m) > 0;
   Measure bolt_measure;
 
 #pragma omp parallel num_threads(ranges)
@@ -381,7 +380,7 @@ Measure run_cycles(Mechanics& m, int count) {
         if (cb < ce) measure ? contact_pass<true>(m, cb, ce, partials) : contact_pass<false>(m, cb, ce, partials);
       }
       // An excavation's loads come off a step every cycle; only the node pass below reads them.
-      if (me == 0 && releasing) step_release(m);
+      if (me == 0) step_release(m);
       // The bolts read the nodes' displacements, as the zones do, and move only their own nodes.
       if (me == 0) bolt_cycle(m, motion, record && cycle == 0, measure, bolt_measure);
 #pragma omp barrier

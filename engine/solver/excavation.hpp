@@ -8,8 +8,9 @@ struct Mechanics;
 // Cycles the running excavate{ release = n } still has to go; 0 when none runs.
 long release_cycles_left(const Mechanics& m);
 
-// Takes one cycle's share off the loads the release holds on the new surface. Touches only
-// Mechanics::load and the release, so the cycle may call it while the zones' forces are summed.
+// Takes one cycle's share off the loads a running release holds on the new surface; nothing when
+// none runs or all its steps are taken. Touches only Mechanics::load and the release, so the cycle
+// may call it while the zones' forces are summed.
 void step_release(Mechanics& m);
 
 // The release's last step: it ends, and the boundary gets its own loads back exactly (the steps
