@@ -15,6 +15,8 @@
 --   release   cycles over which each step's load comes off [20000]: slow enough that the answer
 --             no longer depends on it (scripts/paper/README.md, "The release rate"); quicker
 --             releases break more cracks and can bring the walls down
+--   release_offset  cycles added to release [0]: scripts/paper/study.sh --members runs each case
+--             with releases a few cycles apart, to show the spread numerical detail gives
 --   similar   deg: crackseed{ auto }'s grouping angle [45]
 --   tolerance model{}'s geometric tolerance [7e-4]
 --   table     CSV file the result row is appended to [case_results.csv]; a row after each step
@@ -45,7 +47,10 @@ local function setting(key, default)
 end
 local CASE, DEPTH, BOLTS = setting("case", 3), setting("depth", 158), tostring(setting("bolts", "none"))
 local SET, EDGE, FAR = tostring(setting("set", "M")), setting("edge", 1.5), setting("far", 10)
-local STAGES, RELEASE = setting("stages", 16), setting("release", 20000)
+local STAGES, RELEASE = setting("stages", 16), setting("release", 20000) + setting("release_offset", 0)
+if not (math.type(RELEASE) == "integer" and RELEASE >= 1) then
+  error(("release + release_offset must be a whole number of cycles >= 1, got %s"):format(RELEASE), 0)
+end
 local SIMILAR, TOLERANCE = setting("similar", 45), setting("tolerance", 7e-4)
 local TABLE = tostring(setting("table", "case_results.csv"))
 local STEPS_TABLE = TABLE:gsub("%.csv$", "") .. "_steps.csv"  -- a row after each step
@@ -158,8 +163,8 @@ local done, stopped = 0, ""  -- steps done; where the run stopped, if it did
 local unconverged = {}       -- steps whose solve reached max_cycles short of the ratio
 
 -- The result row: after each step into TABLE's _steps file, and at the end into TABLE.
-local columns = { "case", "set", "depth", "bolts", "steps", "cracks", "tension", "shear", "left", "right",
-                  "left_mean_y_m", "right_mean_y_m", "crown_settlement_m", "left_wall_m", "right_wall_m",
+local columns = { "case", "set", "depth", "bolts", "release", "steps", "cracks", "tension", "shear", "left",
+                  "right", "left_mean_y_m", "right_mean_y_m", "crown_settlement_m", "left_wall_m", "right_wall_m",
                   "convergence_m", "slipping", "slipped", "fallen", "bolts_laid", "bolts_skipped", "cuts_left_out",
                   "threads", "seconds", "prepass_stopped", "unconverged", "stopped" }
 local function result_row()
@@ -182,7 +187,7 @@ local function result_row()
   end
   r.left_moves, r.right_moves = wall_moves()
   r.seconds = os.time() - started
-  local row = { CASE, SET, DEPTH, BOLTS, done, r.tension + r.shear, r.tension, r.shear, r.left, r.right,
+  local row = { CASE, SET, DEPTH, BOLTS, RELEASE, done, r.tension + r.shear, r.tension, r.shear, r.left, r.right,
                 ("%.3f"):format(r.left_mean_y), ("%.3f"):format(r.right_mean_y), ("%.5f"):format(settlement()),
                 ("%.5f"):format(r.left_moves), ("%.5f"):format(r.right_moves),
                 ("%.5f"):format(r.left_moves + r.right_moves), r.slipping, r.slipped, fallen, laid, skipped,

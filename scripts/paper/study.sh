@@ -2,20 +2,25 @@
 # The seed paper's study (issue 9) in one command: every run of scripts/paper/case.lua the
 # trends need, then scripts/paper/trends.lua over their rows.
 #
-#   bash scripts/paper/study.sh [--edem PATH] [--out DIR] [--jobs N] [--threads T] [--reduced]
-#                               [--strict] [-- --set KEY=VALUE ...]
+#   bash scripts/paper/study.sh [--edem PATH] [--out DIR] [--jobs N] [--threads T] [--members M]
+#                               [--reduced] [--strict] [-- --set KEY=VALUE ...]
 #
 #   --edem     the edem to run [build/interp/edem]
 #   --out      where the table, the pictures and the logs go [paper-study]
 #   --jobs     runs at a time [1]
 #   --threads  threads each run cycles on [2]
+#   --members  runs of each case, their releases 10 cycles apart: 0, -10, +10, -20, ... cycles from
+#              case.lua's (--set release_offset); the trends are then judged over every pairing of
+#              them (trends.lua), since when a bench's cascade of cracking comes turns on such
+#              numerical detail (scripts/paper/README.md, "Results") [1]
 #   --reduced  the version CI runs: zones twice as large (edge 3 m near the cavern, 20 m far) and
 #              the first 8 of the 16 steps; the same runs and trends
 #   --strict   exit 1 unless every trend holds
 #   after --    more settings for every run (e.g. -- --set set=P)
 #
 # The runs (Set M unless told otherwise): Cases 1, 2 and 3 at 158 m without bolts; Case 3 at
-# 212 m and 262 m without bolts; Case 3 at 158 m with bolt patterns 1 and 2. Each writes its own
+# 212 m and 262 m without bolts; Case 3 at 158 m with bolt patterns 1 and 2; each --members times
+# (members after the first add _member-K to their names). Each writes its own
 # row (OUT/TAG.csv, a row after each step in OUT/TAG_steps.csv) and pictures; OUT/study.csv and
 # OUT/steps.csv gather them; OUT/trends.md has the verdicts at the runs' ends, and
 # OUT/trends_common_step.md after the last step all runs reached. Exit 1 when a run wrote no row
@@ -23,7 +28,7 @@
 set -euo pipefail
 
 here=$(cd "$(dirname "$0")" && pwd)
-edem=build/interp/edem out=paper-study jobs=1 threads=2 reduced=0 strict=false
+edem=build/interp/edem out=paper-study jobs=1 threads=2 members=1 reduced=0 strict=false
 extra=()
 while [[ $# -gt 0 ]]; do
   case "$1" in
@@ -31,12 +36,14 @@ while [[ $# -gt 0 ]]; do
     --out) out=$2; shift 2 ;;
     --jobs) jobs=$2; shift 2 ;;
     --threads) threads=$2; shift 2 ;;
+    --members) members=$2; shift 2 ;;
     --reduced) reduced=1; shift ;;
     --strict) strict=true; shift ;;
     --) shift; extra=("$@"); break ;;
     *) echo "study.sh: unknown option '$1' (see the comment at the top of $0)" >&2; exit 2 ;;
   esac
 done
+[[ $members =~ ^[1-9][0-9]*$ ]] || { echo "study.sh: --members must be a whole number >= 1, got '$members'" >&2; exit 2; }
 edem=$(cd "$(dirname "$edem")" && pwd)/$(basename "$edem")
 [[ -x $edem ]] || { echo "study.sh: no edem at $edem (build it, or give --edem)" >&2; exit 2; }
 mkdir -p "$out"
@@ -44,7 +51,7 @@ out=$(cd "$out" && pwd)
 
 common=(--set "threads=$threads")
 if [[ $reduced == 1 ]]; then common+=(--set edge=3 --set far=20 --set stages=8); fi
-runs=(
+cases=(
   "case=1 depth=158 bolts=none"
   "case=2 depth=158 bolts=none"
   "case=3 depth=158 bolts=none"
@@ -53,12 +60,23 @@ runs=(
   "case=3 depth=158 bolts=1"
   "case=3 depth=158 bolts=2"
 )
+runs=()  # each case once, then again for each further member
+for ((k = 1; k <= members; k++)); do
+  offset=$(( (k / 2) * 10 * (k % 2 == 0 ? -1 : 1) ))
+  for c in "${cases[@]}"; do
+    if [[ $k == 1 ]]; then runs+=("$c"); else runs+=("$c member=$k release_offset=$offset"); fi
+  done
+done
+
+name_of() {  # name_of "case=1 depth=158 bolts=none member=2 release_offset=-10" -> case-1_depth-158_bolts-none_member-2
+  echo "${1% release_offset=*}" | tr ' =' '_-'
+}
 
 one_run() {  # one_run "case=1 depth=158 bolts=none"
   local settings=() name
-  for kv in $1; do settings+=(--set "$kv"); done
-  name=$(echo "$1" | tr ' =' '_-')
-  rm -f "$out/$name.csv"
+  for kv in $1; do [[ $kv == member=* ]] || settings+=(--set "$kv"); done
+  name=$(name_of "$1")
+  rm -f "$out/$name.csv" "$out/${name}_steps.csv"
   if (cd "$out" && "$edem" --quiet --threads "$threads" "${common[@]}" "${extra[@]}" "${settings[@]}" \
         --set "table=$name.csv" run "$here/case.lua" > "$name.log" 2>&1); then
     echo "study: $1 done ($(tail -n 1 "$out/$name.log" | cut -c1-160))"
@@ -66,7 +84,7 @@ one_run() {  # one_run "case=1 depth=158 bolts=none"
     echo "study: $1 failed; its last lines:"; tail -n 3 "$out/$name.log"
   fi
 }
-export -f one_run
+export -f one_run name_of
 export edem out threads here
 export common_flat="${common[*]}" extra_flat="${extra[*]}"
 
@@ -79,7 +97,7 @@ printf '%s\n' "${runs[@]}" | xargs -P "$jobs" -I{} bash -c \
 gather() {  # gather SUFFIX FILE
   local tables=() r f
   for r in "${runs[@]}"; do
-    f="$out/$(echo "$r" | tr ' =' '_-')$1.csv"
+    f="$out/$(name_of "$r")$1.csv"
     [[ -f $f ]] && tables+=("$f")
   done
   {

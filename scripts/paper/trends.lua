@@ -3,8 +3,9 @@
 --   edem --set tables=study.csv --set markdown=trends.md run scripts/paper/trends.lua
 --
 -- Settings (--set KEY=VALUE):
---   tables    CSV files of case.lua's rows, separated by commas [case_results.csv]; where one case
---             (case, set, depth, bolts) has several rows the last one counts
+--   tables    CSV files of case.lua's rows, separated by commas [case_results.csv]; rows of one case
+--             (case, set, depth, bolts) with different releases are its members (study.sh
+--             --members), and where one member has several rows the last one counts
 --   set       the parameter set whose rows are compared [M]
 --   depth     the depth of the comparisons that are not about depth [158]
 --   step      N: compare each run's row after step N (the tables are case.lua's _steps files);
@@ -13,7 +14,8 @@
 --   strict    true: fail (exit 1) unless every trend holds [false]
 -- Each trend compares the rows it needs; a row missing, or a run that stopped before its last
 -- step, makes the trend "not shown" (a comparison of unfinished runs says nothing), which fails
--- as a trend that does not hold does.
+-- as a trend that does not hold does. With several members a trend holds only if it holds for
+-- every pairing of them; where it holds for some only, it is "within the spread", and fails.
 local function setting(key, default)
   local v = arg and arg[key]
   if v == nil then return default end
@@ -38,7 +40,9 @@ local function fields(line)
   return out
 end
 
-local rows = {}  -- per case key, the rows in the order read
+-- Per case key, per member (the run's release: study.sh --members runs each case several times,
+-- the releases a few cycles apart), the rows in the order read.
+local rows = {}
 local function key(case, depth, bolts) return ("%s/%g/%s"):format(case, depth, bolts) end
 for file in tostring(setting("tables", "case_results.csv")):gmatch("[^,]+") do
   local f = io.open(file, "r")
@@ -52,58 +56,109 @@ for file in tostring(setting("tables", "case_results.csv")):gmatch("[^,]+") do
       local row = {}
       for i, name in ipairs(names) do row[name] = tonumber(values[i]) or values[i] end
       if row.set == SET then
-        local k = key(row.case, row.depth, row.bolts)
+        local k, member = key(row.case, row.depth, row.bolts), row.release or "default"
         rows[k] = rows[k] or {}
-        table.insert(rows[k], row)
+        rows[k][member] = rows[k][member] or {}
+        table.insert(rows[k][member], row)
       end
     end
   end
   f:close()
 end
 
+-- The members of a case in a fixed order (by release).
+local function members_of(k)
+  local list = {}
+  for member in pairs(rows[k]) do list[#list + 1] = member end
+  table.sort(list, function(a, b)
+    if type(a) == "number" and type(b) == "number" then return a < b end
+    return tostring(a) < tostring(b)
+  end)
+  return list
+end
+
 -- step = N: each run's row after its step N; "common": after the last step every run reached.
 local STEP = setting("step", nil)
 if STEP == "common" then
   local common = math.huge
-  for _, list in pairs(rows) do
-    local most = 0
-    for _, r in ipairs(list) do most = math.max(most, r.steps) end
-    common = math.min(common, most)
+  for _, by_member in pairs(rows) do
+    for _, list in pairs(by_member) do
+      local most = 0
+      for _, r in ipairs(list) do most = math.max(most, r.steps) end
+      common = math.min(common, most)
+    end
   end
   STEP = common < math.huge and common or nil
 end
 
--- A finished run's row (at STEP, if given), or nil and why not.
-local function run(case, depth, bolts)
-  local list = rows[key(case, depth, bolts)]
-  if not list then return nil, ("no run of Case %s, %g m, bolts %s"):format(case, depth, bolts) end
-  local r = list[#list]
-  if STEP then
-    r = nil
-    for _, row in ipairs(list) do if row.steps == STEP then r = row end end
-    if not r then return nil, ("Case %s, %g m, bolts %s has no row after step %d"):format(case, depth, bolts, STEP) end
+-- The finished rows of a case (at STEP, if given), one per member, or nil and why not. A member
+-- that stopped before its last step makes the whole case "not shown": a comparison of unfinished
+-- runs says nothing, and a collapse is part of the spread.
+local function runs(case, depth, bolts)
+  local k = key(case, depth, bolts)
+  local name = ("Case %s, %g m, bolts %s"):format(case, depth, bolts)
+  if not rows[k] then return nil, "no run of " .. name end
+  local got, stopped = {}, {}
+  for _, member in ipairs(members_of(k)) do
+    local list = rows[k][member]
+    local r = list[#list]
+    if STEP then
+      r = nil
+      for _, row in ipairs(list) do if row.steps == STEP then r = row end end
+      if not r then return nil, ("%s has no row after step %d"):format(name, STEP) end
+    end
+    if r.stopped ~= "" then stopped[#stopped + 1] = r.stopped end
+    got[#got + 1] = r
   end
-  if r.stopped ~= "" then
-    return nil, ("Case %s, %g m, bolts %s stopped at %s"):format(case, depth, bolts, r.stopped:sub(1, 60))
+  if #stopped == 1 and #got == 1 then return nil, ("%s stopped at %s"):format(name, stopped[1]:sub(1, 60)) end
+  if #stopped > 0 then
+    for i, why in ipairs(stopped) do stopped[i] = why:match("^step %d+") or why:sub(1, 40) end
+    return nil, ("%d of %d runs of %s stopped (at %s)"):format(#stopped, #got, name, table.concat(stopped, ", "))
   end
-  return r
+  return got
 end
 
+-- A trend holds when `holds` is true for every way of taking one member of each case it needs
+-- (for "A above B": every run of A above every run of B), fails when it is true for none, and
+-- is within the spread otherwise. `describe(value)` writes the numbers; value(i, field, format)
+-- gives need i's field in every member, separated by commas.
 local results = {}
-local function trend(statement, needs, judge)
+local function trend(statement, needs, holds, describe)
   local got, why = {}, nil
   for i, n in ipairs(needs) do
-    local r, missing = run(n[1], n[2], n[3])
-    if not r then why = why or missing end
-    got[i] = r
+    local list, missing = runs(n[1], n[2], n[3])
+    if not list then why = why or missing end
+    got[i] = list
   end
   local verdict, numbers
   if why then
     verdict, numbers = "not shown", why
   else
-    local ok, holds, text = pcall(judge, table.unpack(got))
-    if ok then
-      verdict, numbers = holds and "holds" or "fails", text
+    local function value(i, field, format)
+      local parts = {}
+      for _, r in ipairs(got[i]) do
+        if r[field] == nil then error("no column " .. field) end
+        parts[#parts + 1] = (format or "%s"):format(r[field])
+      end
+      return table.concat(parts, ", ")
+    end
+    local function count(i, picked, yes, all)  -- every pairing of members, depth first
+      if i > #got then
+        return yes + (holds(table.unpack(picked)) and 1 or 0), all + 1
+      end
+      for _, r in ipairs(got[i]) do
+        picked[i] = r
+        yes, all = count(i + 1, picked, yes, all)
+      end
+      return yes, all
+    end
+    local ok, yes, all = pcall(count, 1, {}, 0, 0)
+    local described, text = pcall(describe, value)
+    if ok and described then
+      numbers = text
+      if yes == all then verdict = "holds"
+      elseif yes == 0 then verdict = "fails"
+      else verdict = ("within the spread (%d of %d pairings)"):format(yes, all) end
     else  -- a table from an older case.lua, without the column
       verdict, numbers = "not shown", "the table lacks a column it needs"
     end
@@ -113,49 +168,55 @@ end
 
 local D = DEPTH
 trend("Case 3 (denser joints) gives more new cracks than Case 2", { { 3, D, "none" }, { 2, D, "none" } },
-  function(c3, c2)
-    return c3.cracks > c2.cracks, ("Case 3: %d, Case 2: %d cracks"):format(c3.cracks, c2.cracks)
-  end)
+  function(c3, c2) return c3.cracks > c2.cracks end,
+  function(v) return ("Case 3: %s, Case 2: %s cracks"):format(v(1, "cracks"), v(2, "cracks")) end)
 trend("The crack count grows with depth, 158 < 212 < 262 m (Case 3)",
   { { 3, 158, "none" }, { 3, 212, "none" }, { 3, 262, "none" } },
-  function(a, b, c)
-    return a.cracks < b.cracks and b.cracks < c.cracks,
-      ("158 m: %d, 212 m: %d, 262 m: %d cracks"):format(a.cracks, b.cracks, c.cracks)
+  function(a, b, c) return a.cracks < b.cracks and b.cracks < c.cracks end,
+  function(v)
+    return ("158 m: %s, 212 m: %s, 262 m: %s cracks"):format(v(1, "cracks"), v(2, "cracks"), v(3, "cracks"))
   end)
 for _, case in ipairs{ 1, 2, 3 } do
   trend(("Tension cracks are the majority without bolts (Case %d)"):format(case), { { case, D, "none" } },
-    function(r)
-      return r.tension > r.shear, ("%d tension, %d shear"):format(r.tension, r.shear)
-    end)
+    function(r) return r.tension > r.shear end,
+    function(v) return ("%s tension, %s shear"):format(v(1, "tension"), v(1, "shear")) end)
 end
 trend("Case 2's cracks on the right side sit higher than Case 1's", { { 2, D, "none" }, { 1, D, "none" } },
-  function(c2, c1)
-    return c2.right_mean_y_m > c1.right_mean_y_m,
-      ("mean height of the right side's cracks: Case 2 %.1f m (%d cracks), Case 1 %.1f m (%d cracks)"):format(
-        c2.right_mean_y_m, c2.right, c1.right_mean_y_m, c1.right)
+  function(c2, c1) return c2.right_mean_y_m > c1.right_mean_y_m end,
+  function(v)
+    return ("mean height of the right side's cracks: Case 2 %s m (%s cracks), Case 1 %s m (%s cracks)"):format(
+      v(1, "right_mean_y_m", "%.1f"), v(1, "right"), v(2, "right_mean_y_m", "%.1f"), v(2, "right"))
   end)
 trend("Pattern 1 lowers the crack count and the crown settlement (Case 3)", { { 3, D, "1" }, { 3, D, "none" } },
-  function(p1, none)
-    return p1.cracks < none.cracks and p1.crown_settlement_m < none.crown_settlement_m,
-      ("cracks %d against %d; crown %.3f against %.3f m"):format(p1.cracks, none.cracks, p1.crown_settlement_m,
-        none.crown_settlement_m)
+  function(p1, none) return p1.cracks < none.cracks and p1.crown_settlement_m < none.crown_settlement_m end,
+  function(v)
+    return ("cracks %s against %s; crown %s against %s m"):format(v(1, "cracks"), v(2, "cracks"),
+      v(1, "crown_settlement_m", "%.3f"), v(2, "crown_settlement_m", "%.3f"))
   end)
 trend("Pattern 2 lowers them at least as much as pattern 1 (Case 3)", { { 3, D, "2" }, { 3, D, "1" } },
-  function(p2, p1)
-    return p2.cracks <= p1.cracks and p2.crown_settlement_m <= p1.crown_settlement_m,
-      ("cracks %d against %d; crown %.3f against %.3f m"):format(p2.cracks, p1.cracks, p2.crown_settlement_m,
-        p1.crown_settlement_m)
+  function(p2, p1) return p2.cracks <= p1.cracks and p2.crown_settlement_m <= p1.crown_settlement_m end,
+  function(v)
+    return ("cracks %s against %s; crown %s against %s m"):format(v(1, "cracks"), v(2, "cracks"),
+      v(1, "crown_settlement_m", "%.3f"), v(2, "crown_settlement_m", "%.3f"))
   end)
 for _, case in ipairs{ 1, 2, 3 } do
   trend(("The side the joints dip towards (right) moves more (Case %d)"):format(case), { { case, D, "none" } },
-    function(r)
-      return r.right_wall_m > r.left_wall_m,
-        ("walls moved in %.3f m (right) and %.3f m (left)"):format(r.right_wall_m, r.left_wall_m)
+    function(r) return r.right_wall_m > r.left_wall_m end,
+    function(v)
+      return ("walls moved in %s m (right) and %s m (left)"):format(v(1, "right_wall_m", "%.3f"),
+        v(1, "left_wall_m", "%.3f"))
     end)
 end
 
 local when = STEP and ("after step %d of 16 in every run"):format(STEP) or "at the end of each run"
-local lines = { ("Set %s, %s. Trends of the seed paper (§3.4, §4, §5) in EDEM's runs:"):format(SET, when), "",
+local releases, most = {}, 0  -- the members, as their releases
+for k in pairs(rows) do
+  local list = members_of(k)
+  if #list > most then most, releases = #list, list end
+end
+local of_each = most > 1 and (", %d runs of each case (releases %s cycles a step; their numbers in that order)"):format(
+  most, table.concat(releases, ", ")) or ""
+local lines = { ("Set %s, %s%s. Trends of the seed paper (§3.4, §4, §5) in EDEM's runs:"):format(SET, when, of_each), "",
                 "| trend | EDEM | verdict |", "|---|---|---|" }
 local failed = 0
 for _, r in ipairs(results) do
