@@ -58,6 +58,8 @@ local STEPS_TABLE = TABLE:gsub("%.csv$", "") .. "_steps.csv"  -- a row after eac
 local THREADS = tostring(setting("threads", os.getenv("OMP_NUM_THREADS") or "default"))
 assert(BOLTS == "none" or BOLTS == "1" or BOLTS == "2", "bolts must be none, 1 or 2, got " .. BOLTS)
 local tag = ("case%d_%s_h%g_%s"):format(CASE, SET, DEPTH, BOLTS == "none" and "none" or "pattern" .. BOLTS)
+-- Runs that differ only in a nudged release (study.sh --members) keep their pictures apart.
+if setting("release_offset", 0) ~= 0 then tag = tag .. ("_release%d"):format(RELEASE) end
 local started = os.time()
 
 local c = cavern.warhead{}
