@@ -185,6 +185,7 @@ void zone_force_pass(Mechanics& m, int begin, int end, Partials& partials) {
 template <bool kMeasure>
 void contact_pass(Mechanics& m, int begin, int end, Partials& partials) {
   Contact* list = m.contacts.list.data();
+  double* push = m.contacts.push.data();
   const ContactEdge* edges = m.faces.edges.data();
   const JointParams* params = m.joint_params.data();
   double applied = 0.0;
@@ -193,6 +194,15 @@ void contact_pass(Mechanics& m, int begin, int end, Partials& partials) {
     Contact& c = list[i];
     const double overlap = contact_force(c, edges, params[c.material], m.origin.data(), m.u.data(), m.v.data(),
                                          m.step);
+    // The gridpoint takes the force, the edge's ends the reaction split by where it projects.
+    double* p = push + 6 * static_cast<size_t>(i);
+    const double wa = -(1.0 - c.t), wb = -c.t;
+    p[0] = c.fx;
+    p[1] = c.fy;
+    p[2] = wa * c.fx;
+    p[3] = wa * c.fy;
+    p[4] = wb * c.fx;
+    p[5] = wb * c.fy;
     if constexpr (kMeasure) {
       applied += 2.0 * std::sqrt(c.fx * c.fx + c.fy * c.fy);
       if (overlapping < 0 && overlap > c.limit) overlapping = i;
@@ -215,7 +225,7 @@ void node_motion_pass(Mechanics& m, int begin, int end, const Motion& motion, bo
   const bool with_contacts = !m.contacts.list.empty();
   const int* contact_first = m.contacts.gather_first.data();
   const int* contact_gather = m.contacts.gather.data();
-  const Contact* contacts = m.contacts.list.data();
+  const double* push = m.contacts.push.data();
   const bool with_bolts = !m.bolt_hosts.gather.empty();
   double unbalanced = 0.0, kinetic = 0.0, num = 0.0, den = 0.0, speed = -1.0;
   int fastest = -1;
@@ -240,11 +250,9 @@ void node_motion_pass(Mechanics& m, int begin, int end, const Motion& motion, bo
     }
     if (with_contacts) {
       for (int s = contact_first[n]; s < contact_first[n + 1]; ++s) {
-        const Contact& c = contacts[contact_gather[s] / 3];
-        const int role = contact_gather[s] % 3;
-        const double w = role == 0 ? 1.0 : role == 1 ? -(1.0 - c.t) : -c.t;
-        f[0] += w * c.fx;
-        f[1] += w * c.fy;
+        const double* p = push + 2 * static_cast<size_t>(contact_gather[s]);
+        f[0] += p[0];
+        f[1] += p[1];
       }
     }
     if (with_bolts) add_grout_forces(m, nn, f);
@@ -344,6 +352,7 @@ Measure run_cycles(Mechanics& m, int count) {
   partials.fastest.assign(node_chunks, -1);
   partials.finite.assign(node_chunks, 1);
   const int contact_count = static_cast<int>(m.contacts.list.size());
+  m.contacts.push.resize(6 * static_cast<size_t>(contact_count));
   const size_t contact_chunks = (static_cast<size_t>(contact_count) + kChunk - 1) / kChunk;
   partials.contact_applied.assign(contact_chunks, 0.0);
   partials.contact_overlapping.assign(contact_chunks, -1);
