@@ -79,8 +79,8 @@ struct ContactSet {
   // Per node (CSR over all nodes): the contact forces it takes, as contact * 3 + role (0: the
   // gridpoint's own, 1: edge end a, 2: edge end b), in a fixed order.
   std::vector<int> gather_first, gather;
-  // Scratch of the cycle, per contact: the force on each of those three nodes (x, y), written by
-  // the contact pass for the node pass to add at gather[] / 2, in place of reading the contact.
+  // Scratch of the cycle: per contact and role, the force (x, y) on that node, written by the
+  // contact pass; the node pass adds push[2 * gather[s]] and the next, not reading the contact.
   std::vector<double> push;
   std::vector<double> rows;          // per node: Gershgorin row sum of contact stiffness [N/m^2]
   std::vector<double> x_detected;    // node positions at the last detection [m]
