@@ -1,0 +1,53 @@
+-- scripts/paper/trends.lua over several runs of each case (study.sh --members): a trend holds only
+-- if it holds for every pairing of the runs, fails if for none, is "within the spread" otherwise,
+-- and is "not shown" when a run of a case it needs stopped. The fixture's numbers are made up to
+-- give each verdict (trends_members.csv: two runs of each of the study's seven, releases 100 and
+-- 110; trends_members_stop.csv: a third run of Case 2 that stopped at step 12).
+local here = debug.getinfo(1, "S").source:match("^@(.*[/\\])") or "./"
+local trends = here .. "../../scripts/paper/trends.lua"
+
+-- Runs trends.lua over `tables` and returns its markdown, one table row per trend statement.
+local function verdicts(tables)
+  local out = "trends_members.md"
+  arg = { tables = tables, markdown = out }
+  dofile(trends)
+  local f = assert(io.open(out, "r"))
+  local text = f:read("a")
+  f:close()
+  local found = {}
+  for line in text:gmatch("[^\n]+") do
+    local statement, verdict = line:match("^| (.-) | .- | ([^|]-) |$")
+    if statement then found[statement] = verdict end
+  end
+  return found, text
+end
+
+local failures = 0
+local function expect(found, statement, verdict)
+  local got = found[statement]
+  local ok = got == verdict
+  print(("%s: %s -> %s (expected %s)"):format(ok and "ok" or "WRONG", statement, tostring(got), verdict))
+  if not ok then failures = failures + 1 end
+end
+
+local found, text = verdicts(here .. "trends_members.csv")
+assert(text:find("2 runs of each case (releases 100, 110", 1, true), "the title names the members")
+expect(found, "Case 3 (denser joints) gives more new cracks than Case 2", "holds")
+expect(found, "The crack count grows with depth, 158 < 212 < 262 m (Case 3)", "within the spread (6 of 8 pairings)")
+expect(found, "Tension cracks are the majority without bolts (Case 1)", "within the spread (1 of 2 pairings)")
+expect(found, "Tension cracks are the majority without bolts (Case 2)", "fails")
+expect(found, "Case 2's cracks on the right side sit higher than Case 1's", "within the spread (1 of 4 pairings)")
+expect(found, "Pattern 1 lowers the crack count and the crown settlement (Case 3)", "within the spread (3 of 4 pairings)")
+expect(found, "Pattern 2 lowers them at least as much as pattern 1 (Case 3)", "holds")
+expect(found, "The side the joints dip towards (right) moves more (Case 1)", "within the spread (1 of 2 pairings)")
+expect(found, "The side the joints dip towards (right) moves more (Case 2)", "fails")
+expect(found, "The side the joints dip towards (right) moves more (Case 3)", "holds")
+assert(text:find("Case 3: 300, 310, Case 2: 200, 210 cracks", 1, true), "each member's number, in release order")
+
+found, text = verdicts(here .. "trends_members.csv," .. here .. "trends_members_stop.csv")
+expect(found, "Case 3 (denser joints) gives more new cracks than Case 2", "not shown")
+expect(found, "The side the joints dip towards (right) moves more (Case 3)", "holds")
+assert(text:find("1 of 3 runs of Case 2, 158 m, bolts none stopped (at step 12)", 1, true), "says which run stopped")
+
+if failures > 0 then error(("%d verdicts wrong"):format(failures), 0) end
+print("all verdicts as expected")
