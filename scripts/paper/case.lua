@@ -47,7 +47,8 @@ local function setting(key, default)
 end
 local CASE, DEPTH, BOLTS = setting("case", 3), setting("depth", 158), tostring(setting("bolts", "none"))
 local SET, EDGE, FAR = tostring(setting("set", "M")), setting("edge", 1.5), setting("far", 10)
-local STAGES, RELEASE = setting("stages", 16), setting("release", 20000) + setting("release_offset", 0)
+local STAGES, RELEASE_OFFSET = setting("stages", 16), setting("release_offset", 0)
+local RELEASE = setting("release", 20000) + RELEASE_OFFSET
 if not (math.type(RELEASE) == "integer" and RELEASE >= 1) then
   error(("release + release_offset must be a whole number of cycles >= 1, got %s"):format(RELEASE), 0)
 end
@@ -59,7 +60,7 @@ local THREADS = tostring(setting("threads", os.getenv("OMP_NUM_THREADS") or "def
 assert(BOLTS == "none" or BOLTS == "1" or BOLTS == "2", "bolts must be none, 1 or 2, got " .. BOLTS)
 local tag = ("case%d_%s_h%g_%s"):format(CASE, SET, DEPTH, BOLTS == "none" and "none" or "pattern" .. BOLTS)
 -- Runs that differ only in a nudged release (study.sh --members) keep their pictures apart.
-if setting("release_offset", 0) ~= 0 then tag = tag .. ("_release%d"):format(RELEASE) end
+if RELEASE_OFFSET ~= 0 then tag = tag .. ("_release%d"):format(RELEASE) end
 local started = os.time()
 
 local c = cavern.warhead{}
