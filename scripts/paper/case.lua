@@ -117,6 +117,10 @@ local function rock_gridpoint_near(x, y)
   return found
 end
 local crown = rock_gridpoint_near(c.crown[1], c.crown[2])
+-- The rock 5 m above the crown, as far up as pattern 1's bolts reach: the crown's settlement less
+-- this point's is what the bolted part of the roof stretches; the rest is the roof as a whole
+-- coming down, which 5 m bolts cannot hold.
+local above_crown = rock_gridpoint_near(c.crown[1], c.crown[2] + 5)
 -- Each side wall's points at the springline (y = 0) and halfway down the benches (y = -12).
 local left_wall = { rock_gridpoint_near(-12, 0).id, rock_gridpoint_near(-12, -12).id }
 local right_wall = { rock_gridpoint_near(12, 0).id, rock_gridpoint_near(12, -12).id }
@@ -128,8 +132,9 @@ local function ux_of(ids)
 end
 -- How far each wall has moved into the opening, the mean of its two points [m].
 local function wall_moves() return ux_of(left_wall), -ux_of(right_wall) end
-local function settlement()
-  for g in gridpoints() do if g.id == crown.id then return -g.uy end end
+local function settlement(point)
+  point = point or crown
+  for g in gridpoints() do if g.id == point.id then return -g.uy end end
 end
 
 -- Mucking out: blocks whose gridpoints have moved more than 1 m.
@@ -144,9 +149,20 @@ local function muck_out()
 end
 local mucking = every(200, muck_out)
 
+local BOLT_YIELD, BOLT_SPACING = 0.156e6, 1.5  -- N per bolt; m out of the plane
 if BOLTS ~= "none" then
-  bolt_material{ "bolt", young = 190e9, area = 446e-6, density = 6083, yield_tension = 0.156e6,
-                 failure_strain = 0.035, bond_stiffness = 50e6, bond_strength = 0.2e6, spacing = 1.5 }
+  bolt_material{ "bolt", young = 190e9, area = 446e-6, density = 6083, yield_tension = BOLT_YIELD,
+                 failure_strain = 0.035, bond_stiffness = 50e6, bond_strength = 0.2e6, spacing = BOLT_SPACING }
+end
+-- How hard the bolts work: those with a broken segment, and those whose most loaded segment
+-- carries half the yield force or more now (bolts() gives forces per metre out of the plane).
+local function bolt_loads()
+  local broken, loaded = 0, 0
+  for b in bolts() do
+    if b.broken > 0 then broken = broken + 1 end
+    if b.max_force >= 0.5 * BOLT_YIELD / BOLT_SPACING then loaded = loaded + 1 end
+  end
+  return broken, loaded
 end
 local laid, skipped = 0, 0
 local function bolt_step(s)
@@ -167,8 +183,9 @@ local unconverged = {}       -- steps whose solve reached max_cycles short of th
 
 -- The result row: after each step into TABLE's _steps file, and at the end into TABLE.
 local columns = { "case", "set", "depth", "bolts", "release", "steps", "cracks", "tension", "shear", "left",
-                  "right", "left_mean_y_m", "right_mean_y_m", "crown_settlement_m", "left_wall_m", "right_wall_m",
-                  "convergence_m", "slipping", "slipped", "fallen", "bolts_laid", "bolts_skipped", "cuts_left_out",
+                  "right", "left_mean_y_m", "right_mean_y_m", "crown_settlement_m", "settlement_5m_above_crown_m",
+                  "left_wall_m", "right_wall_m", "convergence_m", "slipping", "slipped", "fallen", "bolts_laid",
+                  "bolts_skipped", "bolts_broken", "bolts_over_half_yield", "cuts_left_out",
                   "threads", "seconds", "prepass_stopped", "unconverged", "stopped" }
 local function result_row()
   local r = { tension = 0, shear = 0, left = 0, right = 0 }
@@ -189,12 +206,13 @@ local function result_row()
     if k.slip > 0 then r.slipped = r.slipped + 1 end
   end
   r.left_moves, r.right_moves = wall_moves()
+  r.bolts_broken, r.bolts_loaded = bolt_loads()
   r.seconds = os.time() - started
   local row = { CASE, SET, DEPTH, BOLTS, RELEASE, done, r.tension + r.shear, r.tension, r.shear, r.left, r.right,
                 ("%.3f"):format(r.left_mean_y), ("%.3f"):format(r.right_mean_y), ("%.5f"):format(settlement()),
-                ("%.5f"):format(r.left_moves), ("%.5f"):format(r.right_moves),
-                ("%.5f"):format(r.left_moves + r.right_moves), r.slipping, r.slipped, fallen, laid, skipped,
-                info().cuts_left_out, THREADS, r.seconds,
+                ("%.5f"):format(settlement(above_crown)), ("%.5f"):format(r.left_moves),
+                ("%.5f"):format(r.right_moves), ("%.5f"):format(r.left_moves + r.right_moves), r.slipping,
+                r.slipped, fallen, laid, skipped, r.bolts_broken, r.bolts_loaded, info().cuts_left_out, THREADS, r.seconds,
                 prepass_note == "complete" and '""' or ('"' .. prepass_note .. '"'),
                 '"' .. table.concat(unconverged, " ") .. '"',
                 '"' .. stopped:gsub('"', "'") .. '"' }
@@ -236,9 +254,9 @@ cancel(mucking)
 local r, line = result_row()
 append_row(TABLE, line)
 print(("%s: %d steps, %d cracks (%d tension, %d shear; %d left, %d right), crown %.4f m, walls in %.4f (left) "
-       .. "and %.4f m (right), %d contacts slipping, %d fallen, %d bolts (%d skipped), %d s%s"):format(tag, done,
-  r.tension + r.shear, r.tension, r.shear, r.left, r.right, settlement(), r.left_moves, r.right_moves, r.slipping,
-  fallen, laid, skipped, r.seconds, stopped ~= "" and ("; stopped at " .. stopped) or "")
+       .. "and %.4f m (right), %d contacts slipping, %d fallen, %d bolts (%d skipped, %d broken), %d s%s"):format(tag,
+  done, r.tension + r.shear, r.tension, r.shear, r.left, r.right, settlement(), r.left_moves, r.right_moves,
+  r.slipping, fallen, laid, skipped, r.bolts_broken, r.seconds, stopped ~= "" and ("; stopped at " .. stopped) or "")
   .. (#unconverged > 0 and ("; short of equilibrium after step " .. table.concat(unconverged, ", ")) or ""))
 
 
