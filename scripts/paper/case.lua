@@ -34,8 +34,10 @@
 -- 200 cycles, as fallen rock is. A step that stops on an error ends the run; the row says where,
 -- and which steps reached their 40,000 cycles after the release short of equilibrium (column
 -- unconverged).
--- Writes: the result row, and pictures CASE_prepass.png (the seed's Figure 8), CASE_cracks.png
--- (Figures 9 and 11) and CASE_profile.png (Figure 12, the settlement 10 m above the crown).
+-- Writes: the result row (with the settlement 5 m above the crown, as far up as pattern 1's bolts
+-- reach, and the bolts broken or carrying half their yield), and pictures CASE_prepass.png (the
+-- seed's Figure 8), CASE_cracks.png (Figures 9 and 11) and CASE_profile.png (Figure 12, the
+-- settlement 10 m above the crown).
 local seed = require "edem.seed"
 local cavern = require "edem.cavern"
 local rockbolts = require "edem.bolts"
@@ -212,7 +214,8 @@ local function result_row()
                 ("%.3f"):format(r.left_mean_y), ("%.3f"):format(r.right_mean_y), ("%.5f"):format(settlement()),
                 ("%.5f"):format(settlement(above_crown)), ("%.5f"):format(r.left_moves),
                 ("%.5f"):format(r.right_moves), ("%.5f"):format(r.left_moves + r.right_moves), r.slipping,
-                r.slipped, fallen, laid, skipped, r.bolts_broken, r.bolts_loaded, info().cuts_left_out, THREADS, r.seconds,
+                r.slipped, fallen, laid, skipped, r.bolts_broken, r.bolts_loaded, info().cuts_left_out, THREADS,
+                r.seconds,
                 prepass_note == "complete" and '""' or ('"' .. prepass_note .. '"'),
                 '"' .. table.concat(unconverged, " ") .. '"',
                 '"' .. stopped:gsub('"', "'") .. '"' }
@@ -254,8 +257,8 @@ cancel(mucking)
 local r, line = result_row()
 append_row(TABLE, line)
 print(("%s: %d steps, %d cracks (%d tension, %d shear; %d left, %d right), crown %.4f m, walls in %.4f (left) "
-       .. "and %.4f m (right), %d contacts slipping, %d fallen, %d bolts (%d skipped, %d broken), %d s%s"):format(tag,
-  done, r.tension + r.shear, r.tension, r.shear, r.left, r.right, settlement(), r.left_moves, r.right_moves,
+       .. "and %.4f m (right), %d contacts slipping, %d fallen, %d bolts (%d skipped, %d broken), %d s%s"):format(
+  tag, done, r.tension + r.shear, r.tension, r.shear, r.left, r.right, settlement(), r.left_moves, r.right_moves,
   r.slipping, fallen, laid, skipped, r.bolts_broken, r.seconds, stopped ~= "" and ("; stopped at " .. stopped) or "")
   .. (#unconverged > 0 and ("; short of equilibrium after step " .. table.concat(unconverged, ", ")) or ""))
 
