@@ -195,8 +195,10 @@ const Command& prepass_command() {
               {"iterations", Type::integer, "", ge(1), "30", "Newton iterations per load step before it is halved"},
               {"solver", Type::string, "", any_value, "\"umfpack\"",
                "sparse direct solver (measured in tests/bench/RESULTS.md): umfpack (SuiteSparse's UMFPACK, the "
-               "fastest), lu (Eigen's SparseLU), ldlt (Eigen's SimplicialLDLT: symmetric tangents only, elastic "
-               "or associated flow) or klu (SuiteSparse's KLU through SUNDIALS)",
+               "fastest; its dense kernels come from OpenBLAS, which picks them for the CPU, so its last bits, and "
+               "through the cracks placed from them a whole run, can differ from one machine to another), lu "
+               "(Eigen's SparseLU: the same answer on any x86-64 machine), ldlt (Eigen's SimplicialLDLT: "
+               "symmetric tangents only, elastic or associated flow) or klu (SuiteSparse's KLU through SUNDIALS)",
                "", solvers},
               {"duration", Type::number, "s", ge(0), "0",
                "held gridpoints with a velocity (boundary{ xvel, yvel }) move by velocity x duration in the first "
