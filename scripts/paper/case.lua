@@ -81,7 +81,7 @@ for _, s in ipairs(c.stages) do names[#names + 1] = s.name end
 -- Its linear solves use Eigen's SparseLU ("lu"), not the quicker UMFPACK: UMFPACK's dense kernels
 -- come from OpenBLAS, which picks them for the CPU it runs on, and their last bits move the cracks'
 -- ends, so the mesh and the whole run differ from one machine to the next (scripts/paper/README.md,
--- "Runs that differ between machines"). "lu" gives the same run on any x86-64 machine for 3 s more.
+-- "Runs that differ between machines"). "lu" does not depend on the CPU's kernels, for 3 s more.
 local pre = prepass{ stages = names, joints = false, steps = 2, on_failure = "keep", solver = "lu" }
 local prepass_note = "complete"
 if pre.failure then
