@@ -99,6 +99,7 @@ int run_auto_crackseed(lua_State* L, Context& context, const Args& args) {
   def.zones = read_prepass_zones(L, args.get<TableArg>("auto").index);
   if (args.has("spacing")) def.spacing = args.number("spacing");
   def.similar = args.number("similar");
+  if (args.has("min_angle")) def.min_angle = args.number("min_angle");
   if (args.has("region")) def.region = args.get<RegionRef>("region");
   if (args.has("material")) def.material = args.string("material");
   if (args.has("after")) def.after = args.string("after");
@@ -152,6 +153,8 @@ int run_crackseed(lua_State* L, Context& context, const Args& args) {
   CrackSeedDef def;
   const bool one = args.has("angle"), two = args.has("angles");
   if (one == two) fail("give angle = a or angles = {{a1, a2}} (one of them), or auto = a prepass{{}} result");
+  if (args.has("min_angle"))
+    fail("min_angle is for auto = a prepass{{}} result: cuts at angle or angles are laid as given");
   def.angles = one ? std::vector<double>{args.number("angle")} : args.get<std::vector<double>>("angles");
   if (!args.has("spacing")) fail("spacing is needed (the normal distance between the cuts of a set)");
   def.spacing = args.number("spacing");
@@ -278,6 +281,12 @@ const Command& crackseed_command() {
                "required; with auto a tenth of the height the prepass excavated"},
               {"similar", Type::number, "deg", above_upto(0, 90), "15",
                "auto: largest difference of principal direction within a group"},
+              {"min_angle", Type::number, "deg", between(0, 60), kOptional,
+               "auto: where a cut would meet a joint, a crack, an outline or another cut at a "
+               "corner sharper than this, its stretch there is left out, back to the crossings "
+               "either side (counted in info().cuts_cut_back): no thin wedge forms that could "
+               "break loose and be driven tip first into its neighbours",
+               "0: every cut laid"},
               {"origin", Type::point, "m", any_value, "{0, 0}", "a point on one cut of each set"},
               {"region", Type::region, "", any_value, kOptional,
                "only inside this region (a name or a polygon; a region{} keeps every piece, a "

@@ -29,6 +29,7 @@ int run_info(lua_State* L, Context& context, const Args&) {
   set_field(L, "joint_edges", info.joint_edges);
   set_field(L, "dropped_cuts", info.dropped_cuts);
   set_field(L, "cuts_left_out", info.cuts_left_out);
+  set_field(L, "cuts_cut_back", info.cuts_cut_back);
   set_field(L, "regions", info.regions);
   set_field(L, "joint_sets", info.joint_sets);
   set_field(L, "crack_seeds", info.crack_seeds);
@@ -284,7 +285,7 @@ const Command& info_command() {
       .returns =
           "a table: blocks, zones, gridpoints, joint_edges, dropped_cuts, cuts_left_out (pieces of "
           "crackseed{ auto }'s cuts left out where no bending of the cuts kept them the model's tolerance "
-          "apart), regions, "
+          "apart), cuts_cut_back (its cuts cut back from a corner sharper than its min_angle), regions, "
           "joint_sets, crack_seeds, sections (potential-crack sections), intact_sections, "
           "cracks, shear_cracks, tension_cracks, stage (excavations so far), title, cycle (cycles run so far), time (model time [s]; static mode: "
           "the cycle count), step (time step [s]), ratio (last unbalanced-force ratio), "

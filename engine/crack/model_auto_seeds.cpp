@@ -59,6 +59,7 @@ std::vector<CrackRegion> Model::add_auto_crackseed(const AutoCrackSeedDef& def) 
   }
   if (!(spacing > 0.0) || !std::isfinite(spacing)) fail("spacing must be > 0, got {}", spacing);
   if (!(def.similar > 0.0 && def.similar <= 90.0)) fail("similar must be in (0, 90], got {}", def.similar);
+  if (!(def.min_angle >= 0.0 && def.min_angle <= 60.0)) fail("min_angle must be in [0, 60], got {}", def.min_angle);
 
   std::set<int> inside;
   if (!def.region.empty())
@@ -83,6 +84,7 @@ std::vector<CrackRegion> Model::add_auto_crackseed(const AutoCrackSeedDef& def) 
     seed.after = def.after;
     seed.cuts = region.cuts;
     seed.outline = region.outline;
+    seed.min_angle = def.min_angle;
     next.crack_seeds.push_back(std::move(seed));
   }
   commit(std::move(next));

@@ -16,7 +16,9 @@
 
 #include <algorithm>
 #include <limits>
+#include <numbers>
 #include <numeric>
+#include <optional>
 #include <queue>
 #include <unordered_map>
 #include <unordered_set>
@@ -60,6 +62,7 @@ struct Piece {
   bool base = false;    // base outlines never move
   bool optional = false;  // may be left out (CutSegment::optional)
   bool left_out = false;  // it was: not in the arrangement any more
+  double min_angle = 0.0;  // [rad] an optional piece meeting another edge at a sharper corner is cut back
   size_t segment_count() const { return closed ? points.size() : points.size() - 1; }
   Segment segment(size_t i) const { return Segment(points[i], points[(i + 1) % points.size()]); }
 };
@@ -160,7 +163,14 @@ class BaseCutter {
       remove_dangling_edges();
       collect_rings();
       const int fixes = snap_small_features();
-      if (fixes == 0) break;
+      if (fixes == 0) {
+        // Clean: now cut back the optional pieces that make a sharp corner, then clean again.
+        const int cut = cut_back_sharp_corners();
+        if (cut == 0) break;
+        cut_back_ += cut;
+        round = -1;
+        continue;
+      }
       out.snapped_vertices += fixes;
       if (round + 1 < kMaxSnapRounds) continue;
       // Bending goes round in circles: the optional cuts still being bent give way, and the
@@ -177,6 +187,7 @@ class BaseCutter {
     }
     out.dropped_cuts += dropped_;
     out.cuts_left_out += left_out_;
+    out.cuts_cut_back += cut_back_;
     extract(out);
   }
 
@@ -452,6 +463,122 @@ class BaseCutter {
     return static_cast<int>(fixed_at.size());
   }
 
+
+  // Whether the cut pieces of edge h are all optional ones that mind sharp corners (a joint or
+  // an outline along the same line makes the edge theirs): then the smallest such piece, else -1.
+  int sharp_minding_piece(const Halfedge& h) const {
+    int found = -1;
+    for (int id : h->curve().data()) {
+      const Piece& piece = pieces_[static_cast<size_t>(id)];
+      if (!piece.optional || !(piece.min_angle > 0.0)) return -1;
+      if (found < 0 || id < found) found = id;
+    }
+    return found;
+  }
+
+  // An edge a wedge can come loose from: any but the glued outline of a crackseed{ auto } group.
+  bool frees_a_wedge(const Halfedge& h) const {
+    for (int id : h->curve().data()) {
+      const EdgeOrigin& o = pieces_[static_cast<size_t>(id)].origin;
+      if (!(o.kind == EdgeKind::region && o.source < 0 && o.glued)) return true;
+    }
+    return false;
+  }
+
+  // Where along piece `id` point q lies, as a length from its start, if it lies on it.
+  std::optional<double> along(int id, const Point& q) const {
+    const Piece& piece = pieces_[static_cast<size_t>(id)];
+    double before = 0.0;
+    for (size_t i = 0; i < piece.segment_count(); ++i) {
+      const Segment s = piece.segment(i);
+      if (s.has_on(q)) return before + std::sqrt(CGAL::to_double(CGAL::squared_distance(s.source(), q)));
+      before += std::sqrt(CGAL::to_double(s.squared_length()));
+    }
+    return std::nullopt;
+  }
+
+  // Piece `id` less its stretch between the crossings on either side of vertex v (or its end
+  // there): the sharp corner at v goes, and the rest of the piece still ends on other edges.
+  void cut_back(int id, Vertex v) {
+    Piece& piece = pieces_[static_cast<size_t>(id)];
+    const std::optional<double> at = along(id, v->point());
+    if (!at) return;
+    // The crossings on the piece: vertices of degree 3 or more on one of its edges.
+    std::optional<std::pair<double, Point>> before, after;
+    for (auto e = arrangement_.edges_begin(); e != arrangement_.edges_end(); ++e) {
+      const auto& ids = e->curve().data();
+      if (std::find(ids.begin(), ids.end(), id) == ids.end()) continue;
+      for (Vertex w : {Vertex(e->source()), Vertex(e->target())}) {
+        if (w == v || w->degree() < 3) continue;
+        const std::optional<double> s = along(id, w->point());
+        if (!s) continue;
+        if (*s < *at && (!before || *s > before->first)) before = std::make_pair(*s, w->point());
+        if (*s > *at && (!after || *s < after->first)) after = std::make_pair(*s, w->point());
+      }
+    }
+    // Rebuild the two remaining parts from the polyline's own points.
+    Piece first = piece, second = piece;
+    first.points.clear();
+    second.points.clear();
+    double length = 0.0;
+    for (size_t i = 0; i < piece.points.size(); ++i) {
+      if (i > 0) length += std::sqrt(CGAL::to_double(CGAL::squared_distance(piece.points[i - 1], piece.points[i])));
+      if (before && length < before->first) first.points.push_back(piece.points[i]);
+      if (after && length > after->first) second.points.push_back(piece.points[i]);
+    }
+    if (before) first.points.push_back(before->second);
+    if (after) second.points.insert(second.points.begin(), after->second);
+    first.points.erase(std::unique(first.points.begin(), first.points.end()), first.points.end());
+    second.points.erase(std::unique(second.points.begin(), second.points.end()), second.points.end());
+    piece.left_out = true;
+    if (first.points.size() >= 2) pieces_.push_back(std::move(first));
+    if (second.points.size() >= 2) pieces_.push_back(std::move(second));
+  }
+
+  // Corners of blocks sharper than an optional piece along them allows (a potential crack
+  // crossing a joint at a shallow angle leaves a thin wedge that breaks loose and is driven
+  // tip first into its neighbours): such a piece loses its stretch at that corner. Returns how
+  // many were cut back.
+  int cut_back_sharp_corners() {
+    std::vector<std::pair<int, Vertex>> to_cut;
+    for (auto v = arrangement_.vertices_begin(); v != arrangement_.vertices_end(); ++v) {
+      if (v->degree() < 2) continue;
+      const Vec2 pv = to_vec(v->point());
+      // Edges leaving v, by direction, counter-clockwise.
+      std::vector<std::pair<double, Halfedge>> out;
+      auto c = v->incident_halfedges();
+      const auto start = c;
+      do {
+        const Halfedge leaving = c->twin();
+        const Vec2 d = to_vec(leaving->target()->point()) - pv;
+        out.emplace_back(std::atan2(d.y, d.x), leaving);
+      } while (++c != start);
+      std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+      for (size_t i = 0; i < out.size(); ++i) {
+        const auto& [angle0, h0] = out[i];
+        const auto& [angle1, h1] = out[(i + 1) % out.size()];
+        double corner = angle1 - angle0;
+        if (corner <= 0.0) corner += 2.0 * std::numbers::pi;
+        if (!inside_faces_.count(&*h0->face())) continue;  // the face between h0 and h1
+        const int p0 = sharp_minding_piece(h0), p1 = sharp_minding_piece(h1);
+        int id = -1;
+        if (p0 >= 0 && frees_a_wedge(h1) && corner < pieces_[static_cast<size_t>(p0)].min_angle) id = p0;
+        if (p1 >= 0 && frees_a_wedge(h0) && corner < pieces_[static_cast<size_t>(p1)].min_angle) id = std::max(id, p1);
+        if (id < 0 || (p0 == p1)) continue;
+        if (std::find(to_cut.begin(), to_cut.end(), std::make_pair(id, Vertex(v))) == to_cut.end())
+          to_cut.emplace_back(id, v);
+      }
+    }
+    // One cut a piece a round: the arrangement is stale for a piece once it is cut.
+    std::vector<int> cut;
+    for (const auto& [id, v] : to_cut) {
+      if (std::find(cut.begin(), cut.end(), id) != cut.end()) continue;
+      cut.push_back(id);
+      cut_back(id, v);
+    }
+    return static_cast<int>(cut.size());
+  }
+
   Ring make_ring(const std::vector<Halfedge>& halfedges) const {
     Ring ring;
     for (const Halfedge& h : halfedges) {
@@ -533,6 +660,7 @@ class BaseCutter {
   std::vector<FaceRings> inside_;
   int dropped_ = 0;
   int left_out_ = 0;
+  int cut_back_ = 0;
 };
 
 bool boxes_overlap(const Box& a, const Box& b) {
@@ -564,6 +692,7 @@ BlockSet cut_blocks(const CutInput& input) {
       piece.points = {p, q};
       piece.origin = cut.origin;
       piece.optional = cut.optional;
+      piece.min_angle = cut.min_angle * std::numbers::pi / 180.0;
       const Vec2 pv = to_vec(p), qv = to_vec(q);
       piece_boxes.push_back(bounding_box({pv, qv}));
       pieces.push_back(std::move(piece));

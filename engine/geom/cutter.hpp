@@ -21,6 +21,9 @@ struct CutSegment {
   EdgeOrigin origin;   // what it is
   int clip = -1;       // keep only the part inside clip_polygons[clip] (-1: no clipping)
   bool optional = false;  // may be left out where it cannot be laid without a feature below the tolerance
+  // Optional cuts only: where one meets another edge at a corner sharper than this [deg], its
+  // stretch there is cut back to the crossings on either side (0: never).
+  double min_angle = 0.0;
 };
 
 struct CutInput {

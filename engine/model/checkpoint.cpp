@@ -32,6 +32,10 @@ template <class Ar> void fields(Ar& ar, CrackDef& c) { ar("from", c.from); ar("t
 template <class Ar> void fields(Ar& ar, CrackSeedDef& c) {
   ar("region", c.region); ar("angles", c.angles); ar("spacing", c.spacing); ar("origin", c.origin);
   ar("material", c.material); ar("after", c.after); ar("cuts", c.cuts); ar("outline", c.outline);
+  // Optional: schema-1 files written before it existed have none.
+  std::optional<double> min_angle = c.min_angle;
+  ar("min_angle", min_angle);
+  c.min_angle = min_angle.value_or(0.0);
 }
 template <class Ar> void fields(Ar& ar, RegionDef& r) { ar("name", r.name); ar("polygon", r.polygon); ar("glued", r.glued); }
 template <class Ar> void fields(Ar& ar, SizeField& f) {
@@ -228,12 +232,13 @@ struct FlatBlocks {
   std::vector<std::vector<int>> regions;
   int dropped_cuts = 0, joint_edges = 0, snapped_vertices = 0;
   std::optional<int> cuts_left_out;  // optional: schema-1 files written before it existed have none
+  std::optional<int> cuts_cut_back;  // the same
 };
 template <class Ar> void fields(Ar& ar, FlatBlocks& b) {
   ar("ring_points", b.ring_points); ar("ring_edges", b.ring_edges); ar("first_ring", b.first_ring);
   ar("area", b.area); ar("centroid", b.centroid); ar("base", b.base); ar("regions", b.regions);
   ar("dropped_cuts", b.dropped_cuts); ar("joint_edges", b.joint_edges); ar("snapped_vertices", b.snapped_vertices);
-  ar("cuts_left_out", b.cuts_left_out);
+  ar("cuts_left_out", b.cuts_left_out); ar("cuts_cut_back", b.cuts_cut_back);
 }
 
 struct FlatMesh {
@@ -273,6 +278,7 @@ FlatBlocks flatten(const BlockSet& set) {
   f.joint_edges = set.joint_edges;
   f.snapped_vertices = set.snapped_vertices;
   f.cuts_left_out = set.cuts_left_out;
+  f.cuts_cut_back = set.cuts_cut_back;
   return f;
 }
 
@@ -307,6 +313,7 @@ BlockSet unflatten(FlatBlocks f) {
   set.joint_edges = f.joint_edges;
   set.snapped_vertices = f.snapped_vertices;
   set.cuts_left_out = f.cuts_left_out.value_or(0);
+  set.cuts_cut_back = f.cuts_cut_back.value_or(0);
   return set;
 }
 

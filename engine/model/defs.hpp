@@ -60,6 +60,9 @@ struct CrackSeedDef {
   // Cuts placed as given (crackseed{ auto }), instead of sets of parallel lines at `angles`.
   std::vector<std::array<Vec2, 2>> cuts;
   std::vector<std::array<Vec2, 2>> outline;  // glued cuts the `cuts` end on (auto)
+  // Auto: where a cut meets another edge at a corner sharper than this, its stretch there is
+  // cut back to the crossings either side [deg] (0: never).
+  double min_angle = 0.0;
 };
 
 // A zone of a prepass result, as crackseed{ auto = } reads it back from the script.
@@ -76,6 +79,7 @@ struct AutoCrackSeedDef {
   std::vector<PrepassZone> zones;
   double spacing = 0.0;   // between the cuts of a set [m]; 0: a tenth of the opening's height
   double similar = 15.0;  // largest difference of principal direction within a group [deg]
+  double min_angle = 0.0;  // corners sharper than this are not made (CrackSeedDef::min_angle) [deg]
   RegionRef region;       // only zones inside it (empty: all)
   std::string material;   // as CrackSeedDef's; its friction also sets the shear sets' angles
   std::string after;
@@ -110,6 +114,7 @@ struct ModelInfo {
   int joint_edges = 0;      // block edges made by joints, each counted once per side
   int dropped_cuts = 0;
   int cuts_left_out = 0;    // automatic potential-crack cuts that could not be laid clear of the rest
+  int cuts_cut_back = 0;    // automatic potential-crack cuts cut back from a corner sharper than min_angle
   int regions = 0;
   int joint_sets = 0;
   int crack_seeds = 0;      // crackseed{} inputs

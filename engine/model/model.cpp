@@ -195,7 +195,8 @@ BlockSet Model::cut(const Inputs& inputs) const {
     // where a user drew them: one that cannot be laid the tolerance clear of the rest is left out.
     const bool optional = !seed.outline.empty();
     for (const auto& [a, b] : seed.cuts)
-      input.cuts.push_back({a, b, {EdgeKind::potential, -1, static_cast<int>(i), true}, clip, optional});
+      input.cuts.push_back({a, b, {EdgeKind::potential, -1, static_cast<int>(i), true}, clip, optional,
+                            optional ? seed.min_angle : 0.0});
     for (const auto& [a, b] : seed.outline) input.cuts.push_back({a, b, {EdgeKind::region, -1, -1, true}, -1});
     if (!seed.cuts.empty()) continue;
     for (const double angle : seed.angles) {
@@ -265,6 +266,7 @@ ModelInfo Model::info() const {
   info.joint_edges = blocks_.joint_edges;
   info.dropped_cuts = blocks_.dropped_cuts;
   info.cuts_left_out = blocks_.cuts_left_out;
+  info.cuts_cut_back = blocks_.cuts_cut_back;
   info.regions = static_cast<int>(inputs_.regions.size());
   info.joint_sets = static_cast<int>(inputs_.joint_sets.size());
   info.crack_seeds = static_cast<int>(inputs_.crack_seeds.size());

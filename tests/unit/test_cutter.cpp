@@ -447,5 +447,71 @@ TEST(Cutter, OptionalCutsThatCannotBeLaidClearAreLeftOutAndCounted) {
               set.cuts_left_out, laid, asked, set.blocks.size());
 }
 
+
+// A potential crack crossing a joint at 10 deg makes two thin wedges; with min_angle = 20 its
+// stretch there is cut back to the crossings either side (here two cross joints), and one
+// crossing the joint at 40 deg is laid whole.
+CutInput crack_at_ten_degrees_to_a_joint(double min_angle) {
+  CutInput input;
+  input.bases.push_back(box(-10, 10, -10, 10));
+  input.tolerance = 0.01;
+  input.cuts.push_back({{-11, -11}, {11, 11}, {EdgeKind::joint, 0, 0, false}});
+  input.cuts.push_back({{-11, -5}, {11, -5}, {EdgeKind::joint, 1, 1, false}});
+  input.cuts.push_back({{-11, 5}, {11, 5}, {EdgeKind::joint, 1, 1, false}});
+  const auto line = [](Vec2 through, double degrees) {
+    const double a = degrees * std::numbers::pi / 180.0;
+    const Vec2 d{std::cos(a), std::sin(a)};
+    return std::pair{through - 30.0 * d, through + 30.0 * d};
+  };
+  for (const auto& [a, b] : {line({0, 0}, 55), line({-6, -6}, 85)}) {
+    CutSegment cut{a, b, {EdgeKind::potential, -1, 0, true}};
+    cut.optional = true;
+    cut.min_angle = min_angle;
+    input.cuts.push_back(cut);
+  }
+  return input;
+}
+
+// The sharpest corner of any block with a potential-crack edge at it [deg], and the length of
+// potential crack laid (each edge seen from its two blocks).
+std::pair<double, double> sharpest_potential_corner_and_length(const BlockSet& set) {
+  double sharpest = 180.0, laid = 0.0;
+  for (const Block& b : set.blocks) {
+    const auto& p = b.outer.points;
+    const size_t n = p.size();
+    for (size_t i = 0; i < n; ++i) {
+      const size_t prev = (i + n - 1) % n, next = (i + 1) % n;
+      if (b.outer.edges[i].kind == EdgeKind::potential) laid += 0.5 * norm(p[next] - p[i]);
+      if (b.outer.edges[i].kind != EdgeKind::potential && b.outer.edges[prev].kind != EdgeKind::potential)
+        continue;
+      const Vec2 u = p[prev] - p[i], v = p[next] - p[i];
+      const double corner = std::atan2(u.x * v.y - u.y * v.x, dot(u, v)) * 180.0 / std::numbers::pi;
+      // Interior angle of a counter-clockwise ring at p[i]: from v round to u.
+      const double interior = corner < 0.0 ? -corner : 360.0 - corner;
+      sharpest = std::min(sharpest, interior);
+    }
+  }
+  return {sharpest, laid};
+}
+
+TEST(Cutter, OptionalCutsAreCutBackFromCornersSharperThanTheirMinAngle) {
+  const BlockSet all = cut_blocks(crack_at_ten_degrees_to_a_joint(0.0));
+  const auto [sharpest_all, laid_all] = sharpest_potential_corner_and_length(all);
+  EXPECT_EQ(all.cuts_cut_back, 0);
+  EXPECT_NEAR(sharpest_all, 10.0, 1e-6);
+  const double sin55 = std::sin(55.0 * std::numbers::pi / 180.0), sin85 = std::sin(85.0 * std::numbers::pi / 180.0);
+  EXPECT_NEAR(laid_all, 20.0 / sin55 + 20.0 / sin85, 1e-6);
+
+  const CutInput input = crack_at_ten_degrees_to_a_joint(20.0);
+  const BlockSet set = cut_blocks(input);
+  const auto [sharpest, laid] = sharpest_potential_corner_and_length(set);
+  EXPECT_EQ(set.cuts_cut_back, 1);
+  EXPECT_GE(sharpest, 20.0);
+  // The 55 deg crack keeps its parts beyond the cross joints at y = +-5; the 85 deg one is whole.
+  EXPECT_NEAR(laid, 10.0 / sin55 + 20.0 / sin85, 1e-6);
+  expect_valid_blocks(set, input.tolerance);
+  EXPECT_NEAR(total_area(set), 400.0, 1e-9 * 400.0);
+}
+
 }  // namespace
 }  // namespace edem
