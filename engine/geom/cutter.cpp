@@ -499,10 +499,11 @@ class BaseCutter {
 
   // Piece `id` less its stretch between the crossings on either side of vertex v (or its end
   // there): the sharp corner at v goes, and the rest of the piece still ends on other edges.
-  void cut_back(int id, Vertex v) {
+  // False if v is not on it (nothing done).
+  bool cut_back(int id, Vertex v) {
     Piece& piece = pieces_[static_cast<size_t>(id)];
     const std::optional<double> at = along(id, v->point());
-    if (!at) return;
+    if (!at) return false;
     // The crossings on the piece: vertices of degree 3 or more on one of its edges.
     std::optional<std::pair<double, Point>> before, after;
     for (auto e = arrangement_.edges_begin(); e != arrangement_.edges_end(); ++e) {
@@ -533,6 +534,7 @@ class BaseCutter {
     piece.left_out = true;
     if (first.points.size() >= 2) pieces_.push_back(std::move(first));
     if (second.points.size() >= 2) pieces_.push_back(std::move(second));
+    return true;
   }
 
   // Corners of blocks sharper than an optional piece along them allows (a potential crack
@@ -571,11 +573,8 @@ class BaseCutter {
     }
     // One cut a piece a round: the arrangement is stale for a piece once it is cut.
     std::vector<int> cut;
-    for (const auto& [id, v] : to_cut) {
-      if (std::find(cut.begin(), cut.end(), id) != cut.end()) continue;
-      cut.push_back(id);
-      cut_back(id, v);
-    }
+    for (const auto& [id, v] : to_cut)
+      if (std::find(cut.begin(), cut.end(), id) == cut.end() && cut_back(id, v)) cut.push_back(id);
     return static_cast<int>(cut.size());
   }
 

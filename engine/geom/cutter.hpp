@@ -7,6 +7,8 @@
 // vertex, so no block has an edge or a thickness below the tolerance and none has zero area.
 // Where bending cannot resolve a feature, an optional cut taking part in it (the automatic
 // potential cracks) is left out and counted; any other cut fails with a message naming the cuts.
+// An optional cut with a min_angle that would make a block corner sharper than that loses its
+// stretch at the corner, back to its crossings either side (no thin wedge; counted too).
 #pragma once
 
 #include <vector>

@@ -18,6 +18,11 @@
 --   release_offset  cycles added to release [0]: scripts/paper/study.sh --members runs each case
 --             with releases a few cycles apart, to show the spread numerical detail gives
 --   similar   deg: crackseed{ auto }'s grouping angle [45]
+--   min_angle deg: crackseed{ auto }'s sharpest corner with a joint or another edge [0: every
+--             cut laid as placed]: a potential crack crossing a joint more shallowly leaves thin
+--             wedges that, once free, are driven tip first into their neighbours until the overlap
+--             watchdog stops the run; 30 removes those (scripts/paper/README.md, "Where runs
+--             stopped"), but not every stop, and was not run over the whole study
 --   tolerance model{}'s geometric tolerance [7e-4]
 --   table     CSV file the result row is appended to [case_results.csv]; a row after each step
 --             goes to the same name with _steps before .csv
@@ -55,6 +60,7 @@ if not (math.type(RELEASE) == "integer" and RELEASE >= 1) then
   error(("release + release_offset must be a whole number of cycles >= 1, got %s"):format(RELEASE), 0)
 end
 local SIMILAR, TOLERANCE = setting("similar", 45), setting("tolerance", 7e-4)
+local MIN_ANGLE = setting("min_angle", 0)
 local TABLE = tostring(setting("table", "case_results.csv"))
 local STEPS_TABLE = TABLE:gsub("%.csv$", "") .. "_steps.csv"  -- a row after each step
 -- For the table only: the threads it ran on, as the caller set them (edem --threads N --set threads=N).
@@ -95,12 +101,13 @@ for _, z in ipairs(pre.zones) do if z.state ~= "none" then yielded = yielded + 1
 plot{ file = tag .. "_prepass.png", show = { "prepass", "joints" }, window = { -60, 60, -50, 60 } }
 
 -- 2. Potential cracks there, then the discontinuum.
-local groups = crackseed{ auto = pre, spacing = 4.8, material = "intact", similar = SIMILAR }
+local groups = crackseed{ auto = pre, spacing = 4.8, material = "intact", similar = SIMILAR, min_angle = MIN_ANGLE }
 material{ "rock", density = rock.density, young = rock.young, poisson = rock.poisson }
 assign{ material = "rock" }
 local n = info()
-print(("%s: %d zones yielded in the prepass, %d crack groups, %d sections (%d crack pieces left out); %d blocks, "
-       .. "%d zones"):format(tag, yielded, #groups, n.sections, n.cuts_left_out, n.blocks, n.zones))
+print(("%s: %d zones yielded in the prepass, %d crack groups, %d sections (%d crack pieces left out, %d cut back "
+       .. "from corners under %g deg); %d blocks, %d zones"):format(tag, yielded, #groups, n.sections, n.cuts_left_out,
+       n.cuts_cut_back, MIN_ANGLE, n.blocks, n.zones))
 local r = solve{ ratio = 1e-6, max_cycles = 20000 }
 reset{ "displacement", "velocity" }
 
@@ -245,8 +252,9 @@ for i, s in ipairs(c.stages) do
   -- The ratio is judged once the load is off: 40,000 cycles from there.
   local ok, result = pcall(solve, { ratio = 1e-5, max_cycles = RELEASE + 40000 })
   if not ok then
-    stopped = ("step %d: %s"):format(i, tostring(result):gsub("^.-cycle %d+: ", ""):sub(1, 160))
-    print("  stopped at " .. stopped)
+    local why = tostring(result):gsub("^.-cycle %d+: ", "")
+    print(("  stopped at step %d: %s"):format(i, why))  -- whole: the table keeps its first 160 characters
+    stopped = ("step %d: %s"):format(i, why:sub(1, 160))
     break
   end
   if not result.converged then unconverged[#unconverged + 1] = i end
