@@ -463,7 +463,6 @@ class BaseCutter {
     return static_cast<int>(fixed_at.size());
   }
 
-
   // Whether the cut pieces of edge h are all optional ones that mind sharp corners (a joint or
   // an outline along the same line makes the edge theirs): then the smallest such piece, else -1.
   int sharp_minding_piece(const Halfedge& h) const {
@@ -542,6 +541,8 @@ class BaseCutter {
   // tip first into its neighbours): such a piece loses its stretch at that corner. Returns how
   // many were cut back.
   int cut_back_sharp_corners() {
+    if (std::none_of(pieces_.begin(), pieces_.end(), [](const Piece& p) { return p.optional && p.min_angle > 0.0; }))
+      return 0;  // nothing minds: every cut of the model, each time it is cut, goes without this pass
     std::vector<std::pair<int, Vertex>> to_cut;
     for (auto v = arrangement_.vertices_begin(); v != arrangement_.vertices_end(); ++v) {
       if (v->degree() < 2) continue;
