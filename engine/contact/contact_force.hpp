@@ -31,26 +31,34 @@ namespace edem {
   const double t_line = (px * sx + py * sy) / len;
   const double t = std::clamp(t_line, 0.0, 1.0);
   double gap = px * nx + py * ny;  // from the edge's line
+  // The gridpoint's signed distance out of the line of the edge beside this one at its end a
+  // (or b), where that end is a convex corner of the block.
+  const auto out_of_neighbour = [&](bool at_a) {
+    const size_t from = static_cast<size_t>(at_a ? edges[e.prev].a : e.b);
+    const size_t to = static_cast<size_t>(at_a ? e.a : edges[e.next].b);
+    const double fx = x(2 * from), fy = x(2 * from + 1);
+    const double ndx = x(2 * to) - fx, ndy = x(2 * to + 1) - fy;
+    return ((x(2 * n) - fx) * ndy - (x(2 * n + 1) - fy) * ndx) / std::sqrt(ndx * ndx + ndy * ndy);
+  };
   // Past the end of the edge at a convex corner of its block, the gridpoint's share of the
   // contact length shrinks with the distance past the corner and is gone at twice its length
   // (its half-edges then no longer lie over the block): the force fades as a face slides off a
   // corner instead of dropping at once. Faces zoned alike (zoning.hpp) put the gridpoints at a
   // joint's ends exactly on the corners, where any all-or-nothing rule would flicker.
   double share = 1.0;
+  const double fade = std::max(c.length, c.wedge * c.limit);  // a tip's: at its deepest
   if ((t_line < 0.0 && e.corner_a) || (t_line > 1.0 && e.corner_b)) {
     const double past = (t_line < 0.0 ? -t_line : t_line - 1.0) * len;
-    share = c.length > 0.0 ? std::max(0.0, 1.0 - past / (2.0 * c.length)) : 0.0;
+    share = fade > 0.0 ? std::max(0.0, 1.0 - past / (2.0 * fade)) : 0.0;
     // Past the corner the far extension of this edge's line must not press in a gridpoint that
     // has gone beside the block (a wall sliding past the corner of a floor that heaved): it is
     // inside by at most its depth inside the neighbouring edge's line plus the span the force
     // fades over (so a gridpoint on the corner, inside or out by round-off, keeps its contact).
-    const bool at_a = t_line < 0.0;
-    const size_t from = static_cast<size_t>(at_a ? edges[e.prev].a : e.b);
-    const size_t to = static_cast<size_t>(at_a ? e.a : edges[e.next].b);
-    const double fx = x(2 * from), fy = x(2 * from + 1);
-    const double ndx = x(2 * to) - fx, ndy = x(2 * to + 1) - fy;
-    const double nlen = std::sqrt(ndx * ndx + ndy * ndy);
-    gap = std::max(gap, ((x(2 * n) - fx) * ndy - (x(2 * n + 1) - fy) * ndx) / nlen - 2.0 * c.length);
+    gap = std::max(gap, out_of_neighbour(t_line < 0.0) - 2.0 * fade);
+  } else if (gap < 0.0 && ((e.corner_a && t_line * len < c.limit) || (e.corner_b && (1.0 - t_line) * len < c.limit))) {
+    // Within the edge near a convex corner, the same: a gridpoint beside a thin tip that has
+    // sunk into its own block's face lies behind this edge's line, yet outside the block.
+    gap = std::max(gap, out_of_neighbour(t_line < 0.5) - 2.0 * fade);
   }
   const double rvx = v[2 * n] - ((1.0 - t) * v[2 * a] + t * v[2 * b]);
   const double rvy = v[2 * n + 1] - ((1.0 - t) * v[2 * a + 1] + t * v[2 * b + 1]);
@@ -62,7 +70,8 @@ namespace edem {
   c.closure = c.closure0 - gap + c.dilation;
 
   double sn = normal_stress(p, c.closure);
-  bool open = !(share > 0.0);
+  const double length = share * carrying_length(c, -gap);
+  bool open = !(length > 0.0);  // past the corner, or a tip not pressed in
   // Fails in tension: the bond is gone. (A bond with no tensile strength between faces that
   // start together must not break on the round-off of its gap.)
   if (!open && c.intact && sn < -p.tension && c.closure < -1e-9 * c.limit) {
@@ -78,7 +87,6 @@ namespace edem {
     c.fx = c.fy = 0.0;
     return share > 0.0 ? -gap : 0.0;
   }
-  const double length = share * c.length;
   const double ks = p.ks * length;
   const double trial = c.fs - ks * dus;
   const double limit =

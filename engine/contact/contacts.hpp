@@ -8,12 +8,20 @@
 // edge, projected on the contact plane, and given to the block its quarter point is nearest to
 // (so a gridpoint facing the end of one block and the start of the next shares between them).
 //
+// A gridpoint at a convex corner whose edges both leave the other block's face (a tip driven in
+// point first) has almost no such length, yet its boundary crosses the face over a chord that
+// grows with how deep it is in: pressed in by d, the overlap is a triangle of d times half that
+// chord, which is what a penalty interface pushes back on. Its length is then at least `wedge`
+// times d (half the chord per unit depth), up to a quarter of its edges at the watchdog's depth,
+// a face's share.
+//
 // The list is rebuilt by detect_contacts() when anything has moved a quarter of the smallest
 // reach since the last time (the state of a contact that persists is carried over, by its
 // gridpoint and the other block). Between rebuilds the edge of a contact is fixed; a gridpoint
 // that slides past the edge's end is held at the end, at most an eighth of an edge away.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -59,6 +67,7 @@ struct Contact {
   int edge = -1;       // index into ContactBoundary::edges
   int material = -1;   // joint material
   double length = 0.0; // [m]
+  double wedge = 0.0;  // a tip's length per unit overlap (0: not a tip) [-]
   double limit = 0.0;  // overlap beyond which the watchdog stops the run: the gridpoint's reach [m]
   double t = 0.0;      // where the gridpoint projects on the edge, 0 at a, 1 at b
   double share = 1.0;  // of `length` still over the edge's block (past a corner: less) [-]
@@ -91,6 +100,12 @@ struct ContactSet {
   // mesh was made: detection came too late for them (a lost contact); should stay 0.
   long late = 0;
 };
+
+// The length that carries the contact's force at `overlap` [m] (before a corner's share): its
+// own, or a tip's, which grows with the overlap up to the watchdog's limit.
+inline double carrying_length(const Contact& c, double overlap) {
+  return std::max(c.length, c.wedge * std::clamp(overlap, 0.0, c.limit));
+}
 
 std::string_view to_string(ContactState state);
 

@@ -112,7 +112,7 @@ BlockGrid block_grid(const Mechanics& m, double slack) {
 // A contact found for one gridpoint.
 struct Found {
   int other = -1, edge = -1;
-  double length = 0.0;
+  double length = 0.0, wedge = 0.0;
   double t = 0.0, gap = 0.0;
   Vec2 normal;
   Vec2 insitu_force;   // consistent nodal force of the in-situ traction, this side's half [N/m]
@@ -230,6 +230,34 @@ std::optional<Stress> traction_source(const Mechanics& m, int edge, Vec2 point, 
   return std::nullopt;
 }
 
+// A tip's length per unit overlap against the face of `to` (contacts.hpp): half the spread of
+// the tangents of its edges' angles from the face's normal, so that pressed in by d its length
+// is half the chord its boundary cuts on the face's line. 0 unless every edge at node k leaves
+// the face outward and the block lies between them (a convex corner pointing in). At most a
+// quarter of the edges' span at the watchdog's depth, the length a face of them would have.
+double tip_wedge(const Mechanics& m, size_t k, Vec2 p, const Found& to, double reach) {
+  const ContactBoundary& cb = m.faces;
+  const int node = cb.nodes[k];
+  const Vec2 along{-to.normal.y, to.normal.x};
+  double low = INFINITY, high = -INFINITY, span = 0.0;
+  Vec2 own_normal;
+  for (int i = cb.edge_first[k]; i < cb.edge_first[k + 1]; ++i) {
+    const ContactEdge& e = cb.edges[static_cast<size_t>(cb.node_edges[static_cast<size_t>(i)])];
+    if (!m.block_live[static_cast<size_t>(e.block)]) continue;
+    const Vec2 far_end = at(m, e.a == node ? e.b : e.a);
+    const Vec2 d = far_end - p;
+    const double out = dot(d, to.normal);
+    if (!(out > 0.0)) return 0.0;  // runs along the face or into it: not a tip
+    const double tangent = dot(d, along) / out;
+    low = std::min(low, tangent);
+    high = std::max(high, tangent);
+    span += norm(d);
+    own_normal = own_normal + (e.a == node ? outward(p, far_end) : outward(far_end, p));
+  }
+  if (!(high > low) || !(dot(own_normal, to.normal) < 0.0)) return 0.0;
+  return std::min(0.5 * (high - low), span / (4.0 * reach));
+}
+
 // Contacts of node position k: the nearest edge of each block in reach, and their lengths.
 std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t k, bool with_insitu) {
   const bool with_traction = with_insitu || m.fresh_cracks;
@@ -285,7 +313,8 @@ std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t
       }
     }
   }
-  std::erase_if(found, [&](const Found& f) { return !(f.length > 1e-12 * reach); });
+  for (Found& f : found) f.wedge = tip_wedge(m, k, p, f, reach);
+  std::erase_if(found, [&](const Found& f) { return !(f.length > 1e-12 * reach) && !(f.wedge > 0.0); });
   return found;
 }
 
@@ -453,6 +482,7 @@ void detect_contacts(Mechanics& m) {
       c.other = f.other;
       c.edge = f.edge;
       c.length = f.length;
+      c.wedge = f.wedge;
       c.t = f.t;
       c.limit = cb.reach[k];
       const ContactEdge& edge = cb.edges[static_cast<size_t>(f.edge)];
@@ -498,12 +528,13 @@ void detect_contacts(Mechanics& m) {
       // A fresh crack's faces take the traction the section carried, if pressing (a crack
       // carries no tension), on new contacts only: one that was there keeps its own force
       // for the part it had. insitu{} sets every contact's.
-      if (f.insitu && (with_insitu || !kept)) {
+      // (A tip not yet pressed in, with none of its own length, has nothing to take it by.)
+      if (f.insitu && (with_insitu || !kept) && carrying_length(c, -f.gap) > 0.0) {
         const Vec2 a = at(m, edge.a), b = at(m, edge.b);
         const Vec2 s = (1.0 / norm(b - a)) * (b - a);
         const double gap = f.gap;
         // The half traction on this side, as the contact's force on its gridpoint.
-        c.sn = dot(f.insitu_force, f.normal) / c.length;
+        c.sn = dot(f.insitu_force, f.normal) / carrying_length(c, -gap);
         c.fs = dot(f.insitu_force, s);
         if (!with_insitu && c.sn < 0.0) c.sn = c.fs = 0.0;
         c.closure0 = closure_at(p, c.sn) + gap;
@@ -535,7 +566,8 @@ void detect_contacts(Mechanics& m) {
     gather[static_cast<size_t>(fill[static_cast<size_t>(e.a)]++)] = 3 * id + 1;
     gather[static_cast<size_t>(fill[static_cast<size_t>(e.b)]++)] = 3 * id + 2;
     const JointParams& p = m.joint_params[static_cast<size_t>(c.material)];
-    const double k = kRowBound * (p.kn_max + p.ks) * c.length;
+    // A tip's force grows as its overlap squared: twice the stiffness of its length at the limit.
+    const double k = kRowBound * (p.kn_max + p.ks) * std::max(c.length, 2.0 * c.wedge * c.limit);
     rows[static_cast<size_t>(c.node)] += 2.0 * k;
     rows[static_cast<size_t>(e.a)] += 2.0 * (1.0 - c.t) * k;
     rows[static_cast<size_t>(e.b)] += 2.0 * c.t * k;

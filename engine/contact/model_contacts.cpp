@@ -115,7 +115,8 @@ ContactView contact_view(const Mechanics& m, const ContactSet& set, int id) {
   view.position = at(c.node);
   const Vec2 d = at(e.b) - at(e.a);
   view.normal = {d.y / norm(d), -d.x / norm(d)};
-  view.length = c.length * c.share;  // what carries its force now
+  // What carries its force now (the overlap as its last cycle left it).
+  view.length = c.share * carrying_length(c, c.closure - c.closure0 - c.dilation);
   const bool open = c.state == ContactState::open;
   view.fn = open ? 0.0 : -c.sn * view.length;
   view.fs = c.fs;

@@ -118,19 +118,23 @@ std::vector<hsize_t> dataset_extent(hid_t group, const char* name, int rank, hsi
   return dims;
 }
 
-void read_dataset(hid_t group, const char* name, hid_t type, void* data, const std::string& path) {
+void read_dataset(hid_t group, const char* name, hid_t type, void* data, const std::string& path,
+                  const std::vector<const char*>& may_lack) {
   const Handle set(H5Dopen2(group, name, H5P_DEFAULT), H5Dclose);
   const Handle stored(H5Dget_type(set.get()), H5Tclose);
   if (H5Tget_class(stored.get()) != H5Tget_class(type)) fail("{} has the wrong type", path);
   if (H5Tget_class(type) == H5T_COMPOUND) {
-    // HDF5 leaves members missing from the file untouched; a missing member is an error here.
+    // HDF5 leaves members missing from the file untouched; a missing member is an error here
+    // unless the struct names it as one that older files lack.
     const int members = H5Tget_nmembers(type);
     for (int i = 0; i < members; ++i) {
       char* member = H5Tget_member_name(type, static_cast<unsigned>(i));
       const bool found = H5Tget_member_index(stored.get(), member) >= 0;
       const std::string member_name = member;
       H5free_memory(member);
-      if (!found) fail("{} has no member '{}'", path, member_name);
+      const bool optional = std::any_of(may_lack.begin(), may_lack.end(),
+                                        [&](const char* lacking) { return member_name == lacking; });
+      if (!found && !optional) fail("{} has no member '{}'", path, member_name);
     }
   }
   if (H5Dread(set.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0) fail("HDF5 could not read {}", path);

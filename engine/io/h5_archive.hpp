@@ -202,8 +202,21 @@ std::string read_string_attribute(hid_t group, const char* name, const std::stri
 // The extents of a dataset, checked to have `rank` dimensions and, for rank 2, `columns` columns.
 std::vector<hsize_t> dataset_extent(hid_t group, const char* name, int rank, hsize_t columns,
                                     const std::string& path);
-// Reads a whole dataset as `type`; for a compound, first checks that the file has every member.
-void read_dataset(hid_t group, const char* name, hid_t type, void* data, const std::string& path);
+// Reads a whole dataset as `type`; for a compound, first checks that the file has every member
+// but those in `may_lack` (HDF5 leaves those as they are in `data`).
+void read_dataset(hid_t group, const char* name, hid_t type, void* data, const std::string& path,
+                  const std::vector<const char*>& may_lack = {});
+
+// The members of a flat struct that files written before they existed lack, which reading
+// leaves at their defaults: a `std::vector<const char*> later_members(const T*)` beside its
+// fields() names them.
+template <class T>
+std::vector<const char*> members_older_files_lack() {
+  if constexpr (requires(const T* p) { later_members(p); })
+    return later_members(static_cast<const T*>(nullptr));
+  else
+    return {};
+}
 
 template <class T>
 using vector_element = typename T::value_type;
@@ -349,7 +362,7 @@ class Reader {
         read_dataset(group_, name, native_type<typename small_array<E>::element>(), v.data(), at(name));
       } else {
         const Handle type = compound_type<E>();
-        read_dataset(group_, name, type.get(), v.data(), at(name));
+        read_dataset(group_, name, type.get(), v.data(), at(name), members_older_files_lack<E>());
       }
     } else {
       static_assert(Fielded<E>, "no fields() for the element type");

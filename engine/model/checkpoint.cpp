@@ -99,7 +99,10 @@ template <class Ar> void fields(Ar& ar, Contact& c) {
   ar("length", c.length); ar("limit", c.limit); ar("t", c.t); ar("share", c.share); ar("closure0", c.closure0);
   ar("dilation", c.dilation); ar("closure", c.closure); ar("sn", c.sn); ar("fs", c.fs); ar("us", c.us);
   ar("slip", c.slip); ar("fx", c.fx); ar("fy", c.fy); ar("state", c.state); ar("intact", c.intact);
+  ar("wedge", c.wedge);
 }
+// Schema-1 files written before tips had their own length lack it (and had no tips).
+std::vector<const char*> later_members(const Contact*) { return {"wedge"}; }
 template <class Ar> void fields(Ar& ar, ContactSet& s) {
   ar("list", s.list); ar("gather_first", s.gather_first); ar("gather", s.gather); ar("rows", s.rows);
   ar("x_detected", s.x_detected); ar("detected", s.detected); ar("as_built", s.as_built);

@@ -84,7 +84,8 @@ void watch(Mechanics& m, const Mesh& mesh, const Measure& measure, int batch) {
          "length); likely cause: joint material '{}' too soft for this stress (a closure of {:.3g} m "
          "at its largest stiffness {:.4g} Pa/m), or blocks driven into each other faster than the "
          "contacts can push back (a boundary velocity or a time step too large)",
-         cycle, p.x, p.y, c.block + 1, measure.overlap, c.other + 1, c.limit, c.sn, c.length, c.share, c.t,
+         cycle, p.x, p.y, c.block + 1, measure.overlap, c.other + 1, c.limit, c.sn,
+         carrying_length(c, measure.overlap), c.share, c.t,
          m.joint_materials[static_cast<size_t>(c.material)].name, c.sn / jp.kn_max, jp.kn_max);
   }
   std::string inverted;

@@ -1,7 +1,8 @@
 // One contact's force near a convex corner of the edge's block: a gridpoint on the corner (in or
 // out by round-off) keeps its contact; one that has gone beside the block, past the corner, is not
 // pressed in by the far extension of the edge's line (the seed cavern's wall gridpoint beside a
-// heaved floor's corner once took 1 GPa from that).
+// heaved floor's corner once took 1 GPa from that), nor, within the edge, by the line of a thin
+// tip's far face; a tip pressed into a face carries over a length that grows with its depth.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -73,6 +74,35 @@ TEST(ContactForce, BesideTheBlockPastItsCornerNoDeepLinePressesItIn) {
   // 0.2 m below the line, 0.177 m outside the other face: deep by at most 0.2 - 0.177 m.
   c.force_at(-0.05, -0.2);
   EXPECT_NEAR(c.contact.closure, 0.2 - 0.25 / std::sqrt(2.0), 1e-12);
+}
+
+TEST(ContactForce, ATipPressedInCarriesOverALengthGrowingWithItsDepth) {
+  Corner c;
+  c.contact.length = 0.001;  // its half-edges' projection: almost nothing
+  c.contact.wedge = 0.25;    // half the chord its edges cut on the face, per unit depth
+  c.contact.limit = 0.1;
+  EXPECT_NEAR(c.force_at(0.5, -1e-3), 1e9 * 1e-3 * 0.001, 1e-6);  // its own length still larger
+  EXPECT_NEAR(c.force_at(0.5, -0.04), 1e9 * 0.04 * (0.25 * 0.04), 1e-3);
+  EXPECT_NEAR(c.force_at(0.5, -0.2), 1e9 * 0.2 * (0.25 * 0.1), 1e-3);  // no longer than at the limit
+  c.contact.length = 0.0;  // a tip and nothing more: carries nothing until pressed in
+  EXPECT_EQ(c.force_at(0.5, 1e-3), 0.0);
+  EXPECT_EQ(c.contact.state, ContactState::open);
+}
+
+TEST(ContactForce, BesideAThinTipWithinTheEdgeNoDeepLinePressesItIn) {
+  Corner c;
+  c.origin[4] = 1.0;  // the boundary turns down at 45 deg at b, to (1, -1): a 45 deg tip
+  c.contact.limit = 0.1;
+  // 0.05 m from the tip along the edge, so within it, and 0.5 m below its line: by that line
+  // 0.5 m deep, yet 0.32 m outside the tip's other face, more than the fade span (0.2 m).
+  EXPECT_EQ(c.force_at(0.05, -0.5), 0.0);
+  EXPECT_EQ(c.contact.sn, 0.0);
+  // 0.2 m below the line, 0.106 m outside the other face: deep by at most 0.2 - 0.106 m.
+  c.force_at(0.05, -0.2);
+  EXPECT_NEAR(c.contact.closure, 0.2 - 0.15 / std::sqrt(2.0), 1e-12);
+  // Farther along the edge than its reach from the corner, the edge's line alone decides.
+  c.force_at(0.15, -0.2);
+  EXPECT_NEAR(c.contact.closure, 0.2, 1e-12);
 }
 
 }  // namespace
