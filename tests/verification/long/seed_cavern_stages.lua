@@ -194,6 +194,11 @@ check.report("no support: cracks (no crackseed)", plain.cracks, 0, 0, { absolute
 -- 27 s wall. The bolts do not lower the crown's settlement: with Set P's persistent soft joints
 -- the roof moves with blocks far larger than their 5 m, and their yield force spread over 1.5 m
 -- (70 kPa) is small against 4 MPa of overburden. These checks fail.
+-- Measured 2026-11-22 (session 22, cc04051: tips carry over their overlap), same settings: no
+-- support 0.5938 m, 27 slipping (655 have slipped), 3 fallen, 11 s wall; pattern 1 0.5937 m, 25
+-- slipping (652), 3 fallen, every stage at equilibrium, 9 s wall. The checks pass now, by 0.1 mm
+-- and two contacts: margins of the size that went the other way before, so no evidence that the
+-- bolts lower either (see above).
 -- Tried 2026-11-22 (session 10, a trial script, not this one): the paper's listed values (Set M:
 -- rho 1505, E 415.5 MPa, nu 0.136; strength c 0.143 MPa, phi 34, sigma_t 0.0546 MPa; joints
 -- kn_law "seed-cubic", ks 80.7 MPa/m, phi 31.2) with elastic blocks and potential cracks by hand
