@@ -47,19 +47,20 @@ namespace edem {
   // joint's ends exactly on the corners, where any all-or-nothing rule would flicker.
   double share = 1.0;
   const double fade = std::max(c.length, c.wedge * c.limit);  // a tip's: at its deepest
-  if ((t_line < 0.0 && e.corner_a) || (t_line > 1.0 && e.corner_b)) {
-    const double past = (t_line < 0.0 ? -t_line : t_line - 1.0) * len;
-    share = fade > 0.0 ? std::max(0.0, 1.0 - past / (2.0 * fade)) : 0.0;
-    // Past the corner the far extension of this edge's line must not press in a gridpoint that
-    // has gone beside the block (a wall sliding past the corner of a floor that heaved): it is
-    // inside by at most its depth inside the neighbouring edge's line plus the span the force
-    // fades over (so a gridpoint on the corner, inside or out by round-off, keeps its contact).
-    gap = std::max(gap, out_of_neighbour(t_line < 0.0) - 2.0 * fade);
-  } else if (gap < 0.0 && ((e.corner_a && t_line * len < c.limit) || (e.corner_b && (1.0 - t_line) * len < c.limit))) {
-    // Within the edge near a convex corner, the same: a gridpoint beside a thin tip that has
-    // sunk into its own block's face lies behind this edge's line, yet outside the block.
-    gap = std::max(gap, out_of_neighbour(t_line < 0.5) - 2.0 * fade);
+  const bool past = (t_line < 0.0 && e.corner_a) || (t_line > 1.0 && e.corner_b);
+  if (past) {
+    const double beyond = (t_line < 0.0 ? -t_line : t_line - 1.0) * len;
+    share = fade > 0.0 ? std::max(0.0, 1.0 - beyond / (2.0 * fade)) : 0.0;
   }
+  // Past the corner the far extension of this edge's line must not press in a gridpoint that
+  // has gone beside the block (a wall sliding past the corner of a floor that heaved), nor,
+  // within the edge near the corner, one beside a thin tip that has sunk into its own block's
+  // face: it is inside by at most its depth inside the neighbouring edge's line plus the span
+  // the force fades over (so a gridpoint on the corner, inside or out by round-off, keeps its
+  // contact).
+  const bool near_corner = gap < 0.0 && ((e.corner_a && t_line * len < c.limit) ||
+                                         (e.corner_b && (1.0 - t_line) * len < c.limit));
+  if (past || near_corner) gap = std::max(gap, out_of_neighbour(t_line < 0.5) - 2.0 * fade);
   const double rvx = v[2 * n] - ((1.0 - t) * v[2 * a] + t * v[2 * b]);
   const double rvy = v[2 * n + 1] - ((1.0 - t) * v[2 * a + 1] + t * v[2 * b + 1]);
   const double dus = (rvx * sx + rvy * sy) * dt;

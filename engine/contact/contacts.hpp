@@ -101,6 +101,9 @@ struct ContactSet {
   long late = 0;
 };
 
+// How far the gridpoint was inside the edge's block at the contact's last cycle (-gap) [m].
+inline double last_overlap(const Contact& c) { return c.closure - c.closure0 - c.dilation; }
+
 // The length that carries the contact's force at `overlap` [m] (before a corner's share): its
 // own, or a tip's, which grows with the overlap up to the watchdog's limit.
 inline double carrying_length(const Contact& c, double overlap) {

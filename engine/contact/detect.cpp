@@ -233,14 +233,14 @@ std::optional<Stress> traction_source(const Mechanics& m, int edge, Vec2 point, 
 // A tip's length per unit overlap against the face of `to` (contacts.hpp): half the spread of
 // the tangents of its edges' angles from the face's normal, so that pressed in by d its length
 // is half the chord its boundary cuts on the face's line. 0 unless every edge at node k leaves
-// the face outward and the block lies between them (a convex corner pointing in). At most a
+// the face outward and the block lies between them (its edges' summed outward normal,
+// `own_normal`, points into the face: a convex corner pointing in). At most a
 // quarter of the edges' span at the watchdog's depth, the length a face of them would have.
-double tip_wedge(const Mechanics& m, size_t k, Vec2 p, const Found& to, double reach) {
+double tip_wedge(const Mechanics& m, size_t k, Vec2 p, Vec2 own_normal, const Found& to, double reach) {
   const ContactBoundary& cb = m.faces;
   const int node = cb.nodes[k];
   const Vec2 along{-to.normal.y, to.normal.x};
   double low = INFINITY, high = -INFINITY, span = 0.0;
-  Vec2 own_normal;
   for (int i = cb.edge_first[k]; i < cb.edge_first[k + 1]; ++i) {
     const ContactEdge& e = cb.edges[static_cast<size_t>(cb.node_edges[static_cast<size_t>(i)])];
     if (!m.block_live[static_cast<size_t>(e.block)]) continue;
@@ -252,7 +252,6 @@ double tip_wedge(const Mechanics& m, size_t k, Vec2 p, const Found& to, double r
     low = std::min(low, tangent);
     high = std::max(high, tangent);
     span += norm(d);
-    own_normal = own_normal + (e.a == node ? outward(p, far_end) : outward(far_end, p));
   }
   if (!(high > low) || !(dot(own_normal, to.normal) < 0.0)) return 0.0;
   return std::min(0.5 * (high - low), span / (4.0 * reach));
@@ -313,7 +312,7 @@ std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t
       }
     }
   }
-  for (Found& f : found) f.wedge = tip_wedge(m, k, p, f, reach);
+  for (Found& f : found) f.wedge = tip_wedge(m, k, p, own_normal, f, reach);
   std::erase_if(found, [&](const Found& f) { return !(f.length > 1e-12 * reach) && !(f.wedge > 0.0); });
   return found;
 }

@@ -116,7 +116,7 @@ ContactView contact_view(const Mechanics& m, const ContactSet& set, int id) {
   const Vec2 d = at(e.b) - at(e.a);
   view.normal = {d.y / norm(d), -d.x / norm(d)};
   // What carries its force now (the overlap as its last cycle left it).
-  view.length = c.share * carrying_length(c, c.closure - c.closure0 - c.dilation);
+  view.length = c.share * carrying_length(c, last_overlap(c));
   const bool open = c.state == ContactState::open;
   view.fn = open ? 0.0 : -c.sn * view.length;
   view.fs = c.fs;

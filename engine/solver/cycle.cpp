@@ -417,7 +417,7 @@ Measure run_cycles(Mechanics& m, int count) {
     if (out.overlapping < 0 && partials.contact_overlapping[c] >= 0) {
       out.overlapping = partials.contact_overlapping[c];
       const Contact& contact = m.contacts.list[static_cast<size_t>(out.overlapping)];
-      out.overlap = contact.closure - contact.closure0 - contact.dilation;  // -gap
+      out.overlap = last_overlap(contact);
     }
   }
   double speed = -1.0;
