@@ -3,7 +3,7 @@
 # trends need, then scripts/paper/trends.lua over their rows.
 #
 #   bash scripts/paper/study.sh [--edem PATH] [--out DIR] [--jobs N] [--threads T] [--members M]
-#                               [--reduced] [--strict] [-- --set KEY=VALUE ...]
+#                               [--reduced] [--strict] [--resume] [-- --set KEY=VALUE ...]
 #
 #   --edem     the edem to run [build/interp/edem]
 #   --out      where the table, the pictures and the logs go [paper-study]
@@ -16,6 +16,8 @@
 #   --reduced  the version CI runs: zones twice as large (edge 3 m near the cavern, 20 m far) and
 #              the first 8 of the 16 steps; the same runs and trends
 #   --strict   exit 1 unless every trend holds
+#   --resume   keep the runs that already wrote their row in OUT (a study cut short, or more
+#              --members on top of an earlier study made by the same edem) and run only the rest
 #   after --    more settings for every run (e.g. -- --set set=P)
 #
 # The runs (Set M unless told otherwise): Cases 1, 2 and 3 at 158 m without bolts; Case 3 at
@@ -28,7 +30,7 @@
 set -euo pipefail
 
 here=$(cd "$(dirname "$0")" && pwd)
-edem=build/interp/edem out=paper-study jobs=1 threads=2 members=1 reduced=0 strict=false
+edem=build/interp/edem out=paper-study jobs=1 threads=2 members=1 reduced=0 strict=false resume=0
 extra=()
 while [[ $# -gt 0 ]]; do
   case "$1" in
@@ -39,6 +41,7 @@ while [[ $# -gt 0 ]]; do
     --members) members=$2; shift 2 ;;
     --reduced) reduced=1; shift ;;
     --strict) strict=true; shift ;;
+    --resume) resume=1; shift ;;
     --) shift; extra=("$@"); break ;;
     *) echo "study.sh: unknown option '$1' (see the comment at the top of $0)" >&2; exit 2 ;;
   esac
@@ -76,6 +79,7 @@ one_run() {  # one_run "case=1 depth=158 bolts=none"
   local settings=() name
   for kv in $1; do [[ $kv == member=* ]] || settings+=(--set "$kv"); done
   name=$(name_of "$1")
+  if [[ $resume == 1 && -f $out/$name.csv ]]; then echo "study: $1 kept from before"; return; fi
   rm -f "$out/$name.csv" "$out/${name}_steps.csv"
   if (cd "$out" && "$edem" --quiet --threads "$threads" "${common[@]}" "${extra[@]}" "${settings[@]}" \
         --set "table=$name.csv" run "$here/case.lua" > "$name.log" 2>&1); then
@@ -85,7 +89,7 @@ one_run() {  # one_run "case=1 depth=158 bolts=none"
   fi
 }
 export -f one_run name_of
-export edem out threads here
+export edem out threads here resume
 export common_flat="${common[*]}" extra_flat="${extra[*]}"
 
 started=$(date +%s)
