@@ -169,6 +169,7 @@ int run_crackseed(lua_State* L, Context& context, const Args& args) {
 int run_judge(lua_State* L, Context& context, const Args& args) {
   JudgeDef def;
   def.every = static_cast<long>(args.integer("every"));
+  def.most = static_cast<long>(args.integer("most"));
   if (args.has("criterion")) def.criterion = lua_criterion(L, args.get<FunctionArg>("criterion").index);
   context.model().judge(def);
   return 0;
@@ -317,6 +318,10 @@ const Command& judge_command() {
       .keys =
           {
               {"every", Type::integer, "", ge(1), "10", "cycles between judgments"},
+              {"most", Type::integer, "", ge(0), "0",
+               "at most this many sections break at a judgment, those furthest past the built-in "
+               "criteria first (larger of s3 / tension and the Mohr circle's radius over the shear "
+               "strength at its centre); the rest are judged again next time; 0: all that fail"},
               {"criterion", Type::function, "", any_value, kOptional,
                "fn(section) returning nil, \"shear\" or \"tension\"; the section is read-only: "
                "id, x, y, angle, length, sxx, syy, sxy, s1, s3, sn, tau, cohesion, friction, "

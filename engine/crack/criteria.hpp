@@ -15,5 +15,9 @@ namespace edem {
 double shear_function(const Principal& p, const RockStrength& rock);
 double tension_function(const Principal& p, const RockStrength& rock);
 CrackMode crack_mode(const Principal& p, const RockStrength& rock);
+// How far past its strength the state is, as a ratio that is 1 on the failure envelope: the
+// larger of s3 / sigma_t and the Mohr circle's radius over the shear strength at its centre,
+// (s3 - s1) / 2 / (c cos phi - sin phi (s1 + s3) / 2). Ranks the sections that fail.
+double overstress(const Principal& p, const RockStrength& rock);
 
 }  // namespace edem

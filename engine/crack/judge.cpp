@@ -181,6 +181,7 @@ int judge_sections(Mechanics& m, const Mesh& mesh) {
     int section;
     CrackMode mode;
     Stress stress;
+    double overstress;
   };
   std::vector<Failed> failed;
   if (m.fits.first.size() != m.sections.size() + 1) return 0;  // not prepared
@@ -192,9 +193,17 @@ int judge_sections(Mechanics& m, const Mesh& mesh) {
       mode = m.judge.criterion(view_of(m, static_cast<int>(i), s));
     else
       mode = crack_mode(in_plane_principal(s), m.fits.strength[i]);
-    if (mode != CrackMode::none) failed.push_back({static_cast<int>(i), mode, s});
+    if (mode != CrackMode::none)
+      failed.push_back({static_cast<int>(i), mode, s, overstress(in_plane_principal(s), m.fits.strength[i])});
   }
   if (failed.empty()) return 0;
+  if (m.judge.most > 0 && failed.size() > static_cast<size_t>(m.judge.most)) {
+    // Furthest past first; equal ones in section order, so that the choice is repeatable.
+    std::stable_sort(failed.begin(), failed.end(),
+                     [](const Failed& a, const Failed& b) { return a.overstress > b.overstress; });
+    failed.resize(static_cast<size_t>(m.judge.most));
+    std::sort(failed.begin(), failed.end(), [](const Failed& a, const Failed& b) { return a.section < b.section; });
+  }
   for (const Failed& f : failed) {
     Section& s = m.sections[static_cast<size_t>(f.section)];
     s.mode = f.mode;

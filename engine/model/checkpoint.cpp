@@ -220,6 +220,9 @@ template <class Ar> void fields(Ar& ar, Mechanics& m) {
   ar("info", m.info); ar("cycles_run", m.cycles_run); ar("adaptive", m.adaptive); ar("last_kinetic", m.last_kinetic);
   ar("growth_checks", m.growth_checks); ar("growth_span", m.growth_span); ar("next_handle", m.next_handle);
   ar("histories", m.histories);
+  std::optional<long> judge_most = m.judge.most;  // files older than judge{ most } have none: 0
+  ar("judge_most", judge_most);
+  m.judge.most = judge_most.value_or(0);
 }
 
 // ---- The blocks and the mesh hold vectors of vectors per block: stored flat, with offsets, so

@@ -302,6 +302,9 @@ struct CrackView {
 // or by `criterion`.
 struct JudgeDef {
   long every = 10;
+  // At most this many sections break at one judgment, those furthest past the built-in criteria
+  // first (crack/criteria.hpp, overstress); the rest wait for the next. 0: every one that fails.
+  long most = 0;
   std::function<CrackMode(const SectionView&)> criterion;  // empty: built in
 };
 

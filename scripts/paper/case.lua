@@ -23,6 +23,8 @@
 --             wedges that, once free, are driven tip first into their neighbours until the overlap
 --             watchdog stops the run; 30 removes those (scripts/paper/README.md, "Where runs
 --             stopped"), but not every stop, and was not run over the whole study
+--   judge_most  judge{ most }: at most this many sections break at a judgment (every 10
+--             cycles), those furthest past their strength first [0: all that fail]
 --   tolerance model{}'s geometric tolerance [7e-4]
 --   table     CSV file the result row is appended to [case_results.csv]; a row after each step
 --             goes to the same name with _steps before .csv
@@ -61,6 +63,7 @@ if not (math.type(RELEASE) == "integer" and RELEASE >= 1) then
 end
 local SIMILAR, TOLERANCE = setting("similar", 45), setting("tolerance", 7e-4)
 local MIN_ANGLE = setting("min_angle", 0)
+local JUDGE_MOST = setting("judge_most", 0)
 local TABLE = tostring(setting("table", "case_results.csv"))
 local STEPS_TABLE = TABLE:gsub("%.csv$", "") .. "_steps.csv"  -- a row after each step
 -- For the table only: the threads it ran on, as the caller set them (edem --threads N --set threads=N).
@@ -101,6 +104,7 @@ for _, z in ipairs(pre.zones) do if z.state ~= "none" then yielded = yielded + 1
 plot{ file = tag .. "_prepass.png", show = { "prepass", "joints" }, window = { -60, 60, -50, 60 } }
 
 -- 2. Potential cracks there, then the discontinuum.
+judge{ most = JUDGE_MOST }
 local groups = crackseed{ auto = pre, spacing = 4.8, material = "intact", similar = SIMILAR, min_angle = MIN_ANGLE }
 material{ "rock", density = rock.density, young = rock.young, poisson = rock.poisson }
 assign{ material = "rock" }

@@ -155,5 +155,23 @@ TEST(CrackCriteria, TensionWinsWhereBothFail) {
   EXPECT_EQ(crack_mode(p, rock), CrackMode::tension);
 }
 
+// overstress is 1 on the envelope (where crack_mode turns), in shear and in tension, and grows
+// with the load past it: the ranking judge{ most } breaks by.
+TEST(CrackCriteria, OverstressIsOneOnTheEnvelopeAndGrowsPastIt) {
+  const RockStrength rock{0.143e6, 34.0, 0.0546e6};
+  const double phi = 34.0 * std::numbers::pi / 180.0;
+  const double ucs = 2 * rock.cohesion * std::cos(phi) / (1 - std::sin(phi));
+  const double kp = (1 + std::sin(phi)) / (1 - std::sin(phi));
+  for (const double s3 : {0.0, 0.25e6, 0.5e6}) {
+    const double peak = kp * s3 + ucs;
+    EXPECT_NEAR(overstress({-peak, -s3}, rock), 1.0, 1e-12) << s3;
+    EXPECT_LT(overstress({-0.9 * peak, -s3}, rock), 1.0) << s3;
+    EXPECT_GT(overstress({-1.2 * peak, -s3}, rock), overstress({-1.1 * peak, -s3}, rock)) << s3;
+  }
+  EXPECT_NEAR(overstress({0.0, rock.tension}, rock), 1.0, 1e-12);
+  EXPECT_NEAR(overstress({0.0, 2 * rock.tension}, rock), 2.0, 1e-12);
+  EXPECT_LT(overstress({-1e6, -1e6}, rock), 1e-12);  // hydrostatic: no circle, nothing past it
+}
+
 }  // namespace
 }  // namespace edem
