@@ -215,6 +215,11 @@ end
 -- lower in each pair, five times the spread among the releases (25 um), so the bolts do lower the
 -- crown, by 0.02 %. Slipping contacts 24 -> 26, 27 -> 25, 26 -> 28, and those that have slipped
 -- 647 -> 649, 655 -> 652, 655 -> 649: neither goes one way in every pair.
+-- Where they slip (release 1000, a trial copy printing every contact in state "slip" at the end):
+-- the same 25 to 27 places with bolts or without, all at least 9 m from the cavern (the nearest
+-- at (-22.8, -23.6), 11 m left of the wall's foot, and (-6.4, -33.0), 9 m under the floor; the
+-- rest 20 to 95 m away on the persistent joints), beyond the 5 m bolts: which of them sit on the
+-- limit at the end is the numerical detail that flips the count.
 -- Tried 2026-11-22 (session 10, a trial script, not this one): the paper's listed values (Set M:
 -- rho 1505, E 415.5 MPa, nu 0.136; strength c 0.143 MPa, phi 34, sigma_t 0.0546 MPa; joints
 -- kn_law "seed-cubic", ks 80.7 MPa/m, phi 31.2) with elastic blocks and potential cracks by hand
