@@ -39,4 +39,20 @@ inline std::string error_of(const std::string& code) {
   return error_of(interpreter, code);
 }
 
+// The seed paper's tension bar, unloaded: a 0.2 m x 1 m column of its rock (elastic zones of
+// 0.05 m, judged by its Mohr-Coulomb strength) with potential cracks across it every `spacing` m
+// from y = 0.5, which become joints of material "crack".
+inline std::string seed_bar(const std::string& spacing) {
+  return R"(
+block{ x = {-0.1, 0.1}, y = {0, 1} }
+crackseed{ angle = 0, spacing = )" + spacing + R"(, origin = {0, 0.5}, material = "strength", after = "crack" }
+zone{ edge = 0.05 }
+material{ "rock", young = 415.52e6, poisson = 0.136, density = 1505 }
+material{ "strength", model = "mohr", young = 415.52e6, poisson = 0.136, cohesion = 0.143e6,
+          friction = 34, tension = 0.0546e6 }
+assign{ material = "rock" }
+joint_material{ "crack", kn = 1880e6, ks = 1880e6, friction = 31.2 }
+)";
+}
+
 }  // namespace edem::test

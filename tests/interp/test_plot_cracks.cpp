@@ -28,25 +28,13 @@ using test::expect_runs;
 constexpr std::uint32_t kTensionRgb = 0xd62728;
 constexpr std::uint32_t kShearRgb = 0x1a35d4;
 
-// A 0.2 m x 1 m column with potential cracks across it (the seed paper's tension bar).
-constexpr const char* kBar = R"(
-block{ x = {-0.1, 0.1}, y = {0, 1} }
-crackseed{ angle = 0, spacing = SPACING, origin = {0, 0.5}, material = "strength", after = "crack" }
-zone{ edge = 0.05 }
-material{ "rock", young = 415.52e6, poisson = 0.136, density = 1505 }
-material{ "strength", model = "mohr", young = 415.52e6, poisson = 0.136, cohesion = 0.143e6,
-          friction = 34, tension = 0.0546e6 }
-assign{ material = "rock" }
-joint_material{ "crack", kn = 1880e6, ks = 1880e6, friction = 31.2 }
+// The seed's tension bar pulled at its top, with one potential crack (spacing 10) or three
+// (spacing 0.25).
+std::string bar(const std::string& spacing) {
+  return test::seed_bar(spacing) + R"(
 boundary{ side = "bottom", fix = "y" }
 boundary{ side = "top", yvel = 2e-7 }
 )";
-
-// The bar with one potential crack (spacing 10) or three (spacing 0.25).
-std::string bar(const std::string& spacing) {
-  std::string script = kBar;
-  script.replace(script.find("SPACING"), 7, spacing);
-  return script;
 }
 
 std::string read_all(const fs::path& path) {
