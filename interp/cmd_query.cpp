@@ -46,6 +46,7 @@ int run_info(lua_State* L, Context& context, const Args&) {
   set_field(L, "ratio", solver.ratio);
   set_field(L, "contacts", solver.contacts);
   set_field(L, "late_contacts", static_cast<long long>(solver.late_contacts));
+  set_field(L, "contact_searches", static_cast<long long>(solver.contact_searches));
   return 1;
 }
 
@@ -291,7 +292,9 @@ const Command& info_command() {
           "the cycle count), step (time step [s]), ratio (last unbalanced-force ratio), "
           "contacts (as last found: 0 until the first cycle or contact query), late_contacts "
           "(contacts found already pressed in by more than a tenth of their reach, since the "
-          "blocks were zoned: detection came too late for them; it should stay 0)",
+          "blocks were zoned: detection came too late for them; it should stay 0), contact_searches "
+          "(gridpoints whose contacts have been searched for since the blocks were zoned: the cost of "
+          "detection, which searches again only near blocks that moved)",
       .usage = "print(info().blocks)",
   };
   return command;

@@ -15,9 +15,12 @@
 // times d (half the chord per unit depth), up to a quarter of its edges at the watchdog's depth,
 // a face's share.
 //
-// The list is rebuilt by detect_contacts() when anything has moved a quarter of the smallest
-// reach since the last time (the state of a contact that persists is carried over, by its
-// gridpoint and the other block). Between rebuilds the edge of a contact is fixed; a gridpoint
+// The contacts of a block are found again (refresh_contacts) when its boundary has moved an
+// eighth of the smallest reach since it was last marked, with those of the blocks near it; all
+// of them when most of the model is due, or the list is no longer current. The state of a
+// contact that persists is carried over, by its gridpoint and the other block. Finding only
+// where things move keeps a few falling blocks from costing a search of the whole model every
+// few cycles. Between rebuilds the edge of a contact is fixed; a gridpoint
 // that slides past the edge's end is held at the end, at most an eighth of an edge away.
 #pragma once
 
@@ -92,13 +95,15 @@ struct ContactSet {
   // contact pass; the node pass adds push[2 * gather[s]] and the next, not reading the contact.
   std::vector<double> push;
   std::vector<double> rows;          // per node: Gershgorin row sum of contact stiffness [N/m^2]
-  std::vector<double> x_detected;    // node positions at the last detection [m]
+  std::vector<double> x_detected;    // node positions when their blocks were last marked [m]
   bool detected = false;             // the list is current (materials, zones, positions)
   bool as_built = true;              // the next detection is the first on this mesh
   bool from_insitu = false;          // the next detection sets contact forces from insitu{}
   // Contacts found new but already pressed in by more than a tenth of their reach, since the
   // mesh was made: detection came too late for them (a lost contact); should stay 0.
   long late = 0;
+  // Gridpoints whose contacts were searched for, since the mesh was made: what detection cost.
+  long searched = 0;
 };
 
 // How far the gridpoint was inside the edge's block at the contact's last cycle (-gap) [m].

@@ -19,6 +19,9 @@ namespace {
 
 // Stiffness rows count each direction with this bound on |n_x| (|n_x| + |n_y|).
 constexpr double kRowBound = 1.21;
+// A block whose boundary has moved this fraction of the smallest reach since it was last marked
+// has its contacts found again, with those of the blocks near it (refresh_contacts).
+constexpr double kStaleMotion = 0.125;
 // Edges whose outward normals are within 10 degrees face the same way.
 const double kSameFacing = std::cos(10.0 * M_PI / 180.0);
 
@@ -441,38 +444,47 @@ void assign_joint_materials(Mechanics& m) {
       for (const int edge : m.sections[i].edge) m.faces.edges[static_cast<size_t>(edge)].material = m.fits.after[i];
 }
 
-bool contacts_due(const Mechanics& m, double coming_motion) {
-  if (m.faces.touchable_blocks < 2) return false;  // nothing can ever touch
-  if (!m.contacts.detected) return true;
-  double moved = 0.0;
-  for (const int node : m.faces.nodes) {
-    const size_t n = static_cast<size_t>(node);
-    const Vec2 now = at(m, node);
-    const double dx = now.x - m.contacts.x_detected[2 * n], dy = now.y - m.contacts.x_detected[2 * n + 1];
-    moved = std::max(moved, dx * dx + dy * dy);
-  }
-  return std::sqrt(moved) + coming_motion > 0.25 * m.faces.min_reach;
+namespace {
+
+double largest_reach(const ContactBoundary& cb) {
+  double largest = 0.0;
+  for (const double r : cb.reach) largest = std::max(largest, r);
+  return largest;
 }
 
-void detect_contacts(Mechanics& m) {
+// Finds again the contacts of the boundary nodes flagged in `redo` (per position in
+// ContactBoundary::nodes; all of them when it is empty) and keeps the others' as they are;
+// rebuilds the force gather and the stiffness rows.
+void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>& redo) {
   const ContactBoundary& cb = m.faces;
   ContactSet& set = m.contacts;
   const bool first = set.as_built;
   const bool with_insitu = set.from_insitu && !m.insitu.empty();
-  double max_reach = 0.0;
-  for (const double r : cb.reach) max_reach = std::max(max_reach, r);
-  const BlockGrid grid = block_grid(m, max_reach);
+  const bool all = redo.empty();
 
+  std::vector<size_t> todo;
+  for (size_t k = 0; k < cb.nodes.size(); ++k)
+    if (all || redo[k]) todo.push_back(k);
+  set.searched += static_cast<long>(todo.size());
   std::vector<std::vector<Found>> found(cb.nodes.size());
   if (!grid.cells.empty()) {
 #pragma omp parallel for schedule(dynamic, 256) num_threads(thread_count(m))
-    for (size_t k = 0; k < cb.nodes.size(); ++k) found[k] = contacts_of(m, grid, k, with_insitu);
+    for (size_t i = 0; i < todo.size(); ++i) found[todo[i]] = contacts_of(m, grid, todo[i], with_insitu);
   }
 
-  // Join in node order, carrying the state of contacts that persist (same gridpoint and block).
+  // Join in node order, carrying the state of contacts that persist (same gridpoint and block);
+  // a node not found again keeps its contacts whole.
   std::vector<Contact> list;
+  list.reserve(set.list.size());
   long late = 0;
+  auto kept_from = set.list.cbegin();
   for (size_t k = 0; k < cb.nodes.size(); ++k) {
+    if (!all && !redo[k]) {
+      const int node = cb.nodes[k];
+      while (kept_from != set.list.cend() && kept_from->node < node) ++kept_from;
+      for (; kept_from != set.list.cend() && kept_from->node == node; ++kept_from) list.push_back(*kept_from);
+      continue;
+    }
     std::sort(found[k].begin(), found[k].end(), [](const Found& a, const Found& b) { return a.other < b.other; });
     for (const Found& f : found[k]) {
       Contact c;
@@ -576,8 +588,6 @@ void detect_contacts(Mechanics& m) {
   set.gather_first = std::move(first_slot);
   set.gather = std::move(gather);
   set.rows = std::move(rows);
-  set.x_detected.resize(m.u.size());
-  for (size_t dof = 0; dof < m.u.size(); ++dof) set.x_detected[dof] = m.origin[dof] + m.u[dof];
   set.detected = true;
   set.as_built = false;
   if (with_insitu) set.from_insitu = false;
@@ -585,6 +595,108 @@ void detect_contacts(Mechanics& m) {
     for (Section& s : m.sections) s.fresh = false;
     m.fresh_cracks = false;
   }
+}
+
+// Per mesh block: the most any of its boundary nodes has moved from where it was last marked
+// (ContactSet::x_detected), plus what it will move by `ahead` cycles at its speed now, twice.
+std::vector<double> block_motion(const Mechanics& m, double ahead) {
+  const ContactBoundary& cb = m.faces;
+  std::vector<double> moved(cb.block_first_edge.size() - 1, 0.0);
+  for (size_t k = 0; k < cb.nodes.size(); ++k) {
+    const size_t n = static_cast<size_t>(cb.nodes[k]);
+    const Vec2 now = at(m, cb.nodes[k]);
+    const double dx = now.x - m.contacts.x_detected[2 * n], dy = now.y - m.contacts.x_detected[2 * n + 1];
+    const double coming = 2.0 * ahead * m.step * std::hypot(m.v[2 * n], m.v[2 * n + 1]);
+    const double d = std::sqrt(dx * dx + dy * dy) + coming;
+    for (int i = cb.block_first[k]; i < cb.block_first[k + 1]; ++i) {
+      double& b = moved[static_cast<size_t>(cb.node_blocks[static_cast<size_t>(i)])];
+      b = std::max(b, d);
+    }
+  }
+  return moved;
+}
+
+// Marks the blocks whose boxes come within `slack` of block `of`'s.
+void mark_near(const BlockGrid& grid, int of, double slack, std::vector<char>& near) {
+  const Box& box = grid.boxes[static_cast<size_t>(of)];
+  if (box.x0 > box.x1) return;
+  const auto column = [&](double x) { return std::clamp(static_cast<int>((x - grid.x0) / grid.cell), 0, grid.nx - 1); };
+  const auto row = [&](double y) { return std::clamp(static_cast<int>((y - grid.y0) / grid.cell), 0, grid.ny - 1); };
+  for (int j = row(box.y0 - slack); j <= row(box.y1 + slack); ++j)
+    for (int i = column(box.x0 - slack); i <= column(box.x1 + slack); ++i)
+      for (const int other : grid.cells[static_cast<size_t>(j) * static_cast<size_t>(grid.nx) + static_cast<size_t>(i)]) {
+        const Box& b = grid.boxes[static_cast<size_t>(other)];
+        if (b.x0 <= box.x1 + slack && b.x1 >= box.x0 - slack && b.y0 <= box.y1 + slack && b.y1 >= box.y0 - slack)
+          near[static_cast<size_t>(other)] = 1;
+      }
+}
+
+void mark_positions(Mechanics& m, const std::vector<char>& moved_block) {
+  const ContactBoundary& cb = m.faces;
+  std::vector<double>& x = m.contacts.x_detected;
+  if (moved_block.empty()) {
+    x.resize(m.u.size());
+    for (size_t dof = 0; dof < m.u.size(); ++dof) x[dof] = m.origin[dof] + m.u[dof];
+    return;
+  }
+  for (size_t k = 0; k < cb.nodes.size(); ++k)
+    for (int i = cb.block_first[k]; i < cb.block_first[k + 1]; ++i)
+      if (moved_block[static_cast<size_t>(cb.node_blocks[static_cast<size_t>(i)])]) {
+        const size_t n = static_cast<size_t>(cb.nodes[k]);
+        x[2 * n] = m.origin[2 * n] + m.u[2 * n];
+        x[2 * n + 1] = m.origin[2 * n + 1] + m.u[2 * n + 1];
+        break;
+      }
+}
+
+}  // namespace
+
+void detect_contacts(Mechanics& m) {
+  find_contacts(m, block_grid(m, largest_reach(m.faces)), {});
+  mark_positions(m, {});
+}
+
+bool refresh_contacts(Mechanics& m, double ahead) {
+  const ContactBoundary& cb = m.faces;
+  if (cb.touchable_blocks < 2) return false;  // nothing can ever touch
+  const ContactSet& set = m.contacts;
+  if (!set.detected || set.as_built || set.from_insitu || m.fresh_cracks) {
+    detect_contacts(m);
+    return true;
+  }
+  const double limit = kStaleMotion * cb.min_reach;
+  const std::vector<double> moved = block_motion(m, ahead);
+  std::vector<char> stale(moved.size(), 0);
+  bool any = false;
+  for (size_t b = 0; b < moved.size(); ++b)
+    if (m.block_live[b] && moved[b] > limit) stale[b] = 1, any = true;
+  if (!any) return false;
+  // A node kept may have lain within its reach of a block that has moved since, by up to four
+  // limits relatively: the blocks that near are found again too.
+  const double max_reach = largest_reach(cb);
+  const BlockGrid grid = block_grid(m, max_reach);
+  if (grid.cells.empty()) return false;
+  std::vector<char> redo_block(moved.size(), 0);
+  for (size_t b = 0; b < stale.size(); ++b)
+    if (stale[b]) {
+      redo_block[b] = 1;
+      mark_near(grid, static_cast<int>(b), max_reach + 4.0 * limit, redo_block);
+    }
+  std::vector<char> redo(cb.nodes.size(), 0);
+  size_t count = 0;
+  for (size_t k = 0; k < cb.nodes.size(); ++k) {
+    for (int i = cb.block_first[k]; i < cb.block_first[k + 1] && !redo[k]; ++i)
+      redo[k] = redo_block[static_cast<size_t>(cb.node_blocks[static_cast<size_t>(i)])];
+    count += static_cast<size_t>(redo[k]);
+  }
+  if (2 * count > cb.nodes.size()) {  // most of the model: all, and every block marked afresh
+    find_contacts(m, grid, {});
+    mark_positions(m, {});
+  } else {
+    find_contacts(m, grid, redo);
+    mark_positions(m, stale);
+  }
+  return true;
 }
 
 }  // namespace edem

@@ -35,8 +35,12 @@ ContactSet contacts_on_copy(const Mechanics& m, const Mesh& mesh);
 // (model_contacts.cpp).
 ContactView contact_view(const Mechanics& m, const ContactSet& set, int id);
 
-// Whether anything on a block boundary has moved far enough since the last detection that the
-// contacts must be found again (or none have been found yet).
-bool contacts_due(const Mechanics& m, double coming_motion);
+// Finds the contacts again where they may have changed: all of them when none are current;
+// else those of every block whose boundary has moved an eighth of the smallest reach since it
+// was last marked (allowing twice its nodes' speed over `ahead` cycles more), and of the blocks
+// near those, keeping the rest. A node's contacts were found no more than half the smallest
+// reach of relative motion ago, as when everything is found again at a quarter of it.
+// Returns whether any were found again (the masses then need updating).
+bool refresh_contacts(Mechanics& m, double ahead);
 
 }  // namespace edem

@@ -339,6 +339,7 @@ struct SolverInfo {
   double kinetic = 0.0;  // last measured kinetic energy [J/m]
   int contacts = 0;      // contacts as last found (0 until found: first cycle or query)
   long late_contacts = 0;  // contacts found already pressed in (ContactSet::late)
+  long contact_searches = 0;  // gridpoints searched for contacts (ContactSet::searched)
 };
 
 }  // namespace edem

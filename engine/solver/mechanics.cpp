@@ -259,6 +259,7 @@ SolverInfo Model::solver_info() const {
   SolverInfo info = mechanics_->info;
   info.contacts = mechanics_->contacts.detected ? static_cast<int>(mechanics_->contacts.list.size()) : 0;
   info.late_contacts = mechanics_->contacts.late;
+  info.contact_searches = mechanics_->contacts.searched;
   return info;
 }
 

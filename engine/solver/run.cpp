@@ -190,10 +190,7 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
   } else {
     prepare(m, mesh);  // the thread count may have changed
   }
-  if (contacts_due(m, 0.0)) {
-    detect_contacts(m);
-    update_masses(m);
-  }
+  if (refresh_contacts(m, 0.0)) update_masses(m);
   // Past its critical step a bolt's segments chatter between their yield forces: bounded, so the
   // watchdog would not see it grow, and the answer would be garbage. Refused up front.
   if (m.settings.mode == SolverMode::dynamic && m.settings.step > 0.0 && m.settings.step >= m.bolt_hosts.critical_step)
@@ -206,7 +203,6 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
   const auto started = std::chrono::steady_clock::now();
   auto reported = started;
   SolveResult result;
-  double speed = 0.0;  // fastest gridpoint at the last measurement [m/s]
   if (target_ratio > 0.0 && m.release.dof.empty()) {
     const Measure now = measure_state(m);
     m.info.ratio = now.applied > 0.0 ? now.unbalanced / now.applied : 0.0;
@@ -236,20 +232,15 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
     // bolts rehosted, the damping adapted), never where a callback or an output frame cut a batch
     // short: watching a run does not change it.
     const bool measuring = cycle % kMeasureInterval == 0;
-    // Contacts are found again before anything can move a quarter of a reach from where they
-    // were found (allowing twice the last speed until the next measuring cycle), and at once
-    // when the list is no longer current.
-    if ((measuring || !m.contacts.detected) && contacts_due(m, 2.0 * speed * m.step * kMeasureInterval)) {
-      detect_contacts(m);
-      update_masses(m);
-    }
+    // Contacts are found again where things have moved far enough (allowing for their speed
+    // until the next measuring cycle), and everywhere at once when the list is no longer current.
+    if ((measuring || !m.contacts.detected) && refresh_contacts(m, kMeasureInterval)) update_masses(m);
     // Bolt nodes that slid out of their zone take the one they are in now.
     if (measuring && !m.bolts.nodes.x.empty() && rehost_bolts(m)) {
       tie_bolts(m);
       update_masses(m);
     }
     const Measure measure = run_cycles(m, static_cast<int>(batch));
-    speed = measure.max_speed;
     result.cycles += batch;
     m.cycles_run += batch;
     m.info.cycle += batch;
