@@ -606,7 +606,7 @@ std::vector<double> block_motion(const Mechanics& m, double ahead) {
     const size_t n = static_cast<size_t>(cb.nodes[k]);
     const Vec2 now = at(m, cb.nodes[k]);
     const double dx = now.x - m.contacts.x_detected[2 * n], dy = now.y - m.contacts.x_detected[2 * n + 1];
-    const double coming = 2.0 * ahead * m.step * std::hypot(m.v[2 * n], m.v[2 * n + 1]);
+    const double coming = 2.0 * ahead * m.step * std::sqrt(m.v[2 * n] * m.v[2 * n] + m.v[2 * n + 1] * m.v[2 * n + 1]);
     const double d = std::sqrt(dx * dx + dy * dy) + coming;
     for (int i = cb.block_first[k]; i < cb.block_first[k + 1]; ++i) {
       double& b = moved[static_cast<size_t>(cb.node_blocks[static_cast<size_t>(i)])];
