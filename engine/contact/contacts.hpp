@@ -17,7 +17,9 @@
 //
 // The contacts of a block are found again (refresh_contacts) when its boundary has moved an
 // eighth of the smallest reach since it was last marked, with those of the blocks near it; all
-// of them when most of the model is due, or the list is no longer current. The state of a
+// of them when most of the model is due, or the list is no longer current. Right after a full
+// search nothing is due until some block has moved a quarter of it, as when only full searches
+// were done: a region that moves as a whole is not searched twice as often. The state of a
 // contact that persists is carried over, by its gridpoint and the other block. Finding only
 // where things move keeps a few falling blocks from costing a search of the whole model every
 // few cycles. Between rebuilds the edge of a contact is fixed; a gridpoint
@@ -99,6 +101,7 @@ struct ContactSet {
   bool detected = false;             // the list is current (materials, zones, positions)
   bool as_built = true;              // the next detection is the first on this mesh
   bool from_insitu = false;          // the next detection sets contact forces from insitu{}
+  bool partial = false;              // some blocks were found again since the last full search
   // Contacts found new but already pressed in by more than a tenth of their reach, since the
   // mesh was made: detection came too late for them (a lost contact); should stay 0.
   long late = 0;

@@ -654,6 +654,7 @@ void mark_positions(Mechanics& m, const std::vector<char>& moved_block) {
 void detect_contacts(Mechanics& m) {
   find_contacts(m, block_grid(m, largest_reach(m.faces)), {});
   mark_positions(m, {});
+  m.contacts.partial = false;
 }
 
 bool refresh_contacts(Mechanics& m, double ahead) {
@@ -666,11 +667,15 @@ bool refresh_contacts(Mechanics& m, double ahead) {
   }
   const double limit = kStaleMotion * cb.min_reach;
   const std::vector<double> moved = block_motion(m, ahead);
-  std::vector<char> stale(moved.size(), 0);
-  bool any = false;
+  // While every contact dates from one search, any two nodes have moved apart by no more than
+  // twice the most either moved: nothing is due before a block moves twice the limit.
+  double most = 0.0;
   for (size_t b = 0; b < moved.size(); ++b)
-    if (m.block_live[b] && moved[b] > limit) stale[b] = 1, any = true;
-  if (!any) return false;
+    if (m.block_live[b]) most = std::max(most, moved[b]);
+  if (most <= (set.partial ? limit : 2.0 * limit)) return false;
+  std::vector<char> stale(moved.size(), 0);
+  for (size_t b = 0; b < moved.size(); ++b)
+    if (m.block_live[b] && moved[b] > limit) stale[b] = 1;
   // A node kept may have lain within its reach of a block that has moved since, by up to four
   // limits relatively: the blocks that near are found again too.
   const double max_reach = largest_reach(cb);
@@ -690,12 +695,12 @@ bool refresh_contacts(Mechanics& m, double ahead) {
     count += static_cast<size_t>(redo[k]);
   }
   if (2 * count > cb.nodes.size()) {  // most of the model: all, and every block marked afresh
-    find_contacts(m, grid, {});
-    mark_positions(m, {});
-  } else {
-    find_contacts(m, grid, redo);
-    mark_positions(m, stale);
+    detect_contacts(m);
+    return true;
   }
+  find_contacts(m, grid, redo);
+  mark_positions(m, stale);
+  m.contacts.partial = true;
   return true;
 }
 

@@ -36,10 +36,11 @@ ContactSet contacts_on_copy(const Mechanics& m, const Mesh& mesh);
 ContactView contact_view(const Mechanics& m, const ContactSet& set, int id);
 
 // Finds the contacts again where they may have changed: all of them when none are current;
-// else those of every block whose boundary has moved an eighth of the smallest reach since it
-// was last marked (allowing twice its nodes' speed over `ahead` cycles more), and of the blocks
-// near those, keeping the rest. A node's contacts were found no more than half the smallest
-// reach of relative motion ago, as when everything is found again at a quarter of it.
+// else, once some block has moved a quarter of the smallest reach since the last full search
+// (an eighth after a partial one), those of every block whose boundary has moved an eighth of
+// it since it was last marked (allowing twice its nodes' speed over `ahead` cycles more), and
+// of the blocks near those, keeping the rest. A node's contacts were found no more than half the
+// smallest reach of relative motion ago, as when everything is found again at a quarter of it.
 // Returns whether any were found again (the masses then need updating).
 bool refresh_contacts(Mechanics& m, double ahead);
 

@@ -107,9 +107,10 @@ template <class Ar> void fields(Ar& ar, ContactSet& s) {
   ar("list", s.list); ar("gather_first", s.gather_first); ar("gather", s.gather); ar("rows", s.rows);
   ar("x_detected", s.x_detected); ar("detected", s.detected); ar("as_built", s.as_built);
   ar("from_insitu", s.from_insitu); ar("late", s.late); ar("searched", s.searched);
+  ar("partial", s.partial);
 }
-// Files written before detection was done block by block lack the count.
-std::vector<const char*> later_members(const ContactSet*) { return {"searched"}; }
+// Files written before detection was done block by block lack these (and had only full ones).
+std::vector<const char*> later_members(const ContactSet*) { return {"searched", "partial"}; }
 template <class Ar> void fields(Ar& ar, Section& s) {
   ar("a", s.a); ar("b", s.b); ar("edge", s.edge); ar("block", s.block); ar("seed", s.seed); ar("point", s.point);
   ar("angle", s.angle); ar("length", s.length); ar("mode", s.mode); ar("crack", s.crack); ar("fresh", s.fresh);
