@@ -13,8 +13,8 @@
 -- Both at three releases 10 cycles apart (RELEASE - 10, RELEASE, RELEASE + 10), and the checks
 -- must hold at each: a difference that one of them reverses is numerical detail, not the bolts
 -- (session 23: at 1000 cycles both checks passed, at 990 and 1010 the slipping one failed;
--- session 24, contacts found again block by block: slipping 23 -> 24, 25 -> 23, 25 -> 23, crown
--- lower by 0.14-0.17 mm at each, and at 1000 the bolted run leaves a stage short of equilibrium).
+-- session 24, contacts found again block by block (726543a): slipping 25 -> 26, 25 -> 25,
+-- 25 -> 25, crown lower by 0.18-0.28 mm at each, every stage in equilibrium).
 -- Label "long": ctest -L long -R seed_cavern_stages. Optional arguments for trying other settings:
 --   edem run seed_cavern_stages.lua [edge near the cavern [m]] [release [cycles]] [ratio]
 local check = require "edem.check"
