@@ -60,11 +60,13 @@ struct BlockGrid {
   std::vector<std::vector<int>> cells;
   std::vector<Box> boxes;
 
-  const std::vector<int>& near(Vec2 p) const {
-    const int i = std::clamp(static_cast<int>((p.x - x0) / cell), 0, nx - 1);
-    const int j = std::clamp(static_cast<int>((p.y - y0) / cell), 0, ny - 1);
+  int column(double x) const { return std::clamp(static_cast<int>((x - x0) / cell), 0, nx - 1); }
+  int row(double y) const { return std::clamp(static_cast<int>((y - y0) / cell), 0, ny - 1); }
+  std::vector<int>& at(int i, int j) { return cells[static_cast<size_t>(j) * static_cast<size_t>(nx) + static_cast<size_t>(i)]; }
+  const std::vector<int>& at(int i, int j) const {
     return cells[static_cast<size_t>(j) * static_cast<size_t>(nx) + static_cast<size_t>(i)];
   }
+  const std::vector<int>& near(Vec2 p) const { return at(column(p.x), row(p.y)); }
 };
 
 BlockGrid block_grid(const Mechanics& m, double slack) {
@@ -101,13 +103,8 @@ BlockGrid block_grid(const Mechanics& m, double slack) {
   for (int blk = 0; blk < blocks; ++blk) {
     const Box& box = grid.boxes[static_cast<size_t>(blk)];
     if (box.x0 > box.x1) continue;
-    const int i0 = std::clamp(static_cast<int>((box.x0 - slack - grid.x0) / grid.cell), 0, grid.nx - 1);
-    const int i1 = std::clamp(static_cast<int>((box.x1 + slack - grid.x0) / grid.cell), 0, grid.nx - 1);
-    const int j0 = std::clamp(static_cast<int>((box.y0 - slack - grid.y0) / grid.cell), 0, grid.ny - 1);
-    const int j1 = std::clamp(static_cast<int>((box.y1 + slack - grid.y0) / grid.cell), 0, grid.ny - 1);
-    for (int j = j0; j <= j1; ++j)
-      for (int i = i0; i <= i1; ++i)
-        grid.cells[static_cast<size_t>(j) * static_cast<size_t>(grid.nx) + static_cast<size_t>(i)].push_back(blk);
+    for (int j = grid.row(box.y0 - slack); j <= grid.row(box.y1 + slack); ++j)
+      for (int i = grid.column(box.x0 - slack); i <= grid.column(box.x1 + slack); ++i) grid.at(i, j).push_back(blk);
   }
   return grid;
 }
@@ -462,14 +459,14 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
   const bool with_insitu = set.from_insitu && !m.insitu.empty();
   const bool all = redo.empty();
 
-  std::vector<size_t> todo;
+  std::vector<size_t> to_search;
   for (size_t k = 0; k < cb.nodes.size(); ++k)
-    if (all || redo[k]) todo.push_back(k);
-  set.searched += static_cast<long>(todo.size());
+    if (all || redo[k]) to_search.push_back(k);
+  set.searched += static_cast<long>(to_search.size());
   std::vector<std::vector<Found>> found(cb.nodes.size());
   if (!grid.cells.empty()) {
 #pragma omp parallel for schedule(dynamic, 256) num_threads(thread_count(m))
-    for (size_t i = 0; i < todo.size(); ++i) found[todo[i]] = contacts_of(m, grid, todo[i], with_insitu);
+    for (size_t i = 0; i < to_search.size(); ++i) found[to_search[i]] = contacts_of(m, grid, to_search[i], with_insitu);
   }
 
   // Join in node order, carrying the state of contacts that persist (same gridpoint and block);
@@ -620,11 +617,9 @@ std::vector<double> block_motion(const Mechanics& m, double ahead) {
 void mark_near(const BlockGrid& grid, int of, double slack, std::vector<char>& near) {
   const Box& box = grid.boxes[static_cast<size_t>(of)];
   if (box.x0 > box.x1) return;
-  const auto column = [&](double x) { return std::clamp(static_cast<int>((x - grid.x0) / grid.cell), 0, grid.nx - 1); };
-  const auto row = [&](double y) { return std::clamp(static_cast<int>((y - grid.y0) / grid.cell), 0, grid.ny - 1); };
-  for (int j = row(box.y0 - slack); j <= row(box.y1 + slack); ++j)
-    for (int i = column(box.x0 - slack); i <= column(box.x1 + slack); ++i)
-      for (const int other : grid.cells[static_cast<size_t>(j) * static_cast<size_t>(grid.nx) + static_cast<size_t>(i)]) {
+  for (int j = grid.row(box.y0 - slack); j <= grid.row(box.y1 + slack); ++j)
+    for (int i = grid.column(box.x0 - slack); i <= grid.column(box.x1 + slack); ++i)
+      for (const int other : grid.at(i, j)) {
         const Box& b = grid.boxes[static_cast<size_t>(other)];
         if (b.x0 <= box.x1 + slack && b.x1 >= box.x0 - slack && b.y0 <= box.y1 + slack && b.y1 >= box.y0 - slack)
           near[static_cast<size_t>(other)] = 1;

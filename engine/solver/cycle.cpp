@@ -438,7 +438,6 @@ Measure run_cycles(Mechanics& m, int count) {
   out.rayleigh_num += bolt_measure.rayleigh_num;
   out.rayleigh_den += bolt_measure.rayleigh_den;
   out.finite = out.finite && bolt_measure.finite;
-  out.max_speed = speed > 0.0 ? std::sqrt(speed) : 0.0;
   if (!std::isfinite(out.unbalanced) || !std::isfinite(out.kinetic)) out.finite = false;
   return out;
 }

@@ -24,7 +24,6 @@ struct Measure {
   double rayleigh_den = 0.0; // sum m du^2
   int inverted_zone = -1;    // lowest mesh zone turned inside out, or -1
   int fastest_node = -1;     // node with the largest speed
-  double max_speed = 0.0;    // its speed [m/s]
   int overlapping = -1;      // lowest contact whose overlap is beyond its limit, or -1
   double overlap = 0.0;      // that overlap [m]
   bool finite = true;        // every force and velocity finite
