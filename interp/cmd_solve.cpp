@@ -29,7 +29,7 @@ const std::vector<std::string>& dampings() {
 }
 
 const std::vector<std::string>& resettable() {
-  static const std::vector<std::string> names = {"displacement", "velocity", "state"};
+  static const std::vector<std::string> names = {"displacement", "velocity", "state", "joint"};
   return names;
 }
 
@@ -64,7 +64,10 @@ int run_reset(lua_State*, Context& context, const Args& args) {
   const auto named = [&](std::string_view name) {
     return std::find(what.begin(), what.end(), name) != what.end();
   };
-  context.model().reset(named("displacement"), named("velocity"), named("state"));
+  context.model().reset({.displacement = named("displacement"),
+                         .velocity = named("velocity"),
+                         .state = named("state"),
+                         .joint = named("joint")});
   return 0;
 }
 
@@ -176,8 +179,10 @@ const Command& reset_command() {
   static const Command command{
       .name = "reset",
       .help =
-          "Sets to zero the gridpoint displacements or velocities, or clears the zones' "
-          "plastic state flags, of the whole model (stresses are kept).",
+          "Sets to zero the gridpoint displacements or velocities, clears the zones' "
+          "plastic state flags, or (\"joint\", UDEC's RESET JDISP) zeroes the contacts' shear "
+          "displacement and slip records, of the whole model (stresses and contact forces are "
+          "kept).",
       .positional =
           {
               {"what",
@@ -191,7 +196,7 @@ const Command& reset_command() {
                true},
           },
       .run = run_reset,
-      .usage = "reset{ \"displacement\", \"velocity\" }",
+      .usage = "reset{ \"displacement\", \"velocity\", \"joint\" }",
   };
   return command;
 }

@@ -94,8 +94,13 @@ class Model {
   int bolt_count() const;
   BoltView bolt(int id) const;
   std::vector<std::string> bolt_material_names() const;
-  // Zero displacements / velocities / plastic state flags of every gridpoint or zone.
-  void reset(bool displacement, bool velocity, bool state);
+  // What reset() zeroes: gridpoint (and bolt) displacements, velocities, zones' plastic state
+  // flags, and the contacts' shear displacement and slip records (UDEC's RESET JDISP: forces and
+  // closures are kept, so the model stays in equilibrium).
+  struct ResetWhat {
+    bool displacement = false, velocity = false, state = false, joint = false;
+  };
+  void reset(const ResetWhat& what);
 
   // Cycling. Throws edem::Error when the model is not ready (no zones, a zone without
   // material) or when the watchdog stops an unstable run (the model stays at that cycle).

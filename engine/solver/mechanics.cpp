@@ -235,19 +235,21 @@ void Model::set_threads(int threads) {
   mechanics_->threads = threads;
 }
 
-void Model::reset(bool displacement, bool velocity, bool state) {
+void Model::reset(const ResetWhat& what) {
   Mechanics& m = *mechanics_;
-  if (displacement) {
+  if (what.displacement) {
     reset_bolt_displacements(m);
     for (size_t dof = 0; dof < m.u.size(); ++dof) m.origin[dof] += m.u[dof];  // nodes stay put
     std::fill(m.u.begin(), m.u.end(), 0.0);
   }
-  if (velocity)
+  if (what.velocity)
     for (size_t n = 0; n < static_cast<size_t>(m.node_count); ++n) {
       if (!(m.fix[n] & 1)) m.v[2 * n] = 0.0;
       if (!(m.fix[n] & 2)) m.v[2 * n + 1] = 0.0;
     }
-  if (state) std::fill(m.zone_state.begin(), m.zone_state.end(), 0);
+  if (what.state) std::fill(m.zone_state.begin(), m.zone_state.end(), 0);
+  if (what.joint)
+    for (Contact& c : m.contacts.list) c.us = c.slip = 0.0;
   m.dirty = true;  // restarts the adaptive damping from here
 }
 

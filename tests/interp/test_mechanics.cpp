@@ -255,6 +255,36 @@ TEST(Mechanics, ResetClearsWhatItNames) {
   )"));
 }
 
+// reset{ "joint" } is UDEC's RESET JDISP: the contacts' shear displacement and slip records start
+// again from zero (slip measured from an in-situ state), their forces and states are kept.
+TEST(Mechanics, ResetJointClearsTheContactsRecordsNotTheirForces) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, column(R"(
+    jset{ angle = 50, spacing = 4, origin = {0.3, 0.2} }
+    joint_material{ "smooth", kn = 1e10, ks = 1e9, friction = 15 }
+    jassign{ material = "smooth" }
+    solve{ ratio = 1e-5, max_cycles = 3000 }
+    local before, slipped = {}, 0
+    for c in contacts() do
+      before[c.id] = c
+      if c.slip > 0 then slipped = slipped + 1 end
+    end
+    assert(slipped > 0, "the 50 deg joints slip at 15 deg friction")
+    reset{ "displacement" }
+    local kept = 0
+    for c in contacts() do if c.slip == before[c.id].slip then kept = kept + 1 end end
+    assert(kept == #before, "displacement alone leaves the contacts' records")
+    reset{ "joint" }
+    for c in contacts() do
+      local b = before[c.id]
+      assert(c.us == 0 and c.slip == 0, ("contact %d: us %g, slip %g"):format(c.id, c.us, c.slip))
+      assert(c.fn == b.fn and c.fs == b.fs and c.state == b.state and c.un == b.un,
+             ("contact %d: forces or state changed"):format(c.id))
+    end
+  )"));
+}
+
 TEST(Mechanics, GridpointsAndZonesCarryTheState) {
   Interpreter interpreter;
   interpreter.context().quiet = true;
