@@ -18,11 +18,12 @@
 --   release_offset  cycles added to release [0]: scripts/paper/study.sh --members runs each case
 --             with releases a few cycles apart, to show the spread numerical detail gives
 --   similar   deg: crackseed{ auto }'s grouping angle [45]
---   min_angle deg: crackseed{ auto }'s sharpest corner with a joint or another edge [0: every
+--   min_angle deg: crackseed{ auto }'s sharpest corner with a joint or another edge [30; 0: every
 --             cut laid as placed]: a potential crack crossing a joint more shallowly leaves thin
---             wedges that, once free, are driven tip first into their neighbours until the overlap
---             watchdog stops the run; 30 removes those (scripts/paper/README.md, "Where runs
---             stopped"), but not every stop, and was not run over the whole study
+--             wedges and slivers that, once free, are driven tip first into their neighbours until
+--             the overlap watchdog stops the run; 30 leaves those stretches out (scripts/paper/
+--             README.md, "Where runs stopped"; the default since session 25, when it had carried
+--             all 21 runs of session 23's study to step 16 against 17 of 21 with 0)
 --   judge_most  judge{ most }: at most this many sections break at a judgment (every 10
 --             cycles), those furthest past their strength first [0: all that fail]
 --   tolerance model{}'s geometric tolerance [7e-4]
@@ -62,7 +63,7 @@ if not (math.type(RELEASE) == "integer" and RELEASE >= 1) then
   error(("release + release_offset must be a whole number of cycles >= 1, got %s"):format(RELEASE), 0)
 end
 local SIMILAR, TOLERANCE = setting("similar", 45), setting("tolerance", 7e-4)
-local MIN_ANGLE = setting("min_angle", 0)
+local MIN_ANGLE = setting("min_angle", 30)
 local JUDGE_MOST = setting("judge_most", 0)
 local TABLE = tostring(setting("table", "case_results.csv"))
 local STEPS_TABLE = TABLE:gsub("%.csv$", "") .. "_steps.csv"  -- a row after each step
@@ -113,7 +114,7 @@ print(("%s: %d zones yielded in the prepass, %d crack groups, %d sections (%d cr
        .. "from corners under %g deg); %d blocks, %d zones"):format(tag, yielded, #groups, n.sections, n.cuts_left_out,
        n.cuts_cut_back, MIN_ANGLE, n.blocks, n.zones))
 local r = solve{ ratio = 1e-6, max_cycles = 20000 }
-reset{ "displacement", "velocity" }
+reset{ "displacement", "velocity", "joint" }  -- displacements and joint slip from the in-situ state
 
 -- Measuring points, in the rock left in place: the gridpoint nearest to the crown, and those
 -- nearest to the side walls at y = 0.
