@@ -25,8 +25,8 @@
 -- 0.593861 -> 0.593584, 0.593892 -> 0.593699, 0.593922 -> 0.593626 m; slipping 25 -> 18,
 -- 25 -> 16, 25 -> 19. The contacts that no longer slip (release 1000, a trial copy listing them)
 -- lie 10.7 to 85 m from the cavern, most on the two cross joints that meet the left wall at
--- y = 6.7 and -11.9 m, which the bolts cross there: the bolts pin the persistent joints at the
--- wall. The slip within 5 m goes both ways (20.97 -> 20.36, 24.29 -> 20.47, 20.99 -> 25.46 m),
+-- y = 6.7 and -11.9 m, which the bolts cross there: read as the bolts pinning those persistent
+-- joints at the wall (not traced further). The slip within 5 m goes both ways (20.97 -> 20.36, 24.29 -> 20.47, 20.99 -> 25.46 m),
 -- so it is printed, not checked. Bench 9 (stage 12) stops at 40,000 cycles with bolts (below).
 -- Laid at 0.4 and 0.6 of the release instead (a trial copy, bolted runs only): crown 0.593564,
 -- 0.593561, 0.593611 and 0.593725, 0.593623, 0.593695 m; slipping 22, 19, 18 and 16, 21, 16:
