@@ -9,6 +9,7 @@
 #include <limits>
 #include <optional>
 
+#include "contact/edge_choice.hpp"
 #include "core/error.hpp"
 #include "geom/polygon.hpp"
 #include "solver/loads.hpp"
@@ -119,13 +120,13 @@ struct Found {
   bool insitu = false;
 };
 
-// The nearest touchable edge of `block` within `reach` of node k's gridpoint, or nothing.
-// Edges about as near as the nearest (within a tenth of the reach) are told apart by how
-// squarely they face the gridpoint's own boundary: a gridpoint at, or pressed a little into,
-// the corner of the other block belongs to the face it lies against, not to the side edge
-// that happens to be a micrometre nearer (which would turn its force sideways). Matching
-// gridpoints on the two faces of a joint (zoning.hpp) sit exactly at each other's corners.
-std::optional<Found> nearest_edge(const Mechanics& m, int node, Vec2 p, Vec2 own_normal, int block, double reach) {
+// The nearest touchable edge of `block` within `reach` of node k's gridpoint, or nothing:
+// among the edges about as near as the nearest (within a tenth of the reach), the one that
+// EdgeChoice picks (edge_choice.hpp), given `held`, the edge the gridpoint's contact with this
+// block had (-1: none). Matching gridpoints on the two faces of a joint (zoning.hpp) sit
+// exactly at each other's corners.
+std::optional<Found> nearest_edge(const Mechanics& m, int node, Vec2 p, Vec2 own_normal, int block, double reach,
+                                  int held) {
   const ContactBoundary& cb = m.faces;
   const int first = cb.block_first_edge[static_cast<size_t>(block)];
   const int last = cb.block_first_edge[static_cast<size_t>(block) + 1];
@@ -136,21 +137,16 @@ std::optional<Found> nearest_edge(const Mechanics& m, int node, Vec2 p, Vec2 own
     nearest = std::min(nearest, distance_to_segment(p, at(m, edge.a), at(m, edge.b)));
   }
   const double about = std::min(reach, nearest + 0.1 * reach);
-  double best = INFINITY, best_opposition = INFINITY;
-  int best_edge = -1;
+  EdgeChoice choice{.held = held, .own_size = norm(own_normal)};
   for (int e = first; e < last; ++e) {
     const ContactEdge& edge = cb.edges[static_cast<size_t>(e)];
     if (!edge.touchable || edge.a == node || edge.b == node) continue;
     const Vec2 a = at(m, edge.a), b = at(m, edge.b);
     const double d = distance_to_segment(p, a, b);
     if (d > about) continue;
-    const double opposition = dot(outward(a, b), own_normal);
-    if (opposition < best_opposition - 1e-9 || (opposition <= best_opposition + 1e-9 && d < best)) {
-      best = d;
-      best_opposition = opposition;
-      best_edge = e;
-    }
+    choice.offer(e, d, dot(outward(a, b), own_normal));
   }
+  const int best_edge = choice.chosen();
   if (best_edge < 0) return std::nullopt;
   const ContactEdge& edge = cb.edges[static_cast<size_t>(best_edge)];
   Found f;
@@ -257,6 +253,15 @@ double tip_wedge(const Mechanics& m, size_t k, Vec2 p, Vec2 own_normal, const Fo
   return std::min(0.5 * (high - low), span / (4.0 * reach));
 }
 
+// The edge of the contact of `node` with `block` in the list as it stands, or -1.
+int held_edge(const ContactSet& set, int node, int block) {
+  const auto c = std::lower_bound(set.list.begin(), set.list.end(), std::pair{node, block},
+                                  [](const Contact& x, std::pair<int, int> key) {
+                                    return x.node != key.first ? x.node < key.first : x.other < key.second;
+                                  });
+  return c != set.list.end() && c->node == node && c->other == block ? c->edge : -1;
+}
+
 // Contacts of node position k: the nearest edge of each block in reach, and their lengths.
 std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t k, bool with_insitu) {
   const bool with_traction = with_insitu || m.fresh_cracks;
@@ -279,7 +284,8 @@ std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t
   for (const int block : grid.near(p)) {
     if (std::find(own_first, own_last, block) != own_last) continue;
     if (!grid.boxes[static_cast<size_t>(block)].contains(p, reach)) continue;
-    if (auto f = nearest_edge(m, node, p, own_normal, block, reach)) found.push_back(*f);
+    if (auto f = nearest_edge(m, node, p, own_normal, block, reach, held_edge(m.contacts, node, block)))
+      found.push_back(*f);
   }
   if (found.empty()) return found;
   // Each half of an adjacent edge goes to the block its quarter point is nearest to.

@@ -1,0 +1,55 @@
+// Which edge of another block a boundary gridpoint's contact goes to (detect.cpp). The edges
+// offered are those about as near as the nearest; the one facing the gridpoint's own boundary
+// most squarely wins (the most negative opposition, the dot product of the edge's outward normal
+// with the sum of the gridpoint's own edges' outward normals), and among equals the nearest: a
+// gridpoint at, or pressed a little into, the corner of the other block belongs to the face it
+// lies against, not to the side edge that happens to be a micrometre nearer.
+//
+// The edge the contact had before (`held`) is kept while it is offered and faces the boundary
+// within kHeldFacing of the best. A corner pressed into the corner of the block diagonally
+// across a crossing of two joints faces that block's two edges equally (they are its own edges'
+// continuations); choosing afresh at each search swung its force between their normals, some
+// 100 degrees apart, as the blocks' small rotations reordered them: a limit cycle that kept the
+// seed cavern's walls from settling (scripts/paper/README.md, "Run times", session 26).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace edem {
+
+// How much squarer another edge must face the gridpoint to take a contact from its held edge [rad].
+inline const double kHeldFacing = 10.0 * M_PI / 180.0;
+
+struct EdgeChoice {
+  int held = -1;            // the edge the contact had, -1: none
+  double own_size = 0.0;    // length of the gridpoint's summed outward normal [-]
+
+  int best = -1;
+  double best_distance = std::numeric_limits<double>::infinity();     // [m]
+  double best_opposition = std::numeric_limits<double>::infinity();   // [-]
+  double held_opposition = std::numeric_limits<double>::infinity();   // [-], infinite: not offered
+
+  void offer(int edge, double distance, double opposition) {
+    if (edge == held) held_opposition = opposition;
+    if (opposition < best_opposition - 1e-9 || (opposition <= best_opposition + 1e-9 && distance < best_distance)) {
+      best = edge;
+      best_distance = distance;
+      best_opposition = opposition;
+    }
+  }
+
+  // The edge chosen among those offered, -1 if none was.
+  int chosen() const {
+    if (held < 0 || held == best || held_opposition == std::numeric_limits<double>::infinity()) return best;
+    return angle(held_opposition) <= angle(best_opposition) + kHeldFacing ? held : best;
+  }
+
+  // How far the edge's normal turns from squarely against the gridpoint's boundary [rad].
+  double angle(double opposition) const {
+    return own_size > 0.0 ? std::acos(std::clamp(-opposition / own_size, -1.0, 1.0)) : 0.0;
+  }
+};
+
+}  // namespace edem

@@ -1,0 +1,86 @@
+// Which edge a contact goes to: the squarest facing, the nearest among equals, and the edge it
+// had kept while no other faces the gridpoint more than 10 degrees more squarely. The corner
+// case is the seed cavern's: the tip of a 55 degree wedge pressed into the tip of the wedge
+// across a crossing of two joints, whose two edges it faces equally.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "contact/edge_choice.hpp"
+
+namespace edem {
+namespace {
+
+struct Unit {
+  double x, y;
+};
+double dot(Unit a, Unit b) { return a.x * b.x + a.y * b.y; }
+Unit at_angle(double deg) { return {std::cos(deg * M_PI / 180.0), std::sin(deg * M_PI / 180.0)}; }
+
+// The lower wedge's tip, pointing up: its edges' outward normals at 27.5 and 152.5 deg from +x.
+// The upper wedge's two edges at its tip lie on their continuations across the crossing and
+// face the other way, down-left (207.5 deg) and down-right (332.5 deg).
+struct Tips {
+  Unit own{at_angle(27.5).x + at_angle(152.5).x, at_angle(27.5).y + at_angle(152.5).y};
+  Unit down_left = at_angle(207.5), down_right = at_angle(332.5);
+  double own_size() const { return std::hypot(own.x, own.y); }
+  double opposition(Unit edge_normal) const { return dot(edge_normal, own); }
+};
+
+TEST(EdgeChoice, TheSquarestFacingEdgeWinsWhateverTheDistance) {
+  EdgeChoice choice{.own_size = 1.0};
+  choice.offer(7, 0.001, -0.5);  // nearer, but 60 deg off
+  choice.offer(8, 0.05, -1.0);   // squarely against it
+  EXPECT_EQ(choice.chosen(), 8);
+}
+
+TEST(EdgeChoice, NothingOfferedNothingChosen) {
+  const EdgeChoice choice{.held = 3, .own_size = 1.0};
+  EXPECT_EQ(choice.chosen(), -1);
+}
+
+TEST(EdgeChoice, TipIntoTipWithNothingHeldTakesTheNearerEdge) {
+  const Tips tips;
+  ASSERT_NEAR(tips.opposition(tips.down_left), tips.opposition(tips.down_right), 1e-12);  // a tie
+  EdgeChoice choice{.own_size = tips.own_size()};
+  choice.offer(1, 0.020, tips.opposition(tips.down_left));
+  choice.offer(2, 0.019, tips.opposition(tips.down_right));
+  EXPECT_EQ(choice.chosen(), 2);
+}
+
+TEST(EdgeChoice, TipIntoTipKeepsItsEdgeAsTheOtherComesNearerOrTurnsALittleSquarer) {
+  const Tips tips;
+  // Held on the down-left face: the down-right one is nearer, and its block has turned 5 deg so
+  // that it faces the tip more squarely; a choice afresh would swing the force by 120 deg.
+  const Unit turned = at_angle(332.5 - 5.0);
+  EdgeChoice fresh{.own_size = tips.own_size()}, held{.held = 1, .own_size = tips.own_size()};
+  for (EdgeChoice* c : {&fresh, &held}) {
+    c->offer(1, 0.020, tips.opposition(tips.down_left));
+    c->offer(2, 0.019, tips.opposition(turned));
+  }
+  ASSERT_EQ(fresh.chosen(), 2);
+  EXPECT_EQ(held.chosen(), 1);
+}
+
+TEST(EdgeChoice, AHeldEdgeGivesWayToOneFacingMoreThanTenDegreesSquarer) {
+  // A gridpoint whose boundary faces straight up: its held edge has turned 25 deg away, the other
+  // faces it squarely (a face sliding round a corner onto the next face).
+  EdgeChoice choice{.held = 4, .own_size = 1.0};
+  choice.offer(4, 0.01, -std::cos(25.0 * M_PI / 180.0));
+  choice.offer(5, 0.01, -1.0);
+  EXPECT_EQ(choice.chosen(), 5);
+  // Turned only 9 deg: kept.
+  EdgeChoice nine{.held = 4, .own_size = 1.0};
+  nine.offer(4, 0.01, -std::cos(9.0 * M_PI / 180.0));
+  nine.offer(5, 0.01, -1.0);
+  EXPECT_EQ(nine.chosen(), 4);
+}
+
+TEST(EdgeChoice, AHeldEdgeNoLongerAmongTheNearOnesIsDropped) {
+  EdgeChoice choice{.held = 4, .own_size = 1.0};
+  choice.offer(5, 0.01, -0.9);  // edge 4 was not offered: further than the nearest by a tenth of the reach
+  EXPECT_EQ(choice.chosen(), 5);
+}
+
+}  // namespace
+}  // namespace edem
