@@ -144,7 +144,8 @@ std::optional<Found> nearest_edge(const Mechanics& m, int node, Vec2 p, Vec2 own
     const Vec2 a = at(m, edge.a), b = at(m, edge.b);
     const double d = distance_to_segment(p, a, b);
     if (d > about) continue;
-    choice.offer(e, d, dot(outward(a, b), own_normal));
+    const double along = dot(p - a, b - a);
+    choice.offer(e, d, dot(outward(a, b), own_normal), along >= 0.0 && along <= dot(b - a, b - a));
   }
   const int best_edge = choice.chosen();
   if (best_edge < 0) return std::nullopt;

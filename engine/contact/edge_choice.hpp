@@ -5,8 +5,9 @@
 // gridpoint at, or pressed a little into, the corner of the other block belongs to the face it
 // lies against, not to the side edge that happens to be a micrometre nearer.
 //
-// The edge the contact had before (`held`) is kept while it is offered and faces the boundary
-// within kHeldFacing of the best. A corner pressed into the corner of the block diagonally
+// The edge the contact had before (`held`) is kept while it is offered, the gridpoint still
+// projects onto it (not past its ends: a gridpoint sliding along a face goes on to the next
+// edge, as before), and it faces the boundary within kHeldFacing of the best. A corner pressed into the corner of the block diagonally
 // across a crossing of two joints faces that block's two edges equally (they are its own edges'
 // continuations); choosing afresh at each search swung its force between their normals, some
 // 100 degrees apart, as the blocks' small rotations reordered them: a limit cycle that kept the
@@ -31,8 +32,9 @@ struct EdgeChoice {
   double best_opposition = std::numeric_limits<double>::infinity();   // [-]
   double held_opposition = std::numeric_limits<double>::infinity();   // [-], infinite: not offered
 
-  void offer(int edge, double distance, double opposition) {
-    if (edge == held) held_opposition = opposition;
+  // `over`: the gridpoint projects onto the edge, between its ends.
+  void offer(int edge, double distance, double opposition, bool over) {
+    if (edge == held && over) held_opposition = opposition;
     if (opposition < best_opposition - 1e-9 || (opposition <= best_opposition + 1e-9 && distance < best_distance)) {
       best = edge;
       best_distance = distance;

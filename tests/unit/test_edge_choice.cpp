@@ -19,7 +19,8 @@ Unit at_angle(double deg) { return {std::cos(deg * M_PI / 180.0), std::sin(deg *
 
 // The lower wedge's tip, pointing up: its edges' outward normals at 27.5 and 152.5 deg from +x.
 // The upper wedge's two edges at its tip lie on their continuations across the crossing and
-// face the other way, down-left (207.5 deg) and down-right (332.5 deg).
+// face the other way, down-left (207.5 deg) and down-right (332.5 deg). Pressed into that tip,
+// the gridpoint projects onto both (the tip is sharper than a right angle).
 struct Tips {
   Unit own{at_angle(27.5).x + at_angle(152.5).x, at_angle(27.5).y + at_angle(152.5).y};
   Unit down_left = at_angle(207.5), down_right = at_angle(332.5);
@@ -29,8 +30,8 @@ struct Tips {
 
 TEST(EdgeChoice, TheSquarestFacingEdgeWinsWhateverTheDistance) {
   EdgeChoice choice{.own_size = 1.0};
-  choice.offer(7, 0.001, -0.5);  // nearer, but 60 deg off
-  choice.offer(8, 0.05, -1.0);   // squarely against it
+  choice.offer(7, 0.001, -0.5, true);  // nearer, but 60 deg off
+  choice.offer(8, 0.05, -1.0, true);   // squarely against it
   EXPECT_EQ(choice.chosen(), 8);
 }
 
@@ -43,8 +44,8 @@ TEST(EdgeChoice, TipIntoTipWithNothingHeldTakesTheNearerEdge) {
   const Tips tips;
   ASSERT_NEAR(tips.opposition(tips.down_left), tips.opposition(tips.down_right), 1e-12);  // a tie
   EdgeChoice choice{.own_size = tips.own_size()};
-  choice.offer(1, 0.020, tips.opposition(tips.down_left));
-  choice.offer(2, 0.019, tips.opposition(tips.down_right));
+  choice.offer(1, 0.020, tips.opposition(tips.down_left), true);
+  choice.offer(2, 0.019, tips.opposition(tips.down_right), true);
   EXPECT_EQ(choice.chosen(), 2);
 }
 
@@ -55,8 +56,8 @@ TEST(EdgeChoice, TipIntoTipKeepsItsEdgeAsTheOtherComesNearerOrTurnsALittleSquare
   const Unit turned = at_angle(332.5 - 5.0);
   EdgeChoice fresh{.own_size = tips.own_size()}, held{.held = 1, .own_size = tips.own_size()};
   for (EdgeChoice* c : {&fresh, &held}) {
-    c->offer(1, 0.020, tips.opposition(tips.down_left));
-    c->offer(2, 0.019, tips.opposition(turned));
+    c->offer(1, 0.020, tips.opposition(tips.down_left), true);
+    c->offer(2, 0.019, tips.opposition(turned), true);
   }
   ASSERT_EQ(fresh.chosen(), 2);
   EXPECT_EQ(held.chosen(), 1);
@@ -66,19 +67,28 @@ TEST(EdgeChoice, AHeldEdgeGivesWayToOneFacingMoreThanTenDegreesSquarer) {
   // A gridpoint whose boundary faces straight up: its held edge has turned 25 deg away, the other
   // faces it squarely (a face sliding round a corner onto the next face).
   EdgeChoice choice{.held = 4, .own_size = 1.0};
-  choice.offer(4, 0.01, -std::cos(25.0 * M_PI / 180.0));
-  choice.offer(5, 0.01, -1.0);
+  choice.offer(4, 0.01, -std::cos(25.0 * M_PI / 180.0), true);
+  choice.offer(5, 0.01, -1.0, true);
   EXPECT_EQ(choice.chosen(), 5);
   // Turned only 9 deg: kept.
   EdgeChoice nine{.held = 4, .own_size = 1.0};
-  nine.offer(4, 0.01, -std::cos(9.0 * M_PI / 180.0));
-  nine.offer(5, 0.01, -1.0);
+  nine.offer(4, 0.01, -std::cos(9.0 * M_PI / 180.0), true);
+  nine.offer(5, 0.01, -1.0, true);
   EXPECT_EQ(nine.chosen(), 4);
+}
+
+TEST(EdgeChoice, AHeldEdgeTheGridpointHasSlidPastIsDropped) {
+  // Sliding along a face made of edges in line: past the end of its edge, it goes on to the next,
+  // which faces it as squarely and is as near.
+  EdgeChoice choice{.held = 4, .own_size = 1.0};
+  choice.offer(4, 0.011, -1.0, false);
+  choice.offer(5, 0.010, -1.0, true);
+  EXPECT_EQ(choice.chosen(), 5);
 }
 
 TEST(EdgeChoice, AHeldEdgeNoLongerAmongTheNearOnesIsDropped) {
   EdgeChoice choice{.held = 4, .own_size = 1.0};
-  choice.offer(5, 0.01, -0.9);  // edge 4 was not offered: further than the nearest by a tenth of the reach
+  choice.offer(5, 0.01, -0.9, true);  // edge 4 was not offered: further than the nearest by a tenth of the reach
   EXPECT_EQ(choice.chosen(), 5);
 }
 
