@@ -23,7 +23,10 @@
 // contact that persists is carried over, by its gridpoint and the other block. Finding only
 // where things move keeps a few falling blocks from costing a search of the whole model every
 // few cycles. Between rebuilds the edge of a contact is fixed; a gridpoint
-// that slides past the edge's end is held at the end, at most an eighth of an edge away.
+// that slides past the edge's end is held at the end, at most an eighth of an edge away. At a
+// rebuild a contact keeps its edge while the gridpoint projects onto it and no other faces it
+// much more squarely (edge_choice.hpp): a corner pressed into a corner would otherwise swing
+// between that corner's two edges.
 #pragma once
 
 #include <algorithm>
