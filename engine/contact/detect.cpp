@@ -125,8 +125,8 @@ struct Found {
 // EdgeChoice picks (edge_choice.hpp), given `held`, the edge the gridpoint's contact with this
 // block had (-1: none). Matching gridpoints on the two faces of a joint (zoning.hpp) sit
 // exactly at each other's corners.
-std::optional<Found> nearest_edge(const Mechanics& m, int node, Vec2 p, Vec2 own_normal, int block, double reach,
-                                  int held) {
+std::optional<Found> nearest_edge(const Mechanics& m, int node, Vec2 p, Vec2 own_normal, int block,
+                                  double reach, int held) {
   const ContactBoundary& cb = m.faces;
   const int first = cb.block_first_edge[static_cast<size_t>(block)];
   const int last = cb.block_first_edge[static_cast<size_t>(block) + 1];
@@ -256,10 +256,10 @@ double tip_wedge(const Mechanics& m, size_t k, Vec2 p, Vec2 own_normal, const Fo
 
 // The edge of the contact of `node` with `block` in the list as it stands, or -1.
 int held_edge(const ContactSet& set, int node, int block) {
-  const auto c = std::lower_bound(set.list.begin(), set.list.end(), std::pair{node, block},
-                                  [](const Contact& x, std::pair<int, int> key) {
-                                    return x.node != key.first ? x.node < key.first : x.other < key.second;
-                                  });
+  const auto before = [](const Contact& x, std::pair<int, int> key) {
+    return x.node != key.first ? x.node < key.first : x.other < key.second;
+  };
+  const auto c = std::lower_bound(set.list.begin(), set.list.end(), std::pair{node, block}, before);
   return c != set.list.end() && c->node == node && c->other == block ? c->edge : -1;
 }
 
@@ -285,8 +285,8 @@ std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t
   for (const int block : grid.near(p)) {
     if (std::find(own_first, own_last, block) != own_last) continue;
     if (!grid.boxes[static_cast<size_t>(block)].contains(p, reach)) continue;
-    if (auto f = nearest_edge(m, node, p, own_normal, block, reach, held_edge(m.contacts, node, block)))
-      found.push_back(*f);
+    const int held = held_edge(m.contacts, node, block);
+    if (auto f = nearest_edge(m, node, p, own_normal, block, reach, held)) found.push_back(*f);
   }
   if (found.empty()) return found;
   // Each half of an adjacent edge goes to the block its quarter point is nearest to.

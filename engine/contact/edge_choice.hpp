@@ -36,7 +36,9 @@ struct EdgeChoice {
   // `over`: the gridpoint projects onto the edge, between its ends.
   void offer(int edge, double distance, double opposition, bool over) {
     if (edge == held && over) held_opposition = opposition;
-    if (opposition < best_opposition - 1e-9 || (opposition <= best_opposition + 1e-9 && distance < best_distance)) {
+    const bool squarer = opposition < best_opposition - 1e-9;
+    const bool as_square = opposition <= best_opposition + 1e-9;
+    if (squarer || (as_square && distance < best_distance)) {
       best = edge;
       best_distance = distance;
       best_opposition = opposition;
@@ -45,7 +47,8 @@ struct EdgeChoice {
 
   // The edge chosen among those offered, -1 if none was.
   int chosen() const {
-    if (held < 0 || held == best || held_opposition == std::numeric_limits<double>::infinity()) return best;
+    const bool offered = held_opposition < std::numeric_limits<double>::infinity();
+    if (held < 0 || held == best || !offered) return best;
     return angle(held_opposition) <= angle(best_opposition) + kHeldFacing ? held : best;
   }
 

@@ -88,7 +88,8 @@ TEST(EdgeChoice, AHeldEdgeTheGridpointHasSlidPastIsDropped) {
 
 TEST(EdgeChoice, AHeldEdgeNoLongerAmongTheNearOnesIsDropped) {
   EdgeChoice choice{.held = 4, .own_size = 1.0};
-  choice.offer(5, 0.01, -0.9, true);  // edge 4 was not offered: further than the nearest by a tenth of the reach
+  // Edge 4 is not offered: further than the nearest by more than a tenth of the reach.
+  choice.offer(5, 0.01, -0.9, true);
   EXPECT_EQ(choice.chosen(), 5);
 }
 
