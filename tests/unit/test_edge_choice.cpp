@@ -7,25 +7,22 @@
 #include <cmath>
 
 #include "contact/edge_choice.hpp"
+#include "core/vec2.hpp"
 
 namespace edem {
 namespace {
 
-struct Unit {
-  double x, y;
-};
-double dot(Unit a, Unit b) { return a.x * b.x + a.y * b.y; }
-Unit at_angle(double deg) { return {std::cos(deg * M_PI / 180.0), std::sin(deg * M_PI / 180.0)}; }
+Vec2 at_angle(double deg) { return {std::cos(deg * M_PI / 180.0), std::sin(deg * M_PI / 180.0)}; }
 
 // The lower wedge's tip, pointing up: its edges' outward normals at 27.5 and 152.5 deg from +x.
 // The upper wedge's two edges at its tip lie on their continuations across the crossing and
 // face the other way, down-left (207.5 deg) and down-right (332.5 deg). Pressed into that tip,
 // the gridpoint projects onto both (the tip is sharper than a right angle).
 struct Tips {
-  Unit own{at_angle(27.5).x + at_angle(152.5).x, at_angle(27.5).y + at_angle(152.5).y};
-  Unit down_left = at_angle(207.5), down_right = at_angle(332.5);
-  double own_size() const { return std::hypot(own.x, own.y); }
-  double opposition(Unit edge_normal) const { return dot(edge_normal, own); }
+  Vec2 own = at_angle(27.5) + at_angle(152.5);
+  Vec2 down_left = at_angle(207.5), down_right = at_angle(332.5);
+  double own_size() const { return norm(own); }
+  double opposition(Vec2 edge_normal) const { return dot(edge_normal, own); }
 };
 
 TEST(EdgeChoice, TheSquarestFacingEdgeWinsWhateverTheDistance) {
@@ -53,7 +50,7 @@ TEST(EdgeChoice, TipIntoTipKeepsItsEdgeAsTheOtherComesNearerOrTurnsALittleSquare
   const Tips tips;
   // Held on the down-left face: the down-right one is nearer, and its block has turned 5 deg so
   // that it faces the tip more squarely; a choice afresh would swing the force by 120 deg.
-  const Unit turned = at_angle(332.5 - 5.0);
+  const Vec2 turned = at_angle(332.5 - 5.0);
   EdgeChoice fresh{.own_size = tips.own_size()}, held{.held = 1, .own_size = tips.own_size()};
   for (EdgeChoice* c : {&fresh, &held}) {
     c->offer(1, 0.020, tips.opposition(tips.down_left), true);
