@@ -45,6 +45,7 @@ const std::vector<const Command*>& commands() {
       &history_write_command(),  //
       &info_command(),           // cmd_query.cpp
       &blocks_command(),         //
+      &moved_blocks_command(),   //
       &zones_command(),          //
       &gridpoints_command(),     //
       &gp_near_command(),        //

@@ -40,6 +40,7 @@ const Command& history_command();
 const Command& history_write_command();
 const Command& info_command();
 const Command& blocks_command();
+const Command& moved_blocks_command();
 const Command& zones_command();
 const Command& gridpoints_command();
 const Command& gp_near_command();

@@ -185,16 +185,28 @@ int judge_sections(Mechanics& m, const Mesh& mesh) {
   };
   std::vector<Failed> failed;
   if (m.fits.first.size() != m.sections.size() + 1) return 0;  // not prepared
+  const auto judged = [&](size_t i) {
+    return m.sections[i].mode == CrackMode::none && m.fits.first[i] != m.fits.first[i + 1];
+  };
+  // The built-in criteria on all threads (each section on its own, so the answer is the same on
+  // any number): the cycle's other threads would wait for this otherwise. A Lua criterion runs on
+  // the one Lua state.
+  std::vector<CrackMode> modes(m.sections.size(), CrackMode::none);
+  if (!m.judge.criterion) {
+    const long count = static_cast<long>(m.sections.size());
+#pragma omp parallel for num_threads(std::max(1, m.partition.threads)) schedule(static)
+    for (long k = 0; k < count; ++k) {
+      const size_t i = static_cast<size_t>(k);
+      if (judged(i))
+        modes[i] = crack_mode(in_plane_principal(fitted_stress(m, static_cast<int>(k))), m.fits.strength[i]);
+    }
+  }
   for (size_t i = 0; i < m.sections.size(); ++i) {
-    if (m.sections[i].mode != CrackMode::none || m.fits.first[i] == m.fits.first[i + 1]) continue;
+    if (!judged(i) || (!m.judge.criterion && modes[i] == CrackMode::none)) continue;
     const Stress s = fitted_stress(m, static_cast<int>(i));
-    CrackMode mode = CrackMode::none;
-    if (m.judge.criterion)
-      mode = m.judge.criterion(view_of(m, static_cast<int>(i), s));
-    else
-      mode = crack_mode(in_plane_principal(s), m.fits.strength[i]);
-    if (mode != CrackMode::none)
-      failed.push_back({static_cast<int>(i), mode, s, overstress(in_plane_principal(s), m.fits.strength[i])});
+    const CrackMode mode = m.judge.criterion ? m.judge.criterion(view_of(m, static_cast<int>(i), s)) : modes[i];
+    if (mode == CrackMode::none) continue;
+    failed.push_back({static_cast<int>(i), mode, s, overstress(in_plane_principal(s), m.fits.strength[i])});
   }
   if (failed.empty()) return 0;
   if (m.judge.most > 0 && failed.size() > static_cast<size_t>(m.judge.most)) {

@@ -159,11 +159,9 @@ end
 -- Mucking out: blocks whose gridpoints have moved more than 1 m.
 local fallen = 0
 local function muck_out()
-  for b in blocks() do
-    if not b.excavated and b.max_displacement > 1.0 then
-      excavate{ block = b.id }
-      fallen = fallen + 1
-    end
+  for b in moved_blocks(1.0) do
+    excavate{ block = b.id }
+    fallen = fallen + 1
   end
 end
 local mucking = every(200, muck_out)

@@ -86,6 +86,47 @@ TEST(Excavation, BlocksTellTheirLargestDisplacementAndWhetherTheyAreGone) {
   )");
 }
 
+// moved_blocks(d) gives what the loop over blocks() would pick for mucking out, no more, and
+// refuses a distance that is not one.
+TEST(Excavation, MovedBlocksAreTheBlocksInPlaceThatMovedFurther) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, std::string(kStack) + R"(
+    for b in moved_blocks(0) do error("nothing has moved yet: block " .. b.id) end
+    solve{ ratio = 1e-6 }
+    excavate("cut")
+    solve{ ratio = 1e-6 }
+    local function picked(d)
+      local ids = {}
+      for b in blocks() do
+        if not b.excavated and b.max_displacement > d then ids[#ids + 1] = b.id end
+      end
+      return table.concat(ids, " ")
+    end
+    local largest = 0
+    for b in blocks() do if not b.excavated then largest = math.max(largest, b.max_displacement) end end
+    assert(largest > 0, "the rock settles")
+    for _, d in ipairs({0, 0.5 * largest, largest}) do
+      local ids = {}
+      for b in moved_blocks(d) do
+        assert(b.max_displacement > d and not b.excavated and b.vertices, "a block table as blocks() gives")
+        ids[#ids + 1] = b.id
+      end
+      assert(table.concat(ids, " ") == picked(d), ("moved_blocks(%g): %s, blocks(): %s"):format(
+        d, table.concat(ids, " "), picked(d)))
+    end
+    assert(picked(0) ~= "" and picked(largest) == "", "the two ends of the range")
+    -- Mucking out while iterating: each block once, none excavated twice.
+    local out = 0
+    for b in moved_blocks(0) do excavate{ block = b.id }; out = out + 1 end
+    assert(out > 0)
+    for b in moved_blocks(0) do error("block " .. b.id .. " is out already") end
+  )");
+  const std::string error = error_of(interpreter, "for b in moved_blocks(-1) do end");
+  EXPECT_TRUE(contains(error, "distance")) << error;
+  EXPECT_TRUE(contains(error, "-1")) << error;
+}
+
 TEST(Excavation, ContactsWithAnExcavatedBlockGo) {
   Interpreter interpreter;
   interpreter.context().quiet = true;
