@@ -100,6 +100,7 @@ int run_auto_crackseed(lua_State* L, Context& context, const Args& args) {
   if (args.has("spacing")) def.spacing = args.number("spacing");
   def.similar = args.number("similar");
   if (args.has("min_angle")) def.min_angle = args.number("min_angle");
+  if (args.has("origin")) def.origin = args.point("origin");
   if (args.has("region")) def.region = args.get<RegionRef>("region");
   if (args.has("material")) def.material = args.string("material");
   if (args.has("after")) def.after = args.string("after");
@@ -158,7 +159,7 @@ int run_crackseed(lua_State* L, Context& context, const Args& args) {
   def.angles = one ? std::vector<double>{args.number("angle")} : args.get<std::vector<double>>("angles");
   if (!args.has("spacing")) fail("spacing is needed (the normal distance between the cuts of a set)");
   def.spacing = args.number("spacing");
-  def.origin = args.point("origin");
+  def.origin = args.has("origin") ? args.point("origin") : Vec2{0.0, 0.0};
   if (args.has("region")) def.region = args.get<RegionRef>("region");
   if (args.has("material")) def.material = args.string("material");
   if (args.has("after")) def.after = args.string("after");
@@ -288,7 +289,9 @@ const Command& crackseed_command() {
                "either side (counted in info().cuts_cut_back): no thin wedge forms that could "
                "break loose and be driven tip first into its neighbours",
                "0: every cut laid"},
-              {"origin", Type::point, "m", any_value, "{0, 0}", "a point on one cut of each set"},
+              {"origin", Type::point, "m", any_value, kOptional,
+               "a point on one cut of each set (with auto: of every group's sets)",
+               "{0, 0}; with auto each group's centroid"},
               {"region", Type::region, "", any_value, kOptional,
                "only inside this region (a name or a polygon; a region{} keeps every piece, a "
                "polygon drops the pieces that end inside a block)",

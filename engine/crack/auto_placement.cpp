@@ -255,9 +255,10 @@ std::vector<Cut> union_outline(const Mesh& mesh, const std::vector<int>& zones) 
 }
 
 std::vector<CrackRegion> place_cracks(const Mesh& mesh, const std::vector<YieldedZone>& zones, double spacing,
-                                      double similar) {
+                                      double similar, const std::optional<Vec2>& origin) {
   std::vector<CrackRegion> placed;
   for (CrackRegion& region : group_yielded(mesh, zones, similar)) {
+    if (origin) region.origin = *origin;
     region.angles = crack_angles(region.tension, region.principal, region.friction);
     const double shortest = mean_edge(mesh, region.zones);
     for (double angle : region.angles) {

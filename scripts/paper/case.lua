@@ -25,6 +25,10 @@
 --             the overlap watchdog stops the run; 30 leaves those stretches out (scripts/paper/
 --             README.md, "Where runs stopped"; the default since session 25, when it had carried
 --             all 21 runs of session 23's study to step 16 against 17 of 21 with 0)
+--   origin_x, origin_y  m: a point every group's potential cracks pass through (crackseed{
+--             origin }) [both unset: each group's own centroid, as the seed's rule leaves it]; where
+--             the 4.8 m grid of cuts falls against the cavern's wall is otherwise chance
+--             (scripts/paper/README.md, "Where EDEM disagrees": the depth trend)
 --   judge_most  judge{ most }: at most this many sections break at a judgment (every 10
 --             cycles), those furthest past their strength first [0: all that fail]
 --   tolerance model{}'s geometric tolerance [7e-4]
@@ -66,6 +70,9 @@ end
 local SIMILAR, TOLERANCE = setting("similar", 45), setting("tolerance", 7e-4)
 local MIN_ANGLE = setting("min_angle", 30)
 local JUDGE_MOST = setting("judge_most", 0)
+local ORIGIN_X, ORIGIN_Y = setting("origin_x", nil), setting("origin_y", nil)
+if (ORIGIN_X == nil) ~= (ORIGIN_Y == nil) then error("give origin_x and origin_y together, or neither", 0) end
+local ORIGIN = ORIGIN_X and { ORIGIN_X, ORIGIN_Y } or nil
 local TABLE = tostring(setting("table", "case_results.csv"))
 local STEPS_TABLE = TABLE:gsub("%.csv$", "") .. "_steps.csv"  -- a row after each step
 -- For the table only: the threads it ran on, as the caller set them (edem --threads N --set threads=N).
@@ -107,7 +114,8 @@ plot{ file = tag .. "_prepass.png", show = { "prepass", "joints" }, window = { -
 
 -- 2. Potential cracks there, then the discontinuum.
 judge{ most = JUDGE_MOST }
-local groups = crackseed{ auto = pre, spacing = 4.8, material = "intact", similar = SIMILAR, min_angle = MIN_ANGLE }
+local groups = crackseed{ auto = pre, spacing = 4.8, material = "intact", similar = SIMILAR, min_angle = MIN_ANGLE,
+                          origin = ORIGIN }
 material{ "rock", density = rock.density, young = rock.young, poisson = rock.poisson }
 assign{ material = "rock" }
 local n = info()

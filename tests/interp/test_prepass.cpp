@@ -133,9 +133,12 @@ TEST(Prepass, AStageWithNoStaticStateEndsThePrepassWhenKept) {
     assert(yielded > 0, "the wall yields before the collapse")
     for z in zones() do assert(not z.excavated and z.state == "elastic") end
     assert(info().cycle == 0)
-    -- crackseed{ auto } takes the kept result as any other.
-    local groups = crackseed{ auto = pre, spacing = 1, material = "rock" }
+    -- crackseed{ auto } takes the kept result as any other; an origin given anchors every group's cuts.
+    local groups = crackseed{ auto = pre, spacing = 1, material = "rock", origin = {0.25, 0.5} }
     assert(#groups > 0)
+    for _, g in ipairs(groups) do
+      assert(g.origin.x == 0.25 and g.origin.y == 0.5, "group origin " .. g.origin.x .. ", " .. g.origin.y)
+    end
   )");
 }
 

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "crack/auto_placement.hpp"
 
@@ -112,6 +113,39 @@ TEST(AutoPlacement, CutEndsAreOutlineVertices) {
   double length = 0.0;
   for (const Cut& e : regions[0].outline) length += norm(e[1] - e[0]);
   EXPECT_NEAR(length, 16.0, 1e-9);  // the square's perimeter, split but not changed
+}
+
+// Every cut lies on a line of its set's grid: its distance from the grid's origin, across the
+// cut, is a whole number of spacings.
+bool on_grid(const Cut& cut, Vec2 origin, double spacing) {
+  const Vec2 along = (1.0 / norm(cut[1] - cut[0])) * (cut[1] - cut[0]);
+  const Vec2 d = cut[0] - origin;
+  const double across = d.x * along.y - d.y * along.x;
+  const double steps = across / spacing;
+  return std::fabs(steps - std::round(steps)) < 1e-9;
+}
+
+TEST(AutoPlacement, CutsRunThroughTheCentroidOrTheOriginGiven) {
+  const Mesh mesh = grid(4, 4);
+  std::vector<YieldedZone> zones;
+  for (int z = 0; z < 32; ++z) zones.push_back({z, false, 30.0, 30.0});
+  const auto own = place_cracks(mesh, zones, 0.7, 15.0);
+  ASSERT_EQ(own.size(), 1u);
+  EXPECT_NEAR(own[0].origin.x, 2.0, 1e-12);
+  EXPECT_NEAR(own[0].origin.y, 2.0, 1e-12);
+  const Vec2 given{0.3, -0.1};
+  const auto anchored = place_cracks(mesh, zones, 0.7, 15.0, given);
+  ASSERT_EQ(anchored.size(), 1u);
+  EXPECT_EQ(anchored[0].origin, given);
+  ASSERT_FALSE(own[0].cuts.empty());
+  ASSERT_FALSE(anchored[0].cuts.empty());
+  int off_own_grid = 0;
+  for (const Cut& cut : own[0].cuts) EXPECT_TRUE(on_grid(cut, own[0].origin, 0.7));
+  for (const Cut& cut : anchored[0].cuts) {
+    EXPECT_TRUE(on_grid(cut, given, 0.7));
+    if (!on_grid(cut, own[0].origin, 0.7)) ++off_own_grid;
+  }
+  EXPECT_GT(off_own_grid, 0) << "the origin given moved the cuts";
 }
 
 }  // namespace
