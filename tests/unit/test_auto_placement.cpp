@@ -97,11 +97,16 @@ TEST(AutoPlacement, GroupsByModeAndDirection) {
 
 // Every cut end is a vertex of the outline: rounded, it would never lie exactly on an edge, and
 // the cutter would drop the cut as ending inside a block.
+// All 32 zones of grid(4, 4) yielded in shear, their most compressive stress at `angle`.
+std::vector<YieldedZone> all_in_shear(double angle) {
+  std::vector<YieldedZone> zones;
+  for (int z = 0; z < 32; ++z) zones.push_back({z, false, angle, 30.0});
+  return zones;
+}
+
 TEST(AutoPlacement, CutEndsAreOutlineVertices) {
   const Mesh mesh = grid(4, 4);
-  std::vector<YieldedZone> zones;
-  for (int z = 0; z < 32; ++z) zones.push_back({z, false, 90.0, 30.0});
-  const auto regions = place_cracks(mesh, zones, 0.7, 15.0);
+  const auto regions = place_cracks(mesh, all_in_shear(90.0), 0.7, 15.0);
   ASSERT_EQ(regions.size(), 1u);
   ASSERT_FALSE(regions[0].cuts.empty());
   for (const Cut& cut : regions[0].cuts)
@@ -127,8 +132,7 @@ bool on_grid(const Cut& cut, Vec2 origin, double spacing) {
 
 TEST(AutoPlacement, CutsRunThroughTheCentroidOrTheOriginGiven) {
   const Mesh mesh = grid(4, 4);
-  std::vector<YieldedZone> zones;
-  for (int z = 0; z < 32; ++z) zones.push_back({z, false, 30.0, 30.0});
+  const std::vector<YieldedZone> zones = all_in_shear(30.0);
   const auto own = place_cracks(mesh, zones, 0.7, 15.0);
   ASSERT_EQ(own.size(), 1u);
   EXPECT_NEAR(own[0].origin.x, 2.0, 1e-12);
