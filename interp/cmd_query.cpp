@@ -211,7 +211,8 @@ int next_moved_block(lua_State* L) {
     const Model& model = context_of(L).model();
     const double distance = lua_tonumber(L, lua_upvalueindex(2));
     const size_t count = model.blocks().blocks.size();
-    for (auto next = static_cast<size_t>(lua_tointeger(L, lua_upvalueindex(1))); next < count; ++next) {
+    const auto first = static_cast<size_t>(lua_tointeger(L, lua_upvalueindex(1)));
+    for (size_t next = first; next < count; ++next) {
       const BlockMotion motion = model.block_motion(static_cast<int>(next));
       if (motion.excavated > 0 || !(motion.max_displacement > distance)) continue;
       lua_pushinteger(L, static_cast<lua_Integer>(next + 1));
@@ -359,8 +360,8 @@ const Command& moved_blocks_command() {
                "how far a gridpoint of the block must have moved (more than this)"},
           },
       .run = run_moved_blocks,
-      .returns = "an iterator over the blocks not excavated whose max_displacement is greater than the "
-                 "distance, in id order; each block a table as `blocks()` gives",
+      .returns = "an iterator over the blocks not excavated whose max_displacement is greater than "
+                 "the distance, in id order; each block a table as `blocks()` gives",
       .usage = "for b in moved_blocks(1.0) do excavate{ block = b.id } end",
   };
   return command;

@@ -197,16 +197,18 @@ int judge_sections(Mechanics& m, const Mesh& mesh) {
 #pragma omp parallel for num_threads(std::max(1, m.partition.threads)) schedule(static)
     for (long k = 0; k < count; ++k) {
       const size_t i = static_cast<size_t>(k);
-      if (judged(i))
-        modes[i] = crack_mode(in_plane_principal(fitted_stress(m, static_cast<int>(k))), m.fits.strength[i]);
+      if (!judged(i)) continue;
+      const Principal p = in_plane_principal(fitted_stress(m, static_cast<int>(k)));
+      modes[i] = crack_mode(p, m.fits.strength[i]);
     }
   }
   for (size_t i = 0; i < m.sections.size(); ++i) {
     if (!judged(i) || (!m.judge.criterion && modes[i] == CrackMode::none)) continue;
     const Stress s = fitted_stress(m, static_cast<int>(i));
-    const CrackMode mode = m.judge.criterion ? m.judge.criterion(view_of(m, static_cast<int>(i), s)) : modes[i];
+    const int id = static_cast<int>(i);
+    const CrackMode mode = m.judge.criterion ? m.judge.criterion(view_of(m, id, s)) : modes[i];
     if (mode == CrackMode::none) continue;
-    failed.push_back({static_cast<int>(i), mode, s, overstress(in_plane_principal(s), m.fits.strength[i])});
+    failed.push_back({id, mode, s, overstress(in_plane_principal(s), m.fits.strength[i])});
   }
   if (failed.empty()) return 0;
   if (m.judge.most > 0 && failed.size() > static_cast<size_t>(m.judge.most)) {

@@ -81,7 +81,7 @@ struct AutoCrackSeedDef {
   double spacing = 0.0;   // between the cuts of a set [m]; 0: a tenth of the opening's height
   double similar = 15.0;  // largest difference of principal direction within a group [deg]
   double min_angle = 0.0;  // corners sharper than this are not made (CrackSeedDef::min_angle) [deg]
-  std::optional<Vec2> origin;  // a point on one cut of every set of every group (none: each group's centroid)
+  std::optional<Vec2> origin;  // on one cut of every set of every group (none: each group's centroid)
   RegionRef region;       // only zones inside it (empty: all)
   std::string material;   // as CrackSeedDef's; its friction also sets the shear sets' angles
   std::string after;
