@@ -159,7 +159,7 @@ int run_crackseed(lua_State* L, Context& context, const Args& args) {
   def.angles = one ? std::vector<double>{args.number("angle")} : args.get<std::vector<double>>("angles");
   if (!args.has("spacing")) fail("spacing is needed (the normal distance between the cuts of a set)");
   def.spacing = args.number("spacing");
-  def.origin = args.has("origin") ? args.point("origin") : Vec2{0.0, 0.0};
+  if (args.has("origin")) def.origin = args.point("origin");
   if (args.has("region")) def.region = args.get<RegionRef>("region");
   if (args.has("material")) def.material = args.string("material");
   if (args.has("after")) def.after = args.string("after");

@@ -207,23 +207,13 @@ int next_block(lua_State* L) {
 // the distance in upvalue 2. Mucking out asks this every few hundred cycles: the blocks passed
 // over cost no table.
 int next_moved_block(lua_State* L) {
-  return guarded(L, "moved_blocks", [&] {
-    const Model& model = context_of(L).model();
-    const double distance = lua_tonumber(L, lua_upvalueindex(2));
-    const size_t count = model.blocks().blocks.size();
-    const auto first = static_cast<size_t>(lua_tointeger(L, lua_upvalueindex(1)));
-    for (size_t next = first; next < count; ++next) {
-      const BlockMotion motion = model.block_motion(static_cast<int>(next));
-      if (motion.excavated > 0 || !(motion.max_displacement > distance)) continue;
-      lua_pushinteger(L, static_cast<lua_Integer>(next + 1));
-      lua_replace(L, lua_upvalueindex(1));
-      push_block(L, model, next);
-      return 1;
-    }
-    lua_pushinteger(L, static_cast<lua_Integer>(count));
-    lua_replace(L, lua_upvalueindex(1));
-    return 0;
-  });
+  const auto moved = [](lua_State* state, const Model& m, size_t block) {
+    const BlockMotion motion = m.block_motion(static_cast<int>(block));
+    const double distance = lua_tonumber(state, lua_upvalueindex(2));
+    return motion.excavated == 0 && motion.max_displacement > distance;
+  };
+  const auto count = [](const Model& m) { return m.blocks().blocks.size(); };
+  return iterator_step(L, "moved_blocks", count, moved, push_block);
 }
 
 int next_zone(lua_State* L) {

@@ -18,11 +18,12 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 namespace edem {
 
 // How much squarer another edge must face the gridpoint to take a contact from its held edge [rad].
-inline const double kHeldFacing = 10.0 * M_PI / 180.0;
+inline constexpr double kHeldFacing = 10.0 * std::numbers::pi / 180.0;
 
 struct EdgeChoice {
   int held = -1;            // the edge the contact had, -1: none

@@ -188,12 +188,16 @@ int judge_sections(Mechanics& m, const Mesh& mesh) {
   const auto judged = [&](size_t i) {
     return m.sections[i].mode == CrackMode::none && m.fits.first[i] != m.fits.first[i + 1];
   };
-  // The built-in criteria on all threads (each section on its own, so the answer is the same on
-  // any number): the cycle's other threads would wait for this otherwise. A Lua criterion runs on
-  // the one Lua state.
+  // Every section judged against the same state first. The built-in criteria on all threads
+  // (each section on its own, so the answer is the same on any number): the cycle's other
+  // threads would wait for this otherwise. A Lua criterion runs on the one Lua state.
   std::vector<CrackMode> modes(m.sections.size(), CrackMode::none);
-  if (!m.judge.criterion) {
-    const long count = static_cast<long>(m.sections.size());
+  const long count = static_cast<long>(m.sections.size());
+  if (m.judge.criterion) {
+    for (int i = 0; i < static_cast<int>(count); ++i)
+      if (judged(static_cast<size_t>(i)))
+        modes[static_cast<size_t>(i)] = m.judge.criterion(view_of(m, i, fitted_stress(m, i)));
+  } else {
 #pragma omp parallel for num_threads(std::max(1, m.partition.threads)) schedule(static)
     for (long k = 0; k < count; ++k) {
       const size_t i = static_cast<size_t>(k);
@@ -202,13 +206,11 @@ int judge_sections(Mechanics& m, const Mesh& mesh) {
       modes[i] = crack_mode(p, m.fits.strength[i]);
     }
   }
-  for (size_t i = 0; i < m.sections.size(); ++i) {
-    if (!judged(i) || (!m.judge.criterion && modes[i] == CrackMode::none)) continue;
+  for (size_t i = 0; i < modes.size(); ++i) {
+    if (modes[i] == CrackMode::none) continue;
     const Stress s = fitted_stress(m, static_cast<int>(i));
-    const int id = static_cast<int>(i);
-    const CrackMode mode = m.judge.criterion ? m.judge.criterion(view_of(m, id, s)) : modes[i];
-    if (mode == CrackMode::none) continue;
-    failed.push_back({id, mode, s, overstress(in_plane_principal(s), m.fits.strength[i])});
+    const double over = overstress(in_plane_principal(s), m.fits.strength[i]);
+    failed.push_back({static_cast<int>(i), modes[i], s, over});
   }
   if (failed.empty()) return 0;
   if (m.judge.most > 0 && failed.size() > static_cast<size_t>(m.judge.most)) {
