@@ -101,6 +101,7 @@ int run_auto_crackseed(lua_State* L, Context& context, const Args& args) {
   def.similar = args.number("similar");
   if (args.has("min_angle")) def.min_angle = args.number("min_angle");
   if (args.has("origin")) def.origin = args.point("origin");
+  if (args.has("by_mode")) def.by_mode = args.boolean("by_mode");
   if (args.has("region")) def.region = args.get<RegionRef>("region");
   if (args.has("material")) def.material = args.string("material");
   if (args.has("after")) def.after = args.string("after");
@@ -156,6 +157,7 @@ int run_crackseed(lua_State* L, Context& context, const Args& args) {
   if (one == two) fail("give angle = a or angles = {{a1, a2}} (one of them), or auto = a prepass{{}} result");
   if (args.has("min_angle"))
     fail("min_angle is for auto = a prepass{{}} result: cuts at angle or angles are laid as given");
+  if (args.has("by_mode")) fail("by_mode is for auto = a prepass{{}} result: it says how its groups are formed");
   def.angles = one ? std::vector<double>{args.number("angle")} : args.get<std::vector<double>>("angles");
   if (!args.has("spacing")) fail("spacing is needed (the normal distance between the cuts of a set)");
   def.spacing = args.number("spacing");
@@ -265,9 +267,9 @@ const Command& crackseed_command() {
           "or tension (judge{}); the section then becomes a crack with a joint material. "
           "Each zone edge along a cut is a section, judged on its own. With auto = a prepass{} "
           "result it places them itself, where that prepass found the rock yielding: the yielded "
-          "zones grouped by failure mode and principal direction, two sets in each group, at "
-          "+-(45 + phi/2) from the major principal plane where shear governs, along and across "
-          "it where tension does (crack/auto_placement.hpp tells how).",
+          "zones grouped by principal direction, two sets in each group, at +-(45 + phi/2) from "
+          "the major principal plane where shear governs, along and across it where tension "
+          "does, in more than half the group's area (crack/auto_placement.hpp tells how).",
       .keys =
           {
               {"angle", Type::number, "deg", between(-360, 360), kOptional,
@@ -292,6 +294,11 @@ const Command& crackseed_command() {
               {"origin", Type::point, "m", any_value, kOptional,
                "a point on one cut of each set (with auto: of every group's sets)",
                "{0, 0}; with auto each group's centroid"},
+              {"by_mode", Type::boolean, "", any_value, kOptional,
+               "auto: each group keeps to one failure mode (false: a group is the touching zones of "
+               "one principal direction, a tension group where its tension zones cover more than "
+               "half its area, as the seed's rule reads)",
+               "false"},
               {"region", Type::region, "", any_value, kOptional,
                "only inside this region (a name or a polygon; a region{} keeps every piece, a "
                "polygon drops the pieces that end inside a block)",

@@ -39,13 +39,15 @@ std::vector<std::vector<size_t>> touching(const Mesh& mesh, const std::vector<Yi
   return out;
 }
 
-// Area-weighted means of a region's principal direction (as axes), friction and centroid.
+// Area-weighted means of a region's principal direction (as axes), friction and centroid, and its
+// mode: tension where its tension zones cover more than half its area.
 void summarise(const Mesh& mesh, const std::vector<YieldedZone>& zones, const std::vector<size_t>& members,
                CrackRegion& region) {
-  double c = 0.0, s = 0.0, friction = 0.0, area = 0.0;
+  double c = 0.0, s = 0.0, friction = 0.0, area = 0.0, tension_area = 0.0;
   Vec2 moment;
   for (size_t k : members) {
     const double w = mesh.zone_area(zones[k].zone);
+    if (zones[k].tension) tension_area += w;
     c += w * std::cos(2.0 * zones[k].angle * kDegree);
     s += w * std::sin(2.0 * zones[k].angle * kDegree);
     friction += w * zones[k].friction;
@@ -59,6 +61,7 @@ void summarise(const Mesh& mesh, const std::vector<YieldedZone>& zones, const st
   region.principal = principal;
   region.friction = friction / area;
   region.origin = (1.0 / area) * moment;
+  region.tension = tension_area > 0.5 * area;
 }
 
 // Mean edge length of the zones [m].
@@ -123,7 +126,8 @@ double axis_difference(double a, double b) {
   return std::min(d, 180.0 - d);
 }
 
-std::vector<CrackRegion> group_yielded(const Mesh& mesh, const std::vector<YieldedZone>& zones, double similar) {
+std::vector<CrackRegion> group_yielded(const Mesh& mesh, const std::vector<YieldedZone>& zones, double similar,
+                                       bool by_mode) {
   std::vector<size_t> order(zones.size());
   for (size_t k = 0; k < order.size(); ++k) order[k] = k;
   std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return zones[a].zone < zones[b].zone; });
@@ -139,7 +143,8 @@ std::vector<CrackRegion> group_yielded(const Mesh& mesh, const std::vector<Yield
       const size_t k = frontier.back();
       frontier.pop_back();
       for (size_t n : neighbours[k]) {
-        if (taken[n] || zones[n].tension != seed.tension || axis_difference(zones[n].angle, seed.angle) > similar)
+        if (taken[n] || (by_mode && zones[n].tension != seed.tension) ||
+            axis_difference(zones[n].angle, seed.angle) > similar)
           continue;
         taken[n] = 1;
         members.push_back(n);
@@ -147,7 +152,6 @@ std::vector<CrackRegion> group_yielded(const Mesh& mesh, const std::vector<Yield
       }
     }
     CrackRegion region;
-    region.tension = seed.tension;
     summarise(mesh, zones, members, region);
     regions.push_back(std::move(region));
   }
@@ -255,9 +259,9 @@ std::vector<Cut> union_outline(const Mesh& mesh, const std::vector<int>& zones) 
 }
 
 std::vector<CrackRegion> place_cracks(const Mesh& mesh, const std::vector<YieldedZone>& zones, double spacing,
-                                      double similar, const std::optional<Vec2>& origin) {
+                                      double similar, const std::optional<Vec2>& origin, bool by_mode) {
   std::vector<CrackRegion> placed;
-  for (CrackRegion& region : group_yielded(mesh, zones, similar)) {
+  for (CrackRegion& region : group_yielded(mesh, zones, similar, by_mode)) {
     if (origin) region.origin = *origin;
     region.angles = crack_angles(region.tension, region.principal, region.friction);
     const double shortest = mean_edge(mesh, region.zones);

@@ -4,9 +4,14 @@
 //
 // Grouping: a yielded zone is a tension zone if it yielded in tension at any stage, else a shear
 // zone. Zones touch when they share a corner's place (across a joint too). A region grows from the
-// lowest-numbered zone not yet taken, through touching zones of the same mode whose most
-// compressive principal direction is within `similar` degrees of that first zone's (axes: 0 and
-// 180 are the same), until none is left to add; then the next region starts.
+// lowest-numbered zone not yet taken, through touching zones whose most compressive principal
+// direction is within `similar` degrees of that first zone's (axes: 0 and 180 are the same), until
+// none is left to add; then the next region starts. As the seed has it (its §2.2), regions are
+// those of one principal direction, and each is a tension region where tension is the principal
+// reason: where its tension zones cover more than half its area; else a shear region. With
+// `by_mode`, a region also keeps to the mode of its first zone (EDEM's grouping until 2026-11-23):
+// then a few zones of the other mode carve a region into ragged pieces whose outlines, glued, break
+// the cuts near an opening's wall.
 //
 // Orientation, from the region's mean principal direction (area-weighted, as axes): the major
 // principal plane is normal to the most compressive stress. Shear regions get two sets at
@@ -53,7 +58,8 @@ struct CrackRegion {
 double axis_difference(double a, double b);
 
 // The regions of the yielded zones (see above), in order of their first zone.
-std::vector<CrackRegion> group_yielded(const Mesh& mesh, const std::vector<YieldedZone>& zones, double similar);
+std::vector<CrackRegion> group_yielded(const Mesh& mesh, const std::vector<YieldedZone>& zones, double similar,
+                                       bool by_mode = false);
 
 // The two set directions of a region from its mode, principal direction and friction.
 std::vector<double> crack_angles(bool tension, double principal, double friction);
@@ -70,7 +76,7 @@ std::vector<Cut> union_outline(const Mesh& mesh, const std::vector<int>& zones);
 // group_yielded, then the angles, cuts and outline of every region (regions with no cut left are dropped).
 // The cuts of every set pass through `origin` if given, else through their region's centroid.
 std::vector<CrackRegion> place_cracks(const Mesh& mesh, const std::vector<YieldedZone>& zones, double spacing,
-                                      double similar,
-                                      const std::optional<Vec2>& origin = std::nullopt);
+                                      double similar, const std::optional<Vec2>& origin = std::nullopt,
+                                      bool by_mode = false);
 
 }  // namespace edem

@@ -82,6 +82,7 @@ struct AutoCrackSeedDef {
   double similar = 15.0;  // largest difference of principal direction within a group [deg]
   double min_angle = 0.0;  // corners sharper than this are not made (CrackSeedDef::min_angle) [deg]
   std::optional<Vec2> origin;  // on one cut of every set of every group (none: each group's centroid)
+  bool by_mode = false;   // groups keep to one failure mode (else: one direction, mode by area)
   RegionRef region;       // only zones inside it (empty: all)
   std::string material;   // as CrackSeedDef's; its friction also sets the shear sets' angles
   std::string after;

@@ -29,6 +29,10 @@
 --             origin }) [both unset: each group's own centroid, as the seed's rule leaves it]; where
 --             the 4.8 m grid of cuts falls against the cavern's wall is otherwise chance
 --             (scripts/paper/README.md, "Where EDEM disagrees": the depth trend)
+--   by_mode   true: crackseed{ auto }'s groups keep to one failure mode, as the studies before
+--             session 28 had them [false: a group is the touching yielded zones of one principal
+--             direction, a tension group where tension zones cover more than half of it: the
+--             seed's regions; scripts/paper/README.md, "Where EDEM disagrees": the depth trend]
 --   judge_most  judge{ most }: at most this many sections break at a judgment (every 10
 --             cycles), those furthest past their strength first [0: all that fail]
 --   tolerance model{}'s geometric tolerance [7e-4]
@@ -71,6 +75,8 @@ local SIMILAR, TOLERANCE = setting("similar", 45), setting("tolerance", 7e-4)
 local MIN_ANGLE = setting("min_angle", 30)
 local JUDGE_MOST = setting("judge_most", 0)
 local ORIGIN_X, ORIGIN_Y = setting("origin_x", nil), setting("origin_y", nil)
+local BY_MODE = setting("by_mode", false)
+if type(BY_MODE) ~= "boolean" then error(("by_mode must be true or false, got %s"):format(BY_MODE), 0) end
 if (ORIGIN_X == nil) ~= (ORIGIN_Y == nil) then error("give origin_x and origin_y together, or neither", 0) end
 local ORIGIN = ORIGIN_X and { ORIGIN_X, ORIGIN_Y } or nil
 local TABLE = tostring(setting("table", "case_results.csv"))
@@ -115,7 +121,7 @@ plot{ file = tag .. "_prepass.png", show = { "prepass", "joints" }, window = { -
 -- 2. Potential cracks there, then the discontinuum.
 judge{ most = JUDGE_MOST }
 local groups = crackseed{ auto = pre, spacing = 4.8, material = "intact", similar = SIMILAR, min_angle = MIN_ANGLE,
-                          origin = ORIGIN }
+                          origin = ORIGIN, by_mode = BY_MODE }
 material{ "rock", density = rock.density, young = rock.young, poisson = rock.poisson }
 assign{ material = "rock" }
 local n = info()

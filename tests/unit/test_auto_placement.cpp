@@ -76,8 +76,30 @@ TEST(AutoPlacement, TheOutlineIsTheUnionsBoundary) {
   EXPECT_NEAR(length, 6.0, 1e-12);
 }
 
-// Zones of one mode and a similar principal direction that touch form a region; a zone of the
-// other mode, or pointing elsewhere, starts its own.
+// Zones of a similar principal direction that touch form a region, whatever their mode; a zone
+// pointing elsewhere starts its own. The region is a tension region where its tension zones cover
+// more than half its area (the seed's "principal reason").
+TEST(AutoPlacement, GroupsByDirectionWithTheModeOfMostOfTheArea) {
+  const Mesh mesh = grid(3, 1);
+  std::vector<YieldedZone> zones = {
+      {0, false, 80.0, 30.0}, {1, false, 88.0, 30.0}, {2, false, -85.0, 30.0},  // across +-90
+      {3, true, 85.0, 30.0},                                                    // tension, same direction
+      {4, false, 10.0, 30.0}, {5, false, 15.0, 30.0},                           // pointing elsewhere
+  };
+  auto regions = group_yielded(mesh, zones, 15.0);
+  ASSERT_EQ(regions.size(), 2u);
+  EXPECT_EQ(regions[0].zones, (std::vector<int>{0, 1, 2, 3}));
+  EXPECT_FALSE(regions[0].tension);  // a quarter of its area in tension
+  EXPECT_EQ(regions[1].zones, (std::vector<int>{4, 5}));
+  zones[1].tension = true;  // half: still shear
+  EXPECT_FALSE(group_yielded(mesh, zones, 15.0)[0].tension);
+  zones[0].tension = true;  // three quarters
+  regions = group_yielded(mesh, zones, 15.0);
+  EXPECT_TRUE(regions[0].tension);
+  EXPECT_FALSE(regions[1].tension);
+}
+
+// With by_mode, a zone of the other mode starts its own region too.
 TEST(AutoPlacement, GroupsByModeAndDirection) {
   const Mesh mesh = grid(3, 1);
   std::vector<YieldedZone> zones = {
@@ -85,7 +107,7 @@ TEST(AutoPlacement, GroupsByModeAndDirection) {
       {3, true, 85.0, 30.0},                                                    // tension
       {4, false, 10.0, 30.0}, {5, false, 15.0, 30.0},                           // pointing elsewhere
   };
-  const auto regions = group_yielded(mesh, zones, 15.0);
+  const auto regions = group_yielded(mesh, zones, 15.0, true);
   ASSERT_EQ(regions.size(), 3u);
   EXPECT_EQ(regions[0].zones, (std::vector<int>{0, 1, 2}));
   EXPECT_FALSE(regions[0].tension);
@@ -150,6 +172,29 @@ TEST(AutoPlacement, CutsRunThroughTheCentroidOrTheOriginGiven) {
     if (!on_grid(cut, own[0].origin, 0.7)) ++off_own_grid;
   }
   EXPECT_GT(off_own_grid, 0) << "the origin given moved the cuts";
+}
+
+// A lone tension zone inside a shear region: grouped by mode it is a region of its own (dropped
+// here: too small for a cut), and the shear region's outline, glued, rings the hole it leaves, so
+// the cuts stop at it; grouped by direction there is one region, its outline the square's alone.
+TEST(AutoPlacement, ALoneZoneOfTheOtherModeIsNotRingedByAnOutline) {
+  const Mesh mesh = grid(4, 4);
+  std::vector<YieldedZone> zones = all_in_shear(90.0);
+  zones[10].tension = true;  // square (1, 1), the lower of its two triangles
+  auto outline_length = [](const CrackRegion& r) {
+    double length = 0.0;
+    for (const Cut& e : r.outline) length += norm(e[1] - e[0]);
+    return length;
+  };
+  const auto together = place_cracks(mesh, zones, 0.7, 15.0);
+  ASSERT_EQ(together.size(), 1u);
+  EXPECT_FALSE(together[0].tension);
+  EXPECT_EQ(together[0].zones.size(), 32u);
+  EXPECT_NEAR(outline_length(together[0]), 16.0, 1e-9);
+  const auto apart = place_cracks(mesh, zones, 0.7, 15.0, std::nullopt, true);
+  ASSERT_EQ(apart.size(), 1u);
+  EXPECT_EQ(apart[0].zones.size(), 31u);
+  EXPECT_NEAR(outline_length(apart[0]), 16.0 + 2.0 + std::sqrt(2.0), 1e-9);
 }
 
 }  // namespace
