@@ -142,6 +142,46 @@ TEST(Prepass, AStageWithNoStaticStateEndsThePrepassWhenKept) {
   )");
 }
 
+// crackseed{ auto }'s regions: by principal direction, whatever the mode (a lone zone marked as
+// yielded in tension joins the shear region around it), or with by_mode = true by mode too (it
+// leaves that region).
+TEST(Prepass, AutoRegionsTakeTheModeOfMostOfTheirArea) {
+  const std::string scene = std::string(kPlate) + R"(
+    zone{ edge = 1 }
+    material{ "rock", model = "mohr", young = 1e9, poisson = 0.25, cohesion = 0.3e6, friction = 10 }
+    local pre = prepass{ stages = { "hole", "slot" }, iterations = 8, on_failure = "keep" }
+    -- The yielded zone with the most yielded zones within 1.5 m, marked as a tension zone.
+    local marked, most = nil, -1
+    for _, z in ipairs(pre.zones) do
+      if z.state ~= "none" and z.states[#z.states] ~= "excavated" then
+        local near = 0
+        for _, o in ipairs(pre.zones) do
+          if o.state ~= "none" and (o.x - z.x) ^ 2 + (o.y - z.y) ^ 2 < 1.5 ^ 2 then near = near + 1 end
+        end
+        if near > most then marked, most = z, near end
+      end
+    end
+    marked.state = "tension"
+    local function region_of(groups)
+      for _, g in ipairs(groups) do
+        for _, id in ipairs(g.zones) do if id == marked.id then return g end end
+      end
+    end
+  )";
+  Interpreter together;
+  together.context().quiet = true;
+  expect_runs(together, scene + R"(
+    local g = region_of(crackseed{ auto = pre, spacing = 1, material = "rock" })
+    assert(g and g.mode == "shear" and #g.zones > 1, "the marked zone is in a shear region")
+  )");
+  Interpreter apart;
+  apart.context().quiet = true;
+  expect_runs(apart, scene + R"(
+    local g = region_of(crackseed{ auto = pre, spacing = 1, material = "rock", by_mode = true })
+    assert(g == nil or (g.mode == "tension" and #g.zones == 1), "the marked zone is a region of its own")
+  )");
+}
+
 // Joints as interface elements: two blocks on a horizontal joint, pressed from the top with the
 // sides on rollers (uniaxial strain): the top moves p H / M + p / kn (M = E (1 - nu) / ((1 + nu)
 // (1 - 2 nu))), as the explicit solver finds too.
