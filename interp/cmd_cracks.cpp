@@ -157,7 +157,8 @@ int run_crackseed(lua_State* L, Context& context, const Args& args) {
   if (one == two) fail("give angle = a or angles = {{a1, a2}} (one of them), or auto = a prepass{{}} result");
   if (args.has("min_angle"))
     fail("min_angle is for auto = a prepass{{}} result: cuts at angle or angles are laid as given");
-  if (args.has("by_mode")) fail("by_mode is for auto = a prepass{{}} result: it says how its groups are formed");
+  if (args.has("by_mode"))
+    fail("by_mode is for auto = a prepass{{}} result: it says how its groups are formed");
   def.angles = one ? std::vector<double>{args.number("angle")} : args.get<std::vector<double>>("angles");
   if (!args.has("spacing")) fail("spacing is needed (the normal distance between the cuts of a set)");
   def.spacing = args.number("spacing");
@@ -295,9 +296,9 @@ const Command& crackseed_command() {
                "a point on one cut of each set (with auto: of every group's sets)",
                "{0, 0}; with auto each group's centroid"},
               {"by_mode", Type::boolean, "", any_value, kOptional,
-               "auto: each group keeps to one failure mode (false: a group is the touching zones of "
-               "one principal direction, a tension group where its tension zones cover more than "
-               "half its area, as the seed's rule reads)",
+               "auto: each group keeps to one failure mode (false: a group is the touching "
+               "zones of one principal direction, a tension group where its tension zones cover "
+               "more than half its area, as the seed's rule reads)",
                "false"},
               {"region", Type::region, "", any_value, kOptional,
                "only inside this region (a name or a polygon; a region{} keeps every piece, a "

@@ -126,8 +126,8 @@ double axis_difference(double a, double b) {
   return std::min(d, 180.0 - d);
 }
 
-std::vector<CrackRegion> group_yielded(const Mesh& mesh, const std::vector<YieldedZone>& zones, double similar,
-                                       bool by_mode) {
+std::vector<CrackRegion> group_yielded(const Mesh& mesh, const std::vector<YieldedZone>& zones,
+                                       double similar, bool by_mode) {
   std::vector<size_t> order(zones.size());
   for (size_t k = 0; k < order.size(); ++k) order[k] = k;
   std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return zones[a].zone < zones[b].zone; });
@@ -258,8 +258,9 @@ std::vector<Cut> union_outline(const Mesh& mesh, const std::vector<int>& zones) 
   return out;
 }
 
-std::vector<CrackRegion> place_cracks(const Mesh& mesh, const std::vector<YieldedZone>& zones, double spacing,
-                                      double similar, const std::optional<Vec2>& origin, bool by_mode) {
+std::vector<CrackRegion> place_cracks(const Mesh& mesh, const std::vector<YieldedZone>& zones,
+                                      double spacing, double similar,
+                                      const std::optional<Vec2>& origin, bool by_mode) {
   std::vector<CrackRegion> placed;
   for (CrackRegion& region : group_yielded(mesh, zones, similar, by_mode)) {
     if (origin) region.origin = *origin;

@@ -58,8 +58,8 @@ struct CrackRegion {
 double axis_difference(double a, double b);
 
 // The regions of the yielded zones (see above), in order of their first zone.
-std::vector<CrackRegion> group_yielded(const Mesh& mesh, const std::vector<YieldedZone>& zones, double similar,
-                                       bool by_mode = false);
+std::vector<CrackRegion> group_yielded(const Mesh& mesh, const std::vector<YieldedZone>& zones,
+                                       double similar, bool by_mode = false);
 
 // The two set directions of a region from its mode, principal direction and friction.
 std::vector<double> crack_angles(bool tension, double principal, double friction);
@@ -75,8 +75,9 @@ std::vector<Cut> union_outline(const Mesh& mesh, const std::vector<int>& zones);
 
 // group_yielded, then the angles, cuts and outline of every region (regions with no cut left are dropped).
 // The cuts of every set pass through `origin` if given, else through their region's centroid.
-std::vector<CrackRegion> place_cracks(const Mesh& mesh, const std::vector<YieldedZone>& zones, double spacing,
-                                      double similar, const std::optional<Vec2>& origin = std::nullopt,
+std::vector<CrackRegion> place_cracks(const Mesh& mesh, const std::vector<YieldedZone>& zones,
+                                      double spacing, double similar,
+                                      const std::optional<Vec2>& origin = std::nullopt,
                                       bool by_mode = false);
 
 }  // namespace edem

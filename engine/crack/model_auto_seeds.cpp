@@ -72,7 +72,8 @@ std::vector<CrackRegion> Model::add_auto_crackseed(const AutoCrackSeedDef& def) 
     const double friction = material >= 0 ? m.materials[static_cast<size_t>(material)].friction : 0.0;
     yielded.push_back({z.zone, z.tension, z.angle, friction});
   }
-  std::vector<CrackRegion> regions = place_cracks(mesh_, yielded, spacing, def.similar, def.origin, def.by_mode);
+  std::vector<CrackRegion> regions =
+      place_cracks(mesh_, yielded, spacing, def.similar, def.origin, def.by_mode);
   if (regions.empty()) return regions;
   Inputs next = inputs_;
   for (const CrackRegion& region : regions) {

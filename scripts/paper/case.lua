@@ -76,7 +76,9 @@ local MIN_ANGLE = setting("min_angle", 30)
 local JUDGE_MOST = setting("judge_most", 0)
 local ORIGIN_X, ORIGIN_Y = setting("origin_x", nil), setting("origin_y", nil)
 local BY_MODE = setting("by_mode", false)
-if type(BY_MODE) ~= "boolean" then error(("by_mode must be true or false, got %s"):format(BY_MODE), 0) end
+if type(BY_MODE) ~= "boolean" then
+  error(("by_mode must be true or false, got %s"):format(BY_MODE), 0)
+end
 if (ORIGIN_X == nil) ~= (ORIGIN_Y == nil) then error("give origin_x and origin_y together, or neither", 0) end
 local ORIGIN = ORIGIN_X and { ORIGIN_X, ORIGIN_Y } or nil
 local TABLE = tostring(setting("table", "case_results.csv"))

@@ -156,7 +156,8 @@ TEST(Prepass, AutoRegionsTakeTheModeOfMostOfTheirArea) {
       if z.state ~= "none" and z.states[#z.states] ~= "excavated" then
         local near = 0
         for _, o in ipairs(pre.zones) do
-          if o.state ~= "none" and (o.x - z.x) ^ 2 + (o.y - z.y) ^ 2 < 1.5 ^ 2 then near = near + 1 end
+          local close = (o.x - z.x) ^ 2 + (o.y - z.y) ^ 2 < 1.5 ^ 2
+          if o.state ~= "none" and close then near = near + 1 end
         end
         if near > most then marked, most = z, near end
       end
@@ -178,7 +179,8 @@ TEST(Prepass, AutoRegionsTakeTheModeOfMostOfTheirArea) {
   apart.context().quiet = true;
   expect_runs(apart, scene + R"(
     local g = region_of(crackseed{ auto = pre, spacing = 1, material = "rock", by_mode = true })
-    assert(g == nil or (g.mode == "tension" and #g.zones == 1), "the marked zone is a region of its own")
+    assert(g == nil or (g.mode == "tension" and #g.zones == 1),
+           "the marked zone is a region of its own")
   )");
 }
 

@@ -83,8 +83,8 @@ TEST(AutoPlacement, GroupsByDirectionWithTheModeOfMostOfTheArea) {
   const Mesh mesh = grid(3, 1);
   std::vector<YieldedZone> zones = {
       {0, false, 80.0, 30.0}, {1, false, 88.0, 30.0}, {2, false, -85.0, 30.0},  // across +-90
-      {3, true, 85.0, 30.0},                                                    // tension, same direction
-      {4, false, 10.0, 30.0}, {5, false, 15.0, 30.0},                           // pointing elsewhere
+      {3, true, 85.0, 30.0},                                                    // tension
+      {4, false, 10.0, 30.0}, {5, false, 15.0, 30.0},                           // elsewhere
   };
   auto regions = group_yielded(mesh, zones, 15.0);
   ASSERT_EQ(regions.size(), 2u);

@@ -112,7 +112,8 @@ end
 print(("crackseed{ auto }: %d groups over %d of %d yielded zones, %d cuts, %d sections"):format(#groups, fitted,
   (function() local k = 0 for _ in pairs(yielded) do k = k + 1 end return k end)(), cuts, info().sections))
 check.report("auto: groups placed", #groups > 0 and 1 or 0, 1, 0, { absolute = true })
-check.report("auto: groups whose mode is not that of most of their area", wrong_mode, 0, 0, { absolute = true })
+check.report("auto: groups whose mode is not that of most of their area", wrong_mode, 0, 0,
+             { absolute = true })
 check.report("auto: set angles against the seed's rule [deg]", worst_rule, 0, 1e-9, { absolute = true })
 check.report("auto: cut directions against their set's [deg]", worst_angle, 0, 1e-9, { absolute = true })
 check.report("auto: cut points outside their group's zones [m]", worst_place, 0, 1e-9, { absolute = true })
