@@ -4,6 +4,7 @@
 --   shapes.circle{ radius = 5, segments = 64 }                      -- centre {0, 0}
 --   shapes.sector{ r0 = 1, r1 = 3, from = 0, to = 90, segments = 16 }  -- ring piece (r0 = 0: pie)
 --   shapes.quarter_plate{ hole = 1, size = 20, segments = 64 }       -- [0, size]^2 minus a quarter disc
+--   shapes.contains(polygon, x, y)                                   -- is (x, y) inside polygon?
 --
 -- Angles in degrees, counter-clockwise from +x; every polygon counter-clockwise.
 local shapes = {}
@@ -48,6 +49,18 @@ function shapes.quarter_plate(t)
   arc(hole, { 0, 0 }, a, 0, 90, n)
   for i = #hole, 2, -1 do points[#points + 1] = hole[i] end  -- (0, a) down to just above (a, 0)
   return points
+end
+
+-- Even-odd rule, so either winding and concave polygons work; a point on an edge may go either way.
+function shapes.contains(polygon, x, y)
+  local odd = false
+  for i, a in ipairs(polygon) do
+    local b = polygon[i % #polygon + 1]
+    if (a[2] > y) ~= (b[2] > y) and x < a[1] + (y - a[2]) * (b[1] - a[1]) / (b[2] - a[2]) then
+      odd = not odd
+    end
+  end
+  return odd
 end
 
 return shapes

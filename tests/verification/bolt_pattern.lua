@@ -27,6 +27,7 @@
 local check = require "edem.check"
 local cavern = require "edem.cavern"
 local bolts = require "edem.bolts"
+local shapes = require "edem.shapes"
 
 local clock = os.clock()
 local SPACING, LENGTH, SEGMENTS = 1.5, 5, 10
@@ -85,17 +86,6 @@ local function closed(poly)
   for i, p in ipairs(poly) do line[i] = p end
   line[#line + 1] = poly[1]
   return line
-end
-
-local function inside(poly, x, y)               -- even-odd rule
-  local odd = false
-  for i, a in ipairs(poly) do
-    local b = poly[i % #poly + 1]
-    if (a[2] > y) ~= (b[2] > y) and x < a[1] + (y - a[2]) * (b[1] - a[1]) / (b[2] - a[2]) then
-      odd = not odd
-    end
-  end
-  return odd
 end
 
 local function rock(x, y)
@@ -178,7 +168,7 @@ for k, s in ipairs(c.stages) do
       -- Arc length: s/2 + j s for a whole j.
       local j = (at - SPACING / 2) / SPACING
       worst.spacing = math.max(worst.spacing, math.abs(j - math.floor(j + 0.5)) * SPACING)
-      if inside(outline, tip[1], tip[2]) or not rock(tip[1], tip[2]) then wrong.tip = wrong.tip + 1 end
+      if shapes.contains(outline, tip[1], tip[2]) or not rock(tip[1], tip[2]) then wrong.tip = wrong.tip + 1 end
       local e = 1e-3
       if not rock(head[1] + e * dx / l, head[2] + e * dy / l) or rock(head[1] - e * dx / l, head[2] - e * dy / l) then
         wrong.behind = wrong.behind + 1
