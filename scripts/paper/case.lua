@@ -33,6 +33,10 @@
 --             session 28 had them [false: a group is the touching yielded zones of one principal
 --             direction, a tension group where tension zones cover more than half of it: the
 --             seed's regions; scripts/paper/README.md, "Where EDEM disagrees": the depth trend]
+--   muck      which loose blocks are mucked out every 200 cycles: moved (every block with a
+--             gridpoint 1 m from where it started) or opening (of those, the ones whose centre has
+--             moved into the opening dug so far; a block squeezed 1 m but still in the wall stays)
+--             [moved] (scripts/paper/README.md, "Where EDEM disagrees": what a cave-in is)
 --   judge_most  judge{ most }: at most this many sections break at a judgment (every 10
 --             cycles), those furthest past their strength first [0: all that fail]
 --   tolerance model{}'s geometric tolerance [7e-4]
@@ -58,6 +62,7 @@
 local seed = require "edem.seed"
 local cavern = require "edem.cavern"
 local rockbolts = require "edem.bolts"
+local shapes = require "edem.shapes"
 
 local function setting(key, default)
   local v = arg and arg[key]
@@ -75,6 +80,10 @@ local SIMILAR, TOLERANCE = setting("similar", 45), setting("tolerance", 7e-4)
 local MIN_ANGLE = setting("min_angle", 30)
 local JUDGE_MOST = setting("judge_most", 0)
 local ORIGIN_X, ORIGIN_Y = setting("origin_x", nil), setting("origin_y", nil)
+local MUCK = tostring(setting("muck", "moved"))
+if MUCK ~= "moved" and MUCK ~= "opening" then
+  error(("muck must be moved or opening, got %s"):format(MUCK), 0)
+end
 local BY_MODE = setting("by_mode", false)
 if type(BY_MODE) ~= "boolean" then
   error(("by_mode must be true or false, got %s"):format(BY_MODE), 0)
@@ -172,10 +181,38 @@ local function settlement(point)
   for g in gridpoints() do if g.id == point.id then return -g.uy end end
 end
 
--- Mucking out: blocks whose gridpoints have moved more than 1 m.
+-- Mucking out: blocks whose gridpoints have moved more than 1 m; with muck = "opening" only those
+-- of them whose centre has moved into the opening dug so far.
 local fallen = 0
+local step_now = 0  -- the step being excavated
+local function in_opening(x, y)
+  for k = 1, math.min(step_now, #c.stages) do
+    if shapes.contains(c.stages[k].polygon, x, y) then return true end
+  end
+  return false
+end
+-- Of the blocks given, those whose centre (at rest, moved by its gridpoints' mean displacement)
+-- lies in the opening.
+local function in_the_opening(moved)
+  if #moved == 0 then return moved end
+  local sum = {}
+  for _, b in ipairs(moved) do sum[b.id] = { 0, 0, 0 } end
+  for g in gridpoints() do
+    local t = sum[g.block]
+    if t then t[1], t[2], t[3] = t[1] + g.ux, t[2] + g.uy, t[3] + 1 end
+  end
+  local taken = {}
+  for _, b in ipairs(moved) do
+    local t = sum[b.id]
+    if in_opening(b.x + t[1] / t[3], b.y + t[2] / t[3]) then taken[#taken + 1] = b end
+  end
+  return taken
+end
 local function muck_out()
-  for b in moved_blocks(1.0) do
+  local moved = {}
+  for b in moved_blocks(1.0) do moved[#moved + 1] = b end
+  if MUCK == "opening" then moved = in_the_opening(moved) end
+  for _, b in ipairs(moved) do
     excavate{ block = b.id }
     fallen = fallen + 1
   end
@@ -265,6 +302,7 @@ print(("  %5s %-20s %7s %9s %10s %7s %6s %6s"):format("step", "name", "cycles", 
                                                    "fallen", "time"))
 for i, s in ipairs(c.stages) do
   if i > STAGES then break end
+  step_now = i
   -- Rock of a later step may have been mucked out already, all of it: then there is nothing left
   -- to excavate, and the step is only solved.
   local ok_excavate, why = pcall(excavate, { region = s.name, release = RELEASE })
