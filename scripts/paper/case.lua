@@ -37,6 +37,10 @@
 --             gridpoint 1 m from where it started) or opening (of those, the ones whose centre has
 --             moved into the opening dug so far; a block squeezed 1 m but still in the wall stays)
 --             [moved] (scripts/paper/README.md, "Where EDEM disagrees": what a cave-in is)
+--   damping   the excavation steps' damping: local (Itasca's local damping, 0.8: DESIGN.md's for
+--             static problems, UDEC's default) or adaptive (viscous, 2 omega from the displacement
+--             so far: set{}'s default, the studies' until session 29) [local] (scripts/paper/
+--             README.md, "Where EDEM disagrees": what a cave-in is)
 --   judge_most  judge{ most }: at most this many sections break at a judgment (every 10
 --             cycles), those furthest past their strength first [0: all that fail]
 --   tolerance model{}'s geometric tolerance [7e-4]
@@ -83,6 +87,10 @@ local ORIGIN_X, ORIGIN_Y = setting("origin_x", nil), setting("origin_y", nil)
 local MUCK = tostring(setting("muck", "moved"))
 if MUCK ~= "moved" and MUCK ~= "opening" then
   error(("muck must be moved or opening, got %s"):format(MUCK), 0)
+end
+local DAMPING = tostring(setting("damping", "local"))
+if DAMPING ~= "adaptive" and DAMPING ~= "local" then
+  error(("damping must be adaptive or local, got %s"):format(DAMPING), 0)
 end
 local BY_MODE = setting("by_mode", false)
 if type(BY_MODE) ~= "boolean" then
@@ -141,6 +149,11 @@ print(("%s: %d zones yielded in the prepass, %d crack groups, %d sections (%d cr
        n.cuts_cut_back, MIN_ANGLE, n.blocks, n.zones))
 local r = solve{ ratio = 1e-6, max_cycles = 20000 }
 reset{ "displacement", "velocity", "joint" }  -- displacements and joint slip from the in-situ state
+-- Local damping takes the same share of every node's force whatever the motion's frequency. The
+-- adaptive damping, c = 2 omega, is critical for one frequency, the whole opening's slow
+-- convergence, and leaves the quick ring of a breaking section damped at omega / omega_ring of
+-- critical; in session 29's runs such rings spread into cave-ins (README, what a cave-in is).
+if DAMPING == "local" then set{ damping = "local", local_damping = 0.8 } end
 
 -- Measuring points, in the rock left in place: the gridpoint nearest to the crown, and those
 -- nearest to the side walls at y = 0.
