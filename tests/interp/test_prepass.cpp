@@ -142,6 +142,34 @@ TEST(Prepass, AStageWithNoStaticStateEndsThePrepassWhenKept) {
   )");
 }
 
+// The same weak rock with 30 iterations a load step: a failed step's line search stops once it has
+// given the same out-of-balance force, to the last bit, four iterations in a row (it no longer
+// moves the iterate), instead of repeating it up to its 30th iteration. Six of the 17 failed load
+// steps end so (one did before, for KINSOL's own reasons), 814 iterations in all against 897, and
+// the steps are cut back exactly as before: the same 17 cut-backs, the same factor reached.
+TEST(Prepass, AStuckLineSearchGivesUpAndTheStepIsCutBack) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, std::string(kPlate) + R"(
+    zone{ edge = 1 }
+    material{ "rock", model = "mohr", young = 1e9, poisson = 0.25, cohesion = 0.3e6, friction = 10 }
+    local pre = prepass{ stages = { "hole" }, iterations = 30, on_failure = "keep" }
+    local hole = pre.stages[2]
+    assert(hole.reached == 0.7015625, "reached " .. hole.reached)
+    local failed, stalled = 0, 0
+    for _, step in ipairs(hole.steps) do
+      local r, n = step.residuals, #step.residuals
+      if not step.converged then
+        failed = failed + 1
+        if n < 30 and r[n] == r[n - 1] and r[n - 1] == r[n - 2] and r[n - 2] == r[n - 3] then stalled = stalled + 1 end
+      end
+    end
+    assert(failed == 17 and hole.cutbacks == 17, ("failed steps %d, cut-backs %d"):format(failed, hole.cutbacks))
+    assert(stalled >= 4, "failed steps that ended on four equal forces: " .. stalled)  -- 6 now, 1 before
+    assert(hole.iterations < 897, "iterations " .. hole.iterations)  -- 814 now, 897 before
+  )");
+}
+
 // crackseed{ auto }'s regions: by principal direction, whatever the mode (a lone zone marked as
 // yielded in tension joins the shear region around it), or with by_mode = true by mode too (it
 // leaves that region).
