@@ -15,7 +15,8 @@
 --   release   cycles over which each step's load comes off [20000]: slow enough that the answer
 --             no longer depends on it (scripts/paper/README.md, "The release rate": since session
 --             26 Case 3 at 158 m ends within the spread of runs 10 cycles apart from 5,000 cycles
---             up, but the whole study at 10,000 caved in more often than at 20,000)
+--             up, but the whole study at 10,000 caved in more often than at 20,000, and under
+--             local damping (session 30) ended single runs beyond the spread of 20,000's)
 --   release_offset  cycles added to release [0]: scripts/paper/study.sh --members runs each case
 --             with releases a few cycles apart, to show the spread numerical detail gives
 --   similar   deg: crackseed{ auto }'s grouping angle [45]
