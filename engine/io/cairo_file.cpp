@@ -99,7 +99,7 @@ std::string printable(std::string_view text) {
 void write_picture(const std::string& file, int width, int height, std::string_view title,
                    const std::function<void(cairo_t*)>& draw) {
   const PictureFormat format = picture_format(file);
-  TempFile tmp(fs::path(file + ".tmp"));
+  TempFile tmp(file);
   SurfacePtr surface = make_surface(format, tmp.path(), width, height);
   check_cairo(cairo_surface_status(surface.get()), file);
   if (format == PictureFormat::pdf) {

@@ -1,5 +1,5 @@
 // Writing a cairo picture to a file, shared by plot() and chart(): PNG, SVG or PDF chosen by the
-// file's extension, drawn to FILE.tmp and renamed over FILE only once complete, so a failed
+// file's extension, drawn to FILE.PID.tmp and renamed over FILE only once complete, so a failed
 // picture never leaves a half-written file behind (and keeps the previous one).
 #pragma once
 
@@ -24,7 +24,7 @@ void check_writable(const std::string& file);
 std::string printable(std::string_view text);
 
 // A width x height surface of `file`'s format (PDF titled `title`), drawn by `draw`, written to
-// FILE.tmp and renamed over `file`. Throws edem::Error, leaving no file, if cairo or the file
+// FILE.PID.tmp and renamed over `file`. Throws edem::Error, leaving no file, if cairo or the file
 // system fails.
 void write_picture(const std::string& file, int width, int height, std::string_view title,
                    const std::function<void(cairo_t*)>& draw);

@@ -5,7 +5,7 @@
 // round values, a light grid at the labelled ones and the data's range padded a little; a
 // legend of the series' names sits in the corner of the chart that hides the least data. No
 // model is needed: the numbers come from the caller. Like plot(), the file is written to
-// FILE.tmp and renamed, so a failed chart never leaves a half-written picture behind.
+// FILE.PID.tmp and renamed, so a failed chart never leaves a half-written picture behind.
 #pragma once
 
 #include <string>

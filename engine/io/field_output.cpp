@@ -154,7 +154,7 @@ void FieldSeries::write_index() const {
     text += "    </Grid>\n";
   }
   text += "    </Grid>\n  </Domain>\n</Xdmf>\n";
-  TempFile tmp(fs::path(xdmf_ + ".tmp"));
+  TempFile tmp(xdmf_);
   {
     std::ofstream out(tmp.path());
     out << text;

@@ -2,7 +2,7 @@
 //
 // The model's extent is fitted to the canvas with square metres kept square, y up, a title,
 // a legend of the edge styles and new cracks drawn, and a scale bar. The file is written to
-// FILE.tmp and renamed, so a failed plot never leaves a half-written picture behind.
+// FILE.PID.tmp and renamed, so a failed plot never leaves a half-written picture behind.
 #pragma once
 
 #include <array>

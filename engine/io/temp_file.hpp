@@ -1,15 +1,25 @@
 // A file being written under a temporary name, removed unless kept (renamed into place).
 #pragma once
 
+#include <unistd.h>
+
 #include <filesystem>
+#include <string>
 #include <system_error>
 #include <utility>
 
 namespace edem {
 
+// Where `target` is written before it is renamed over it: beside it (a rename within one
+// directory is atomic), named for this process, so that two runs writing the same file never
+// write into, or rename away, each other's half-written temporary.
+inline std::filesystem::path temporary_for(const std::filesystem::path& target) {
+  return target.string() + "." + std::to_string(::getpid()) + ".tmp";
+}
+
 class TempFile {
  public:
-  explicit TempFile(std::filesystem::path path) : path_(std::move(path)) {}
+  explicit TempFile(const std::filesystem::path& target) : path_(temporary_for(target)) {}
   TempFile(const TempFile&) = delete;
   TempFile& operator=(const TempFile&) = delete;
   ~TempFile() {

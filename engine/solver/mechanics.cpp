@@ -13,11 +13,12 @@
 
 #include "core/error.hpp"
 #include "core/names.hpp"
+#include "io/temp_file.hpp"
 #include "model/model.hpp"
 #include "solver/bolt_coupling.hpp"
-#include "solver/run.hpp"
 #include "solver/loads.hpp"
 #include "solver/prepare.hpp"
+#include "solver/run.hpp"
 
 namespace edem {
 namespace {
@@ -456,9 +457,9 @@ void Model::write_histories(const std::string& path) const {
       row.resize(histories.size(), nullptr);
       row[h] = &histories[h].values[i];
     }
-  const std::string temporary = path + ".tmp";
+  TempFile temporary(path);
   {
-    std::ofstream out(temporary);
+    std::ofstream out(temporary.path());
     if (!out) fail("cannot write '{}'", path);
     out << "cycle";
     // RFC 4180: a header field with a comma, quote or line break is quoted, quotes doubled.
@@ -475,8 +476,9 @@ void Model::write_histories(const std::string& path) const {
     if (!out) fail("cannot write '{}'", path);
   }
   std::error_code error;
-  std::filesystem::rename(temporary, path, error);
+  std::filesystem::rename(temporary.path(), path, error);
   if (error) fail("cannot write '{}': {}", path, error.message());
+  temporary.keep();
 }
 
 // ---- views ----------------------------------------------------------------------------------

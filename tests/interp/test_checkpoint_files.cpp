@@ -184,7 +184,7 @@ TEST_F(CheckpointFiles, ForgedChecksumsNeverCrash) {
 }
 
 // A run killed (SIGKILL) while it writes a checkpoint over an older one: the older one is still
-// whole. The script saves over and over; each kill lands while a FILE.tmp is being written.
+// whole. The script saves over and over; each kill lands while its temporary is being written.
 TEST_F(CheckpointFiles, KillDuringSaveLeavesThePreviousCheckpoint) {
   write("again.lua", make_script("0.03") + "for i = 1, 100000 do save(\"good.h5\") end\n");
   for (int attempt = 0; attempt < 3; ++attempt) {
@@ -199,11 +199,13 @@ TEST_F(CheckpointFiles, KillDuringSaveLeavesThePreviousCheckpoint) {
     fs::current_path(dir_);
     ASSERT_EQ(posix_spawn(&pid, EDEM_EXE, nullptr, nullptr, argv.data(), environ), 0);
     fs::current_path(old_dir);
-    // Wait for a first complete checkpoint, then for a later save in progress.
+    // Wait for a first complete checkpoint, then for a later save in progress: the child's
+    // temporary (io/temp_file.hpp's name, with its process id).
+    const fs::path temporary = dir_ / ("good.h5." + std::to_string(pid) + ".tmp");
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
     bool caught = false;
     while (std::chrono::steady_clock::now() < deadline && !caught) {
-      caught = fs::exists(dir_ / "good.h5") && fs::exists(dir_ / "good.h5.tmp");
+      caught = fs::exists(dir_ / "good.h5") && fs::exists(temporary);
       if (!caught) std::this_thread::sleep_for(std::chrono::microseconds(200));
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(attempt * 3));  // different points of the write

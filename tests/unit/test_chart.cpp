@@ -15,6 +15,7 @@
 #include "core/error.hpp"
 #include "io/chart.hpp"
 #include "io/plot.hpp"
+#include "io/temp_file.hpp"
 #include "picture_files.hpp"
 
 namespace edem {
@@ -55,7 +56,7 @@ TEST_F(ChartTest, WritesPngOfTheRequestedSizeShowingEverySeries) {
   def.width = 640;
   def.height = 480;
   chart(def);
-  EXPECT_FALSE(fs::exists(def.file + ".tmp"));
+  EXPECT_FALSE(fs::exists(temporary_for(def.file)));
   const Picture picture = read_png(def.file);
   EXPECT_EQ(picture.width, 640);
   EXPECT_EQ(picture.height, 480);
@@ -234,7 +235,7 @@ TEST_F(ChartTest, FailedChartKeepsThePreviousFile) {
   def.series[0].y[0] = -1;
   EXPECT_THROW(chart(def), Error);
   EXPECT_EQ(read_all(def.file), "previous picture");
-  EXPECT_FALSE(fs::exists(def.file + ".tmp"));
+  EXPECT_FALSE(fs::exists(temporary_for(def.file)));
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "io/plot.hpp"
+#include "io/temp_file.hpp"
 #include "model/model.hpp"
 #include "picture_files.hpp"
 
@@ -78,7 +79,7 @@ TEST_F(PlotTest, WritesPngOfTheRequestedSize) {
   };
   EXPECT_EQ(be32(16), 640u);
   EXPECT_EQ(be32(20), 480u);
-  EXPECT_FALSE(fs::exists(def.file + ".tmp"));
+  EXPECT_FALSE(fs::exists(temporary_for(def.file)));
 }
 
 TEST_F(PlotTest, WindowDrawsThatPartFittedToThePicture) {
@@ -246,7 +247,7 @@ TEST_F(PlotTest, FailedPlotKeepsThePreviousFile) {
   def.show = {"blokcs"};
   EXPECT_THROW(plot(model, def), Error);
   EXPECT_EQ(read_all(path), "previous picture");
-  EXPECT_FALSE(fs::exists(path + ".tmp"));
+  EXPECT_FALSE(fs::exists(temporary_for(path)));
 }
 
 TEST_F(PlotTest, SizeOutOfRangeThrows) {
