@@ -196,9 +196,8 @@ int newton(Kinsol& k, System& s, ImplicitProblem& p, double to, StageLog& log) {
     KINGetNumNonlinSolvIters(k.memory, &iterations);
     log.iterations += static_cast<int>(iterations);
     if (s.stalled)
-      s.error =
-          fmt::format("its line search stopped: the same force, {:.3g} of the scale, {} times",
-                      s.log->residuals.back(), kStallRepeats + 1);
+      s.error = fmt::format("its line search stopped moving: the same force {} times in a row",
+                            kStallRepeats + 1);
     if (flag >= 0) break;
   }
   scatter_unknowns(p, N_VGetArrayPointer_Serial(k.x), s.u);
