@@ -11,9 +11,10 @@ namespace edem {
 
 // Where `target` is written before it is renamed over it: beside it (a rename within one
 // directory is atomic), named for this process, so that two runs writing the same file never
-// write into, or rename away, each other's half-written temporary.
-inline std::filesystem::path temporary_for(const std::filesystem::path& target) {
-  return target.string() + "." + std::to_string(::getpid()) + ".tmp";
+// write into, or rename away, each other's half-written temporary. `pid`: the writing process.
+inline std::filesystem::path temporary_for(const std::filesystem::path& target,
+                                           pid_t pid = ::getpid()) {
+  return target.string() + "." + std::to_string(pid) + ".tmp";
 }
 
 class TempFile {

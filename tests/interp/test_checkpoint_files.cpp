@@ -15,6 +15,7 @@
 
 #include "cli_test.hpp"
 #include "interp_test.hpp"
+#include "io/temp_file.hpp"
 
 extern char** environ;
 
@@ -199,9 +200,9 @@ TEST_F(CheckpointFiles, KillDuringSaveLeavesThePreviousCheckpoint) {
     fs::current_path(dir_);
     ASSERT_EQ(posix_spawn(&pid, EDEM_EXE, nullptr, nullptr, argv.data(), environ), 0);
     fs::current_path(old_dir);
-    // Wait for a first complete checkpoint, then for a later save in progress: the child's
-    // temporary (io/temp_file.hpp's name, with its process id).
-    const fs::path temporary = dir_ / ("good.h5." + std::to_string(pid) + ".tmp");
+    // Wait for a first complete checkpoint, then for a later save in progress (the child's
+    // temporary).
+    const fs::path temporary = temporary_for(dir_ / "good.h5", pid);
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
     bool caught = false;
     while (std::chrono::steady_clock::now() < deadline && !caught) {

@@ -43,7 +43,7 @@ TEST(TempFile, TwoProcessesWritingOneFileHaveTemporariesOfTheirOwn) {
   int status = 0;
   ::waitpid(child, &status, 0);
   ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
-  EXPECT_EQ(theirs, "picture.png." + std::to_string(child) + ".tmp");
+  EXPECT_EQ(theirs, temporary_for("picture.png", child).string());
   EXPECT_NE(theirs, temporary_for("picture.png").string());
 }
 
