@@ -42,6 +42,10 @@
 --             static problems, UDEC's default) or adaptive (viscous, 2 omega from the displacement
 --             so far: set{}'s default, the studies' until session 29) [local] (scripts/paper/
 --             README.md, "Where EDEM disagrees": what a cave-in is)
+--   first     left or right: the half of the arch dug first (steps 2 and 3) [left]. Case 1's two
+--             joint sets are mirror images, and the order is the model's one asymmetry besides the
+--             mesh and what it carries; right first shows it is not what moves Case 1's left wall
+--             more (scripts/paper/README.md, "Where EDEM disagrees": Case 1's walls)
 --   judge_most  judge{ most }: at most this many sections break at a judgment (every 10
 --             cycles), those furthest past their strength first [0: all that fail]
 --   tolerance model{}'s geometric tolerance [7e-4]
@@ -93,6 +97,10 @@ local DAMPING = tostring(setting("damping", "local"))
 if DAMPING ~= "adaptive" and DAMPING ~= "local" then
   error(("damping must be adaptive or local, got %s"):format(DAMPING), 0)
 end
+local FIRST = tostring(setting("first", "left"))
+if FIRST ~= "left" and FIRST ~= "right" then
+  error(("first must be left or right, got %s"):format(FIRST), 0)
+end
 local BY_MODE = setting("by_mode", false)
 if type(BY_MODE) ~= "boolean" then
   error(("by_mode must be true or false, got %s"):format(BY_MODE), 0)
@@ -107,9 +115,14 @@ assert(BOLTS == "none" or BOLTS == "1" or BOLTS == "2", "bolts must be none, 1 o
 local tag = ("case%d_%s_h%g_%s"):format(CASE, SET, DEPTH, BOLTS == "none" and "none" or "pattern" .. BOLTS)
 -- Runs that differ only in a nudged release (study.sh --members) keep their pictures apart.
 if RELEASE_OFFSET ~= 0 then tag = tag .. ("_release%d"):format(RELEASE) end
+if FIRST == "right" then tag = tag .. "_right_first" end
 local started = os.time()
 
 local c = cavern.warhead{}
+if FIRST == "right" then
+  assert(c.stages[2].name:match("arch_left$") and c.stages[3].name:match("arch_right$"))
+  c.stages[2], c.stages[3] = c.stages[3], c.stages[2]
+end
 seed.region{ case = CASE, set = SET, depth = DEPTH, regions = c.stages, near = { c.outline }, edge = EDGE,
              far = FAR, tolerance = TOLERANCE }
 local rock = seed[SET].rock
@@ -148,6 +161,33 @@ local n = info()
 print(("%s: %d zones yielded in the prepass, %d crack groups, %d sections (%d crack pieces left out, %d cut back "
        .. "from corners under %g deg); %d blocks, %d zones"):format(tag, yielded, #groups, n.sections, n.cuts_left_out,
        n.cuts_cut_back, MIN_ANGLE, n.blocks, n.zones))
+-- Where the cracks can come from, by side of the cavern's axis (x < 0 left): the zones yielded in
+-- the prepass, and the potential cracks within 2, 5 and 10 m of the outline, where nearly every
+-- section breaks (README, "Where EDEM disagrees": the depth trend, Case 1's walls).
+do
+  local zones_by_side = { 0, 0 }
+  for _, z in ipairs(pre.zones) do
+    if z.state ~= "none" and z.x ~= 0 then
+      local side = z.x < 0 and 1 or 2
+      zones_by_side[side] = zones_by_side[side] + 1
+    end
+  end
+  local bands = { 2, 5, 10 }
+  local near = { { 0, 0 }, { 0, 0 }, { 0, 0 } }
+  for sec in sections() do
+    local d = shapes.distance_to(c.outline, sec.x, sec.y)
+    for i, band in ipairs(bands) do
+      if d <= band then
+        local side = sec.x < 0 and 1 or 2
+        near[i][side] = near[i][side] + sec.length
+      end
+    end
+  end
+  print(("%s: zones yielded in the prepass, left / right of the axis: %d / %d; potential cracks within "
+         .. "2, 5 and 10 m of the outline, left / right: %.1f / %.1f, %.1f / %.1f, %.1f / %.1f m"):format(
+         tag, zones_by_side[1], zones_by_side[2], near[1][1], near[1][2], near[2][1], near[2][2], near[3][1],
+         near[3][2]))
+end
 local r = solve{ ratio = 1e-6, max_cycles = 20000 }
 reset{ "displacement", "velocity", "joint" }  -- displacements and joint slip from the in-situ state
 -- Local damping takes the same share of every node's force whatever the motion's frequency. The

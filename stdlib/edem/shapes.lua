@@ -5,6 +5,7 @@
 --   shapes.sector{ r0 = 1, r1 = 3, from = 0, to = 90, segments = 16 }  -- ring piece (r0 = 0: pie)
 --   shapes.quarter_plate{ hole = 1, size = 20, segments = 64 }       -- [0, size]^2 minus a quarter disc
 --   shapes.contains(polygon, x, y)                                   -- is (x, y) inside polygon?
+--   shapes.distance_to(polygon, x, y)                                -- to its nearest edge [m]
 --
 -- Angles in degrees, counter-clockwise from +x; every polygon counter-clockwise.
 local shapes = {}
@@ -61,6 +62,20 @@ function shapes.contains(polygon, x, y)
     end
   end
   return odd
+end
+
+-- Distance from (x, y) to the polygon's outline (its nearest edge), inside or outside it.
+function shapes.distance_to(polygon, x, y)
+  local best = math.huge
+  for i, a in ipairs(polygon) do
+    local b = polygon[i % #polygon + 1]
+    local dx, dy = b[1] - a[1], b[2] - a[2]
+    local length2 = dx * dx + dy * dy
+    local t = length2 > 0 and ((x - a[1]) * dx + (y - a[2]) * dy) / length2 or 0
+    t = math.max(0, math.min(1, t))
+    best = math.min(best, math.sqrt((a[1] + t * dx - x) ^ 2 + (a[2] + t * dy - y) ^ 2))
+  end
+  return best
 end
 
 return shapes
