@@ -120,10 +120,7 @@ void write_picture(const std::string& file, int width, int height, std::string_v
   }
   surface.reset();
 
-  std::error_code ec;
-  fs::rename(tmp.path(), file, ec);
-  if (ec) fail("cannot write '{}': {}", file, ec.message());
-  tmp.keep();
+  tmp.move_into_place();
 }
 
 }  // namespace edem

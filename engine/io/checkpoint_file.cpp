@@ -140,9 +140,7 @@ void write_checkpoint(const std::string& path, const std::function<void(hid_t fi
       ::fsync(fileno(file.get())) != 0)
     fail("cannot write '{}': {}", path, std::strerror(errno));
   file.reset();
-  fs::rename(tmp.path(), target, ec);
-  if (ec) fail("cannot write '{}': {}", path, ec.message());
-  tmp.keep();
+  tmp.move_into_place();
   sync_directory(target);
 }
 

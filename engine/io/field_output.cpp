@@ -160,10 +160,7 @@ void FieldSeries::write_index() const {
     out << text;
     if (!out) fail("cannot write '{}'", xdmf_);
   }
-  std::error_code ec;
-  fs::rename(tmp.path(), xdmf_, ec);
-  if (ec) fail("cannot write '{}': {}", xdmf_, ec.message());
-  tmp.keep();
+  tmp.move_into_place();
 }
 
 }  // namespace edem

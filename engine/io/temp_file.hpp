@@ -1,4 +1,5 @@
-// A file being written under a temporary name, removed unless kept (renamed into place).
+// A file being written under a temporary name, removed unless moved into place (renamed over its
+// target).
 #pragma once
 
 #include <unistd.h>
@@ -6,6 +7,8 @@
 #include <filesystem>
 #include <string>
 #include <system_error>
+
+#include "core/error.hpp"
 
 namespace edem {
 
@@ -19,7 +22,8 @@ inline std::filesystem::path temporary_for(const std::filesystem::path& target,
 
 class TempFile {
  public:
-  explicit TempFile(const std::filesystem::path& target) : path_(temporary_for(target)) {}
+  explicit TempFile(const std::filesystem::path& target)
+      : target_(target), path_(temporary_for(target)) {}
   TempFile(const TempFile&) = delete;
   TempFile& operator=(const TempFile&) = delete;
   ~TempFile() {
@@ -27,9 +31,16 @@ class TempFile {
     if (!kept_) std::filesystem::remove(path_, ec);
   }
   const std::filesystem::path& path() const { return path_; }
-  void keep() { kept_ = true; }
+  // Renames the finished temporary over its target and keeps it; throws, removing it, if it cannot.
+  void move_into_place() {
+    std::error_code ec;
+    std::filesystem::rename(path_, target_, ec);
+    if (ec) fail("cannot write '{}': {}", target_.string(), ec.message());
+    kept_ = true;
+  }
 
  private:
+  std::filesystem::path target_;
   std::filesystem::path path_;
   bool kept_ = false;
 };

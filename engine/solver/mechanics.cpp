@@ -475,10 +475,7 @@ void Model::write_histories(const std::string& path) const {
     }
     if (!out) fail("cannot write '{}'", path);
   }
-  std::error_code error;
-  std::filesystem::rename(temporary.path(), path, error);
-  if (error) fail("cannot write '{}': {}", path, error.message());
-  temporary.keep();
+  temporary.move_into_place();
 }
 
 // ---- views ----------------------------------------------------------------------------------

@@ -1,5 +1,5 @@
 // io/temp_file.hpp: a file is written beside its target under a name of this process's own, and
-// removed unless kept.
+// removed unless moved into place.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -47,7 +47,7 @@ TEST(TempFile, TwoProcessesWritingOneFileHaveTemporariesOfTheirOwn) {
   EXPECT_NE(theirs, temporary_for("picture.png").string());
 }
 
-TEST(TempFile, ItIsRemovedUnlessKept) {
+TEST(TempFile, ItIsRemovedUnlessMovedIntoPlace) {
   const fs::path dir = fs::temp_directory_path() / ("edem_temp_file_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   fs::path dropped, kept;
@@ -60,8 +60,7 @@ TEST(TempFile, ItIsRemovedUnlessKept) {
   {
     TempFile file(dir / "b.txt");
     std::ofstream(file.path()) << "whole";
-    fs::rename(file.path(), dir / "b.txt");
-    file.keep();
+    file.move_into_place();
     kept = dir / "b.txt";
   }
   EXPECT_TRUE(fs::exists(kept));
