@@ -227,12 +227,23 @@ std::optional<Stress> traction_source(const Mechanics& m, int edge, Vec2 point, 
   return std::nullopt;
 }
 
+// How far an edge may turn into a face and still count as along it: sin 10 deg [-].
+constexpr double kAlongFace = 0.17364817766693033;
+
 // A tip's length per unit overlap against the face of `to` (contacts.hpp): half the spread of
 // the tangents of its edges' angles from the face's normal, so that pressed in by d its length
 // is half the chord its boundary cuts on the face's line. 0 unless every edge at node k leaves
-// the face outward and the block lies between them (its edges' summed outward normal,
-// `own_normal`, points into the face: a convex corner pointing in). At most a
-// quarter of the edges' span at the watchdog's depth, the length a face of them would have.
+// the face outward or runs along it, and the block lies between them (its edges' summed outward
+// normal, `own_normal`, points into the face: a corner pointing in). At most a quarter of the
+// edges' span at the watchdog's depth, the length a face of them would have. An edge along the
+// face (up to kAlongFace into it) lies over the face all its length once pressed in: its
+// tangent is infinite, and the tip has that most. (Not a tip when such an edge turned the least
+// bit into the face, as before session 32, dropped a corner pressed 4 cm into the face of the
+// block diagonally across a slipped joint crossing whenever its edge along the joint rocked past
+// parallel, and found it again when it rocked back: 2 to 5 MN/m on and off every few dozen
+// cycles kept Case 2's crossings from settling; scripts/paper/README.md, "Steps short of
+// equilibrium". An edge clearly into the face is still no tip's: the face beside a tip's apex
+// would take the tip's far edge, its line run on past the apex, as a face to press on.)
 double tip_wedge(const Mechanics& m, size_t k, Vec2 p, Vec2 own_normal, const Found& to, double reach) {
   const ContactBoundary& cb = m.faces;
   const int node = cb.nodes[k];
@@ -243,9 +254,9 @@ double tip_wedge(const Mechanics& m, size_t k, Vec2 p, Vec2 own_normal, const Fo
     if (!m.block_live[static_cast<size_t>(e.block)]) continue;
     const Vec2 far_end = at(m, e.a == node ? e.b : e.a);
     const Vec2 d = far_end - p;
-    const double out = dot(d, to.normal);
-    if (!(out > 0.0)) return 0.0;  // runs along the face or into it: not a tip
-    const double tangent = dot(d, along) / out;
+    const double out = dot(d, to.normal), side = dot(d, along);
+    if (!(out > -kAlongFace * norm(d))) return 0.0;  // runs into the face: not a tip
+    const double tangent = out > 0.0 ? side / out : std::copysign(INFINITY, side);
     low = std::min(low, tangent);
     high = std::max(high, tangent);
     span += norm(d);

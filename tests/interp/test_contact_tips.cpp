@@ -1,0 +1,67 @@
+// A corner pressed into a face while one of its edges lies along that face: where a joint
+// crossing has slipped, the corner of one block is pushed into the face of the block diagonally
+// across, its edge along the joint lying on that face and its half-edge carried by the block
+// beside it. Only the tip rule (contacts.hpp) keeps it out; before session 32 the corner was no
+// tip whenever that edge turned the least bit into the face, and its contact came and went as
+// the edge rocked about parallel (Case 2 of the paper study: scripts/paper/README.md, "Steps
+// short of equilibrium").
+#include "interp_test.hpp"
+
+namespace edem::test {
+namespace {
+
+// Three stiff blocks: `lower_left` and `lower_right` side by side under `upper`, whose base lies
+// on lower_left's top. upper slides 5 cm right, its corner over lower_right's top; lower_right is
+// then pushed up 2 cm, into that corner. lower_right's top leans by LEAN over its 1 m, so that
+// upper's base turns into the face (LEAN < 0) or away from it (LEAN > 0) by 0.1 degree.
+const char* kCornerOnAStep = R"lua(
+  local function corner_contact(lean)
+    model{ title = "a corner pressed into a step" }
+    block{ x = {-1, 0}, y = {-1, 0} }
+    block{ {0, -1}, {1, -1}, {1, lean}, {0, 0} }
+    block{ x = {-1, 0}, y = {0, 1} }
+    zone{ edge = 0.25 }
+    material{ "rock", density = 2600, young = 1e12, poisson = 0.25 }
+    assign{ material = "rock" }
+    joint_material{ "j", kn = 1e8, ks = 1e8, friction = 0 }
+    jassign{ material = "j" }
+    local lower_right, upper = gp_near(0.5, -0.5).block, gp_near(-0.5, 0.5).block
+    local top = {{-1.1, 0.9}, {0.1, 0.9}, {0.1, 1.1}, {-1.1, 1.1}}
+    local base_right = {{0.05, -1.1}, {1.1, -1.1}, {1.1, -0.9}, {0.05, -0.9}}
+    boundary{ polygon = {{-1.1, -1.1}, {-0.05, -1.1}, {-0.05, -0.9}, {-1.1, -0.9}}, fix = "xy" }
+    boundary{ polygon = base_right, fix = "xy" }
+    boundary{ polygon = top, xvel = 1e-3, yvel = 0 }
+    while gp_near(-0.5, 1).ux < 0.05 do cycle(1) end
+    boundary{ polygon = top, fix = "xy" }
+    solve{ ratio = 1e-6 }
+    boundary{ polygon = base_right, xvel = 0, yvel = 1e-3 }
+    while gp_near(0.5, -1).uy < 0.02 do cycle(1) end
+    boundary{ polygon = base_right, fix = "xy" }
+    solve{ ratio = 1e-6 }
+    local found = {}
+    for c in contacts() do
+      if c.block == upper and c.other == lower_right and math.abs(c.x - 0.05) < 1e-3 then found[#found + 1] = c end
+    end
+    assert(#found == 1, ("lean %g: %d contacts of the corner with the block it is pressed into"):format(lean, #found))
+    local c = found[1]
+    assert(c.fn < 0 and -c.un > 0.015, ("lean %g: the corner is not pressed in (fn %g, un %g)"):format(lean, c.fn, c.un))
+    return c
+  end
+)lua";
+
+TEST(ContactTips, ACornerWithAnEdgeAlongTheFaceIsATipWhicheverWayThatEdgeLeans) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, std::string(kCornerOnAStep) + R"lua(
+    local away, into = corner_contact(0.002), corner_contact(-0.002)
+    -- A tip's length grows with its overlap at the same rate (its edge along the face gives it
+    -- the most, a quarter of its edges' span at the watchdog's depth), whichever way it leans.
+    local rate_away, rate_into = away.length / -away.un, into.length / -into.un
+    assert(math.abs(rate_away / rate_into - 1) < 1e-3, ("length per overlap %g and %g"):format(rate_away, rate_into))
+    -- 0.2 mm more or less overlap of 2 cm: the force differs by a few per cent, not all of it.
+    assert(math.abs(away.fn / into.fn - 1) < 0.05, ("forces %g and %g N/m"):format(away.fn, into.fn))
+  )lua");
+}
+
+}  // namespace
+}  // namespace edem::test
