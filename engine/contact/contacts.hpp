@@ -13,7 +13,9 @@
 // grows with how deep it is in: pressed in by d, the overlap is a triangle of d times half that
 // chord, which is what a penalty interface pushes back on. Its length is then at least `wedge`
 // times d (half the chord per unit depth), up to a quarter of its edges at the watchdog's depth,
-// a face's share.
+// a face's share. A corner with one edge along the face (up to 10 deg into it) is such a tip with
+// the most: a corner pushed into the face of the block diagonally across a slipped joint crossing,
+// its half-edge along the joint carried by the block beside (detect.cpp, tip_wedge).
 //
 // The contacts of a block are found again (refresh_contacts) when its boundary has moved an
 // eighth of the smallest reach since it was last marked, with those of the blocks near it; all

@@ -227,26 +227,34 @@ std::optional<Stress> traction_source(const Mechanics& m, int edge, Vec2 point, 
   return std::nullopt;
 }
 
-// How far an edge may turn into a face and still count as along it: sin 10 deg [-].
+// How far an edge at a corner may turn into a face and still count as along it: sin 10 deg [-].
 constexpr double kAlongFace = 0.17364817766693033;
 
 // A tip's length per unit overlap against the face of `to` (contacts.hpp): half the spread of
 // the tangents of its edges' angles from the face's normal, so that pressed in by d its length
 // is half the chord its boundary cuts on the face's line. 0 unless every edge at node k leaves
-// the face outward or runs along it, and the block lies between them (its edges' summed outward
-// normal, `own_normal`, points into the face: a corner pointing in). At most a quarter of the
-// edges' span at the watchdog's depth, the length a face of them would have. An edge along the
-// face (up to kAlongFace into it) lies over the face all its length once pressed in: its
-// tangent is infinite, and the tip has that most. (Not a tip when such an edge turned the least
-// bit into the face, as before session 32, dropped a corner pressed 4 cm into the face of the
-// block diagonally across a slipped joint crossing whenever its edge along the joint rocked past
-// parallel, and found it again when it rocked back: 2 to 5 MN/m on and off every few dozen
-// cycles kept Case 2's crossings from settling; scripts/paper/README.md, "Steps short of
-// equilibrium". An edge clearly into the face is still no tip's: the face beside a tip's apex
-// would take the tip's far edge, its line run on past the apex, as a face to press on.)
+// the face outward and the block lies between them (its edges' summed outward normal,
+// `own_normal`, points into the face: a corner pointing in). At most a quarter of the edges'
+// span at the watchdog's depth, the length a face of them would have.
+// At a convex corner of the block as built (ContactEdge::corner_a, corner_b), an edge along the
+// face, up to kAlongFace into it, lies over the face all its length once pressed in: its tangent
+// is infinite, and the tip has that most. Before session 32 such an edge made no tip when it
+// turned the least bit into the face: a corner pressed 4 cm into the face of the block diagonally
+// across a slipped joint crossing was dropped whenever its edge along the joint rocked past
+// parallel, and found again when it rocked back; 2 to 5 MN/m on and off every few dozen cycles
+// kept Case 2's crossings from settling (scripts/paper/README.md, "Results", session 32). Elsewhere
+// on a face the rule is as it was: a face's gridpoint carries its half-edges' length, not a tip's.
+// An edge clearly into the face is no tip's either: the face beside a tip's apex would take the
+// tip's far edge, its line run on past the apex, as a face to press on (wedge_tip.lua).
 double tip_wedge(const Mechanics& m, size_t k, Vec2 p, Vec2 own_normal, const Found& to, double reach) {
   const ContactBoundary& cb = m.faces;
   const int node = cb.nodes[k];
+  bool corner = false;
+  for (int i = cb.edge_first[k]; i < cb.edge_first[k + 1]; ++i) {
+    const ContactEdge& e = cb.edges[static_cast<size_t>(cb.node_edges[static_cast<size_t>(i)])];
+    if (m.block_live[static_cast<size_t>(e.block)])
+      corner = corner || (e.a == node ? e.corner_a : e.corner_b);
+  }
   const Vec2 along{-to.normal.y, to.normal.x};
   double low = INFINITY, high = -INFINITY, span = 0.0;
   for (int i = cb.edge_first[k]; i < cb.edge_first[k + 1]; ++i) {
@@ -255,7 +263,8 @@ double tip_wedge(const Mechanics& m, size_t k, Vec2 p, Vec2 own_normal, const Fo
     const Vec2 far_end = at(m, e.a == node ? e.b : e.a);
     const Vec2 d = far_end - p;
     const double out = dot(d, to.normal), side = dot(d, along);
-    if (!(out > -kAlongFace * norm(d))) return 0.0;  // runs into the face: not a tip
+    const double least = corner ? -kAlongFace * norm(d) : 0.0;
+    if (!(out > least)) return 0.0;  // runs into the face (or, off a corner, along it): not a tip
     const double tangent = out > 0.0 ? side / out : std::copysign(INFINITY, side);
     low = std::min(low, tangent);
     high = std::max(high, tangent);
