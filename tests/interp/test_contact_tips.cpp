@@ -3,8 +3,8 @@
 // across, its edge along the joint lying on that face and its half-edge carried by the block
 // beside it. Only the tip rule (contacts.hpp) keeps it out; before session 32 the corner was no
 // tip whenever that edge turned the least bit into the face, and its contact came and went as
-// the edge rocked about parallel (Case 2 of the paper study: scripts/paper/README.md, "Steps
-// short of equilibrium").
+// the edge rocked about parallel (Case 2 of the paper study: scripts/paper/README.md, "Results",
+// session 32).
 #include "interp_test.hpp"
 
 namespace edem::test {
