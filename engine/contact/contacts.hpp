@@ -15,7 +15,10 @@
 // times d (half the chord per unit depth), up to a quarter of its edges at the watchdog's depth,
 // a face's share. A corner with one edge along the face (up to 10 deg into it) is such a tip with
 // the most: a corner pushed into the face of the block diagonally across a slipped joint crossing,
-// its half-edge along the joint carried by the block beside (detect.cpp, tip_wedge).
+// its half-edge along the joint carried by the block beside (detect.cpp, tip_wedge). A tip whose
+// edges all lead away from a corner of the face it is pressed into lies over that block only
+// short of the corner; beyond it, it stands beside the block and takes nothing from the face's
+// line run on (contact_force.hpp).
 //
 // The contacts of a block are found again (refresh_contacts) when its boundary has moved an
 // eighth of the smallest reach since it was last marked, with those of the blocks near it; all
@@ -91,6 +94,9 @@ struct Contact {
   double fx = 0.0, fy = 0.0;  // force on the gridpoint this cycle [N/m]
   ContactState state = ContactState::elastic;
   bool intact = false;    // still has its cohesion and tensile strength
+  // A tip whose edges all lead away from end a (b) of the edge, none back over the edge's block:
+  // past that corner nothing of it lies over the block (contact_force.hpp).
+  bool away_a = false, away_b = false;
 };
 
 struct ContactSet {

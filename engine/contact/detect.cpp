@@ -114,6 +114,7 @@ BlockGrid block_grid(const Mechanics& m, double slack) {
 struct Found {
   int other = -1, edge = -1;
   double length = 0.0, wedge = 0.0;
+  bool away_a = false, away_b = false;  // Contact::away_a, away_b
   double t = 0.0, gap = 0.0;
   Vec2 normal;
   Vec2 insitu_force;   // consistent nodal force of the in-situ traction, this side's half [N/m]
@@ -274,6 +275,27 @@ double tip_wedge(const Mechanics& m, size_t k, Vec2 p, Vec2 own_normal, const Fo
   return std::min(0.5 * (high - low), span / (4.0 * reach));
 }
 
+// For a tip (no half-edge over the block, only its wedge), whether its edges all lead away from
+// end a, and from end b, of the edge it is pressed into: none of them turns back along the face,
+// by more than kAlongFace, towards the rest of the edge. Past such an end the tip is beside the
+// block, not in it: at a slipped joint crossing, the corner of the block beyond the diagonal
+// block's corner, standing on the block beside it.
+void mark_leading_away(const Mechanics& m, size_t k, Vec2 p, Found& to) {
+  const ContactBoundary& cb = m.faces;
+  const int node = cb.nodes[k];
+  const Vec2 along{-to.normal.y, to.normal.x};  // from end a to end b
+  bool back_to_a = false, back_to_b = false;
+  for (int i = cb.edge_first[k]; i < cb.edge_first[k + 1]; ++i) {
+    const ContactEdge& e = cb.edges[static_cast<size_t>(cb.node_edges[static_cast<size_t>(i)])];
+    if (!m.block_live[static_cast<size_t>(e.block)]) continue;
+    const Vec2 d = at(m, e.a == node ? e.b : e.a) - p;
+    back_to_a = back_to_a || dot(d, along) < -kAlongFace * norm(d);
+    back_to_b = back_to_b || dot(d, along) > kAlongFace * norm(d);
+  }
+  to.away_a = !back_to_b;  // past end a the block lies towards b
+  to.away_b = !back_to_a;
+}
+
 // The edge of the contact of `node` with `block` in the list as it stands, or -1.
 int held_edge(const ContactSet& set, int node, int block) {
   const auto before = [](const Contact& x, std::pair<int, int> key) {
@@ -339,7 +361,10 @@ std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t
       }
     }
   }
-  for (Found& f : found) f.wedge = tip_wedge(m, k, p, own_normal, f, reach);
+  for (Found& f : found) {
+    f.wedge = tip_wedge(m, k, p, own_normal, f, reach);
+    if (f.wedge > 0.0 && !(f.length > 1e-12 * reach)) mark_leading_away(m, k, p, f);
+  }
   std::erase_if(found, [&](const Found& f) { return !(f.length > 1e-12 * reach) && !(f.wedge > 0.0); });
   return found;
 }
@@ -518,6 +543,8 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
       c.edge = f.edge;
       c.length = f.length;
       c.wedge = f.wedge;
+      c.away_a = f.away_a;
+      c.away_b = f.away_b;
       c.t = f.t;
       c.limit = cb.reach[k];
       const ContactEdge& edge = cb.edges[static_cast<size_t>(f.edge)];

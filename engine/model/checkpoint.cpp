@@ -100,9 +100,14 @@ template <class Ar> void fields(Ar& ar, Contact& c) {
   ar("dilation", c.dilation); ar("closure", c.closure); ar("sn", c.sn); ar("fs", c.fs); ar("us", c.us);
   ar("slip", c.slip); ar("fx", c.fx); ar("fy", c.fy); ar("state", c.state); ar("intact", c.intact);
   ar("wedge", c.wedge);
+  ar("away_a", c.away_a);
+  ar("away_b", c.away_b);
 }
-// Schema-1 files written before tips had their own length lack it (and had no tips).
-std::vector<const char*> later_members(const Contact*) { return {"wedge"}; }
+// Schema-1 files written before tips had their own length lack it (and had no tips); those
+// written before session 33 lack away_a and away_b (their tips faded past a corner either way).
+std::vector<const char*> later_members(const Contact*) {
+  return {"wedge", "away_a", "away_b"};
+}
 template <class Ar> void fields(Ar& ar, ContactSet& s) {
   ar("list", s.list); ar("gather_first", s.gather_first); ar("gather", s.gather); ar("rows", s.rows);
   ar("x_detected", s.x_detected); ar("detected", s.detected); ar("as_built", s.as_built);

@@ -63,5 +63,47 @@ TEST(ContactTips, ACornerWithAnEdgeAlongTheFaceIsATipWhicheverWayThatEdgeLeans) 
   )lua");
 }
 
+// Four blocks at a joint crossing whose upper half has slipped by OFFSET along the horizontal
+// joint, pressed down by 2 MPa: upper_right's corner stands OFFSET to the right of lower_left's
+// corner, on lower_right. lower_left's face line, run on past its corner, lies over that corner,
+// but nothing of lower_left is there: the corner's edges both lead away from it. Until session 33
+// the force past a corner faded over about one edge whatever way the gridpoint's edges led, and
+// lower_left pushed that corner up with 42 % more force than lower_right, which really carries
+// it (scripts/paper/README.md, "Results", session 33).
+TEST(ContactTips, ACornerBesideTheDiagonalBlockIsNotPushedByThatBlocksFaceRunOnPastItsCorner) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, R"lua(
+    for _, offset in ipairs{0.05, 0.06, 0.08} do
+      model{ title = "a slipped crossing" }
+      block{ x = {-1, 0}, y = {-1, 0} }
+      block{ x = {0, 1}, y = {-1, 0} }
+      block{ x = {-1, offset}, y = {0, 1} }
+      block{ x = {offset, 1}, y = {0, 1} }
+      zone{ edge = 0.25 }
+      material{ "rock", density = 2600, young = 1e11, poisson = 0.25 }
+      assign{ material = "rock" }
+      joint_material{ "j", kn = 1e8, ks = 1e8, friction = 30 }
+      jassign{ material = "j" }
+      local lower_left, lower_right = gp_near(-0.5, -0.5).block, gp_near(0.5, -0.5).block
+      local upper_right = gp_near(0.5, 0.5).block
+      boundary{ side = "bottom", fix = "xy" }
+      boundary{ side = "left", fix = "x" }
+      boundary{ side = "right", fix = "x" }
+      boundary{ side = "top", stress = {0, -2e6, 0} }
+      solve{ ratio = 1e-7 }
+      local real, run_on = 0, 0
+      for c in contacts() do
+        if c.block == upper_right and math.abs(c.x - offset) < 1e-3 then
+          if c.other == lower_right then real = real + c.fn end
+          if c.other == lower_left then run_on = run_on + c.fn end
+        end
+      end
+      assert(real < -5e4, ("offset %g: the corner is not carried by the block under it (%g N/m)"):format(offset, real))
+      assert(run_on == 0, ("offset %g: the block beside pushes the corner with %g N/m (the one under it %g)"):format(offset, run_on, real))
+    end
+  )lua");
+}
+
 }  // namespace
 }  // namespace edem::test
