@@ -16,7 +16,7 @@
 // a face's share. A corner with one edge along the face (up to 10 deg into it) is such a tip with
 // the most: a corner pushed into the face of the block diagonally across a slipped joint crossing,
 // its half-edge along the joint carried by the block beside (detect.cpp, tip_wedge). A tip whose
-// edges all lead away from a corner of the face it is pressed into lies over that block only
+// edges all lead out past a sharp corner of the face it is pressed into lies over that block only
 // short of the corner; beyond it, it stands beside the block and takes nothing from the face's
 // line run on (contact_force.hpp).
 //
@@ -83,7 +83,7 @@ struct Contact {
   double wedge = 0.0;  // a tip's length per unit overlap (0: not a tip) [-]
   double limit = 0.0;  // overlap beyond which the watchdog stops the run: the gridpoint's reach [m]
   double t = 0.0;      // where the gridpoint projects on the edge, 0 at a, 1 at b
-  double share = 1.0;  // of `length` still over the edge's block (past a corner: less) [-]
+  double share = 1.0;  // of `length` still over the edge's block (near or past a corner: less) [-]
   double closure0 = 0.0;  // closure at zero gap: the in-situ prestress [m]
   double dilation = 0.0;  // opening from dilation [m]: closure = closure0 - gap + dilation
   double closure = 0.0;   // last closure, positive pressing [m]
@@ -94,9 +94,10 @@ struct Contact {
   double fx = 0.0, fy = 0.0;  // force on the gridpoint this cycle [N/m]
   ContactState state = ContactState::elastic;
   bool intact = false;    // still has its cohesion and tensile strength
-  // A tip whose edges all lead away from end a (b) of the edge, none back over the edge's block:
-  // past that corner nothing of it lies over the block (contact_force.hpp).
-  bool away_a = false, away_b = false;
+  // A tip whose edges all lead out past end a (b) of the edge, a sharp corner of its block, none
+  // back over the block: beyond that corner nothing of it lies over the block, and short of it
+  // only part (contact_force.hpp).
+  bool leads_past_a = false, leads_past_b = false;
 };
 
 struct ContactSet {

@@ -114,7 +114,7 @@ BlockGrid block_grid(const Mechanics& m, double slack) {
 struct Found {
   int other = -1, edge = -1;
   double length = 0.0, wedge = 0.0;
-  bool away_a = false, away_b = false;  // Contact::away_a, away_b
+  bool leads_past_a = false, leads_past_b = false;  // Contact::leads_past_a, leads_past_b
   double t = 0.0, gap = 0.0;
   Vec2 normal;
   Vec2 insitu_force;   // consistent nodal force of the in-situ traction, this side's half [N/m]
@@ -275,25 +275,43 @@ double tip_wedge(const Mechanics& m, size_t k, Vec2 p, Vec2 own_normal, const Fo
   return std::min(0.5 * (high - low), span / (4.0 * reach));
 }
 
-// For a tip (no half-edge over the block, only its wedge), whether its edges all lead away from
-// end a, and from end b, of the edge it is pressed into: none of them turns back along the face,
-// by more than kAlongFace, towards the rest of the edge. Past such an end the tip is beside the
-// block, not in it: at a slipped joint crossing, the corner of the block beyond the diagonal
-// block's corner, standing on the block beside it.
-void mark_leading_away(const Mechanics& m, size_t k, Vec2 p, Found& to) {
+// How far an edge of a tip may lean back, from the face's normal towards the rest of the face,
+// and still not reach back over it: sin 10 deg [-].
+constexpr double kLeansBack = 0.17364817766693033;
+// A corner of the face's block is sharp where its boundary turns by 60 deg or more (the cosine of
+// the turn at most this): beyond it a tip pressed in to d lies within the block for at most
+// 0.58 d. At a blunter corner the next edge runs on under the face's line, and the fade past a
+// corner (contact_force.hpp) stays.
+constexpr double kSharpTurn = 0.5;
+
+// For a tip (no half-edge over the block, only its wedge), whether its edges all lead out past
+// end a, and past end b, of the edge it is pressed into, where that end is a sharp convex corner:
+// none of them leans back towards the rest of the edge by more than kLeansBack. Beyond such an end
+// the tip is beside the block, not in it: at a slipped joint crossing, the corner of the block
+// beyond the diagonal block's corner, standing on the block beside it.
+void mark_leading_past(const Mechanics& m, size_t k, Vec2 p, Found& to) {
   const ContactBoundary& cb = m.faces;
   const int node = cb.nodes[k];
+  const ContactEdge& target = cb.edges[static_cast<size_t>(to.edge)];
+  const Vec2 a = at(m, target.a), b = at(m, target.b);
+  const auto sharp = [&](Vec2 from, Vec2 corner, Vec2 to_point) {
+    const Vec2 in = corner - from, out = to_point - corner;
+    return cross(in, out) > 0.0 && dot(in, out) <= kSharpTurn * norm(in) * norm(out);
+  };
+  const ContactEdge& prev = cb.edges[static_cast<size_t>(target.prev)];
+  const ContactEdge& next = cb.edges[static_cast<size_t>(target.next)];
   const Vec2 along{-to.normal.y, to.normal.x};  // from end a to end b
   bool back_to_a = false, back_to_b = false;
   for (int i = cb.edge_first[k]; i < cb.edge_first[k + 1]; ++i) {
     const ContactEdge& e = cb.edges[static_cast<size_t>(cb.node_edges[static_cast<size_t>(i)])];
     if (!m.block_live[static_cast<size_t>(e.block)]) continue;
     const Vec2 d = at(m, e.a == node ? e.b : e.a) - p;
-    back_to_a = back_to_a || dot(d, along) < -kAlongFace * norm(d);
-    back_to_b = back_to_b || dot(d, along) > kAlongFace * norm(d);
+    back_to_a = back_to_a || dot(d, along) < -kLeansBack * norm(d);
+    back_to_b = back_to_b || dot(d, along) > kLeansBack * norm(d);
   }
-  to.away_a = !back_to_b;  // past end a the block lies towards b
-  to.away_b = !back_to_a;
+  // Past end a the block lies towards b.
+  to.leads_past_a = !back_to_b && sharp(at(m, prev.a), a, b);
+  to.leads_past_b = !back_to_a && sharp(a, b, at(m, next.b));
 }
 
 // The edge of the contact of `node` with `block` in the list as it stands, or -1.
@@ -363,7 +381,7 @@ std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t
   }
   for (Found& f : found) {
     f.wedge = tip_wedge(m, k, p, own_normal, f, reach);
-    if (f.wedge > 0.0 && !(f.length > 1e-12 * reach)) mark_leading_away(m, k, p, f);
+    if (f.wedge > 0.0 && !(f.length > 1e-12 * reach)) mark_leading_past(m, k, p, f);
   }
   std::erase_if(found, [&](const Found& f) { return !(f.length > 1e-12 * reach) && !(f.wedge > 0.0); });
   return found;
@@ -543,8 +561,8 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
       c.edge = f.edge;
       c.length = f.length;
       c.wedge = f.wedge;
-      c.away_a = f.away_a;
-      c.away_b = f.away_b;
+      c.leads_past_a = f.leads_past_a;
+      c.leads_past_b = f.leads_past_b;
       c.t = f.t;
       c.limit = cb.reach[k];
       const ContactEdge& edge = cb.edges[static_cast<size_t>(f.edge)];

@@ -100,13 +100,13 @@ template <class Ar> void fields(Ar& ar, Contact& c) {
   ar("dilation", c.dilation); ar("closure", c.closure); ar("sn", c.sn); ar("fs", c.fs); ar("us", c.us);
   ar("slip", c.slip); ar("fx", c.fx); ar("fy", c.fy); ar("state", c.state); ar("intact", c.intact);
   ar("wedge", c.wedge);
-  ar("away_a", c.away_a);
-  ar("away_b", c.away_b);
+  ar("leads_past_a", c.leads_past_a);
+  ar("leads_past_b", c.leads_past_b);
 }
 // Schema-1 files written before tips had their own length lack it (and had no tips); those
-// written before session 33 lack away_a and away_b (their tips faded past a corner either way).
+// written before session 33 lack the leads_past flags (their tips faded past any corner).
 std::vector<const char*> later_members(const Contact*) {
-  return {"wedge", "away_a", "away_b"};
+  return {"wedge", "leads_past_a", "leads_past_b"};
 }
 template <class Ar> void fields(Ar& ar, ContactSet& s) {
   ar("list", s.list); ar("gather_first", s.gather_first); ar("gather", s.gather); ar("rows", s.rows);
