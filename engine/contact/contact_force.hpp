@@ -64,15 +64,15 @@ namespace edem {
   // A tip whose edges all lead out past a sharp corner of the edge (Contact::leads_past_a, b)
   // is over the block only short of it: pressed in by d, its overlap runs about 2 wedge d from its
   // apex towards the corner, deepest at the apex, and only the part before the corner presses on
-  // the block. Its share falls from 1, that far from the corner, to 0 at the corner, and is 0
-  // beyond; the fade above would have the face's line, run on past the corner, push the corner of
-  // a block that stands beside, on the block next to this one (a slipped joint crossing).
+  // the block: its share is that part of the overlap's area, 1 that far from the corner, 0 at the
+  // corner and beyond. The fade above would have the face's line, run on past the corner, push
+  // the corner of a block that stands beside, on the block next to this one (a slipped crossing).
   const bool past_a = c.leads_past_a && e.corner_a, past_b = c.leads_past_b && e.corner_b;
   if (past_a || past_b) [[unlikely]] {
     const double from_corner =
         std::min(past_a ? t_line * len : INFINITY, past_b ? (1.0 - t_line) * len : INFINITY);
-    const double reach = 2.0 * c.wedge * std::clamp(-gap, 0.0, c.limit);
-    const double beyond_corner = reach > from_corner ? 1.0 - from_corner / reach : 0.0;
+    const double chord = 2.0 * c.wedge * std::clamp(-gap, 0.0, c.limit);
+    const double beyond_corner = chord > from_corner ? 1.0 - from_corner / chord : 0.0;
     share = std::min(share, from_corner > 0.0 ? 1.0 - beyond_corner * beyond_corner : 0.0);
   }
   const double rvx = v[2 * n] - ((1.0 - t) * v[2 * a] + t * v[2 * b]);
