@@ -67,10 +67,9 @@ namespace edem {
   // the block: its share is that part of the overlap's area, 1 that far from the corner, 0 at the
   // corner and beyond. The fade above would have the face's line, run on past the corner, push
   // the corner of a block that stands beside, on the block next to this one (a slipped crossing).
-  const bool past_a = c.leads_past_a && e.corner_a, past_b = c.leads_past_b && e.corner_b;
-  if (past_a || past_b) [[unlikely]] {
-    const double from_corner =
-        std::min(past_a ? t_line * len : INFINITY, past_b ? (1.0 - t_line) * len : INFINITY);
+  if (c.leads_past_a || c.leads_past_b) [[unlikely]] {
+    const double from_corner = std::min(c.leads_past_a ? t_line * len : INFINITY,
+                                        c.leads_past_b ? (1.0 - t_line) * len : INFINITY);
     const double chord = 2.0 * c.wedge * std::clamp(-gap, 0.0, c.limit);
     const double beyond_corner = chord > from_corner ? 1.0 - from_corner / chord : 0.0;
     share = std::min(share, from_corner > 0.0 ? 1.0 - beyond_corner * beyond_corner : 0.0);
