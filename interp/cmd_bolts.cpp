@@ -144,11 +144,13 @@ const Command& bolt_command() {
       .help =
           "Lays a straight grouted bolt from its head (at the wall) to its end, as a line of "
           "segments with nodes; the ends are points as the model was drawn, like every point a "
-          "script gives, and the bolt is laid, stress-free, where that rock is now: axial force EA/L with tensile "
-          "and compressive yield, broken past the failure strain; the grout ties each node to "
-          "the rock around it along the bolt (bond stiffness and strength), and the node follows "
-          "the rock across the bolt, into the next block when it slides there. Every grouted "
-          "point must be in rock; a bolt whose ground is later excavated goes out of service.",
+          "script gives, and the bolt is laid, stress-free, where that rock is now: axial force "
+          "EA/L with tensile and compressive yield, broken past the failure strain; the grout "
+          "ties each node to the rock around it along the bolt (bond stiffness and strength), "
+          "and the node follows the rock across the bolt, into the next block when it slides "
+          "there. Every grouted point must be in rock. Where its rock is later excavated (a step "
+          "dug, a fallen block mucked out) the bolt is cut: the segments reaching that rock carry "
+          "nothing from then on, and the rest, grouted in the rock still there, stays in service.",
       .keys =
           {
               {"from", Type::point, "m", any_value, kRequired, "the head, at the wall"},
@@ -198,10 +200,12 @@ const Command& bolts_command() {
       .returns =
           "an iterator; each bolt is a table: id, material, stage (when it was laid), head, tip "
           "({x =, y =} as laid [m]), length [m], head_force (the pull on its head [N/m]), "
-          "max_force [N/m], broken and yielded (segment counts), removed (its ground was "
-          "excavated), segments (a list from the head: a, b (its ends now, {x =, y =} [m]), x, y (its midpoint), force (axial, "
+          "max_force [N/m], broken and yielded (segment counts), removed (none of its rock "
+          "is left: out of service), segments (a list from the head: a, b (its ends now, {x =, y "
+          "=} [m]), x, y (its midpoint), force (axial, "
           "tension positive [N/m]), strain [-], slip (grout, bolt against rock along it [m]), "
-          "plastic_slip [m], state (\"elastic\", \"yielded\", \"broken\", \"removed\"))",
+          "plastic_slip [m], state (\"elastic\", \"yielded\", \"broken\", \"removed\": an end's "
+          "rock is gone))",
       .usage = "for b in bolts() do print(b.id, b.max_force, b.broken) end",
   };
   return command;

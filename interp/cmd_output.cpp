@@ -45,27 +45,39 @@ const Command& output_command() {
   static const Command command{
       .name = "output",
       .help =
-          "Field output for ParaView: frames of the model in FILE's .h5 beside an XDMF index FILE (open it in "
-          "ParaView; its frames are a time series). Each frame holds, at the current positions: the zones in "
-          "place (stresses sxx, syy, sxy, szz, s1, s3, plastic state bits, material and block per zone; "
-          "displacement and velocity per gridpoint), the contacts as lines along their planes (fn, fs, un, us, "
-          "slip, state 0 bonded 1 elastic 2 slip 3 open, kind 0 joint 1 crack), the broken potential-crack "
-          "sections (mode 1 shear 2 tension, cycle, stage) and the bolt segments (force, strain, state 0 "
-          "elastic 1 yielded 2 broken 3 out of service). Without every or at: one frame now. The first frame "
+          "Field output for ParaView: frames of the model in FILE's .h5 beside an XDMF index FILE "
+          "(open it in "
+          "ParaView; its frames are a time series). Each frame holds, at the current positions: "
+          "the zones in "
+          "place (stresses sxx, syy, sxy, szz, s1, s3, plastic state bits, material and block per "
+          "zone; "
+          "displacement and velocity per gridpoint), the contacts as lines along their planes (fn, "
+          "fs, un, us, "
+          "slip, state 0 bonded 1 elastic 2 slip 3 open, kind 0 joint 1 crack), the broken "
+          "potential-crack "
+          "sections (mode 1 shear 2 tension, cycle, stage) and the bolt segments (force, strain, "
+          "state 0 "
+          "elastic 1 yielded 2 broken 3 removed: its rock gone). Without every or at: one frame "
+          "now. The first frame "
           "of a file in a run replaces what was there.",
       .keys =
           {
               {"file", Type::string, "", any_value, kRequired,
-               "the XDMF index, .xdmf or .xmf (the data go to the same name in .h5; under --out when relative)"},
+               "the XDMF index, .xdmf or .xmf (the data go to the same name in .h5; under --out "
+               "when relative)"},
               {"every", Type::integer, "cycles", ge(1), kOptional,
                "a frame after every n-th cycle from now on; returns a handle for cancel()", "none"},
               {"at", Type::string, "", any_value, kOptional,
-               "\"stage\": a frame before each excavate{} (the state the stage reached) and at the end of the "
-               "script", "none", output_times},
+               "\"stage\": a frame before each excavate{} (the state the stage reached) and at the "
+               "end of the "
+               "script",
+               "none", output_times},
           },
       .run = run_output,
       .returns = "with every: the callback's handle",
-      .usage = "output{ file = \"cavern.xdmf\", at = \"stage\" }\noutput{ file = \"run.xdmf\", every = 1000 }",
+      .usage =
+          "output{ file = \"cavern.xdmf\", at = \"stage\" }\noutput{ file = \"run.xdmf\", every = "
+          "1000 }",
   };
   return command;
 }

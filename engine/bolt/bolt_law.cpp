@@ -50,8 +50,8 @@ BoltLaw bolt_law(const BoltParams& p) {
 
 SegmentUpdate segment_law(const BoltLaw& law, double rest, double force, SegmentState state,
                           double elongation_old, double elongation_new) {
-  if (state == SegmentState::broken || elongation_new > law.failure_strain * rest)
-    return {0.0, SegmentState::broken};
+  if (!carries(state)) return {0.0, state};
+  if (elongation_new > law.failure_strain * rest) return {0.0, SegmentState::broken};
   SegmentUpdate out{force + law.ea / rest * (elongation_new - elongation_old), state};
   if (out.force > law.yield_tension) {
     out.force = law.yield_tension;
@@ -145,7 +145,7 @@ void update_segments(BoltSet& set) {
     const double length = norm(d);
     g.direction[s] = (1.0 / length) * d;
     const double elongation = length - g.rest[s];
-    if (g.state[s] == SegmentState::broken) {  // its force stays 0
+    if (!carries(g.state[s])) {  // its force stays 0
       g.elongation[s] = elongation;
       continue;
     }
@@ -210,7 +210,7 @@ std::vector<double> bolt_node_stiffness(const BoltSet& set) {
   std::vector<double> k(n.size());
   for (size_t i = 0; i < n.size(); ++i) k[i] = 2.0 * n.grout_stiffness[i];
   for (size_t s = 0; s < g.size(); ++s) {
-    if (g.state[s] == SegmentState::broken) continue;
+    if (!carries(g.state[s])) continue;
     const double twice = 2.0 * set.laws[index(g.material[s])].ea / g.rest[s];
     k[index(g.a[s])] += twice;
     k[index(g.b[s])] += twice;

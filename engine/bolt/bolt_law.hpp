@@ -70,7 +70,13 @@ enum class SegmentState : std::uint8_t {
   elastic,  // has never reached a yield force
   yielded,  // has reached one (and may be unloading elastically from it now)
   broken,   // strained past failure_strain: carries nothing from then on
+  removed,  // an end's rock was dug out or mucked away: carries nothing from then on
 };
+
+// Whether a segment in `state` can carry force.
+inline bool carries(SegmentState state) {
+  return state == SegmentState::elastic || state == SegmentState::yielded;
+}
 
 // --- The two laws, one segment or one grout spring at a time -----------------------------------
 

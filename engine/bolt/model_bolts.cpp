@@ -31,6 +31,7 @@ const char* segment_state(SegmentState state) {
   switch (state) {
     case SegmentState::yielded: return "yielded";
     case SegmentState::broken: return "broken";
+    case SegmentState::removed: return "removed";
     case SegmentState::elastic: break;
   }
   return "elastic";

@@ -10,7 +10,7 @@
 //             (0 joint, 1 crack)
 //   cracks    a line per broken potential-crack section: mode (1 shear, 2 tension), cycle, stage
 //   bolts     a line per bolt segment: axial force, strain, state (0 elastic, 1 yielded,
-//             2 broken, 3 out of service)
+//             2 broken, 3 removed: its rock gone)
 // The index is rewritten after every frame, so it is valid whenever the run stops.
 #pragma once
 

@@ -772,7 +772,7 @@ void gather_bolts(const Model& model, Scene& scene) {
   for (int b = 0; b < model.bolt_count(); ++b) {
     const BoltView bolt = model.bolt(b);
     for (const BoltSegmentView& seg : bolt.segments) {
-      const bool out = bolt.removed || seg.state == "broken";
+      const bool out = bolt.removed || seg.state == "broken" || seg.state == "removed";
       Polylines& lines = out ? scene.bolts_out : seg.force >= 0 ? scene.bolts_tension : scene.bolts_compression;
       lines.begin(seg.a);
       lines.add(seg.b);

@@ -138,7 +138,7 @@ struct BoltView {
   Vec2 head, end;           // as installed [m]
   double length = 0.0;      // [m]
   double head_force = 0.0;  // axial pull on the head [N per m of thickness]
-  bool removed = false;     // its ground was excavated: out of service
+  bool removed = false;     // none of its rock is left (excavated, mucked out): out of service
   std::vector<BoltSegmentView> segments;
 };
 

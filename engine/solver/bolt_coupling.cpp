@@ -187,8 +187,46 @@ void retire(Mechanics& m, int bolt) {
   }
   for (int s = set.bolt_first_segment[at(bolt)]; s < set.bolt_first_segment[at(bolt) + 1]; ++s) {
     set.segments.force[at(s)] = 0.0;
-    set.segments.state[at(s)] = SegmentState::broken;
+    set.segments.state[at(s)] = SegmentState::removed;
   }
+}
+
+// Where a bolt's rock is gone (dug out, or a fallen block mucked away), the nodes tied to it let
+// go and the segments that reach them carry nothing from then on; the rest of the bolt, grouted in
+// the rock still there, holds what it holds, as a bolt whose head block has fallen still pins the
+// blocks behind it. A bolt with no segment left to carry goes out of service whole.
+void cut_where_the_rock_is_gone(Mechanics& m, int bolt) {
+  BoltSet& set = m.bolts;
+  BoltHosts& h = m.bolt_hosts;
+  BoltNodes& n = set.nodes;
+  BoltSegments& g = set.segments;
+  const int head = set.bolt_first_node[at(bolt)];
+  std::vector<char> gone(at(set.bolt_first_node[at(bolt) + 1] - head), 0);
+  bool any = false;
+  for (int i = head; i < set.bolt_first_node[at(bolt) + 1]; ++i) {
+    if (h.zone[at(i)] < 0 || rock_zone(m, h.zone[at(i)])) continue;
+    gone[at(i - head)] = 1;
+    any = true;
+    h.zone[at(i)] = -1;
+    h.rate[at(i)] = 0.0;
+    n.grout_stiffness[at(i)] = n.grout_strength[at(i)] = n.grout_force[at(i)] = 0.0;
+    n.force[at(i)] = {};
+  }
+  if (!any) return;
+  bool carrying = false;
+  for (int s = set.bolt_first_segment[at(bolt)]; s < set.bolt_first_segment[at(bolt) + 1]; ++s) {
+    if (gone[at(g.a[at(s)] - head)] || gone[at(g.b[at(s)] - head)]) {
+      g.force[at(s)] = 0.0;
+      g.state[at(s)] = SegmentState::removed;
+    }
+    carrying = carrying || carries(g.state[at(s)]);
+  }
+  if (gone[0]) {  // nothing left to drive or to pull on at the head
+    h.drive[at(bolt)] = HeadDrive::none;
+    h.drive_value[at(bolt)] = 0.0;
+    h.head_force[at(bolt)] = 0.0;
+  }
+  if (!carrying) retire(m, bolt);
 }
 
 // The force on node `node` of bolt `b` along the direction it slides in (towards the bolt's end),
@@ -289,14 +327,8 @@ int install_bolt(Mechanics& m, const BoltLine& given, int material) {
 void tie_bolts(Mechanics& m) {
   BoltSet& set = m.bolts;
   BoltHosts& h = m.bolt_hosts;
-  for (int b = 0; b < set.bolts(); ++b) {
-    if (h.removed[at(b)]) continue;
-    for (int i = set.bolt_first_node[at(b)]; i < set.bolt_first_node[at(b) + 1]; ++i)
-      if (h.zone[at(i)] >= 0 && !rock_zone(m, h.zone[at(i)])) {
-        retire(m, b);
-        break;
-      }
-  }
+  for (int b = 0; b < set.bolts(); ++b)
+    if (!h.removed[at(b)]) cut_where_the_rock_is_gone(m, b);
   const size_t nodes = static_cast<size_t>(m.node_count);
   h.gather_first.assign(nodes + 1, 0);
   h.rows.assign(nodes, 0.0);

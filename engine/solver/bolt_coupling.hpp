@@ -22,10 +22,11 @@ namespace edem {
 // length) may lie outside. Throws naming the first node that does not, and then changes nothing.
 int install_bolt(Mechanics& m, const BoltLine& line, int material);
 
-// Takes out of service the bolts with a node in a zone that is no longer rock (excavated or
-// null), as structural elements in null zones go in UDEC; then ties the rest to the rock's
-// nodes (the gather lists and the grout's share of each node's stiffness). After `active` is
-// known (prepare()).
+// Cuts the bolts where their rock is gone (a host zone excavated or null: dug out, or a fallen
+// block mucked away): the nodes there let go and the segments reaching them carry nothing, the
+// rest of each bolt stays in service (a bolt with nothing left to carry goes out of service);
+// then ties the bolts to the rock's nodes (the gather lists and the grout's share of each node's
+// stiffness). After `active` is known (prepare()).
 void tie_bolts(Mechanics& m);
 
 // The bolt nodes' cycling masses: with a step of 1 and the rock's rule in static mode

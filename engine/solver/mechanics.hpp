@@ -124,7 +124,7 @@ struct BoltHosts {
   // Per bolt.
   std::vector<int> material;   // bolt material
   std::vector<int> stage;      // installed at this excavation stage
-  std::vector<char> removed;   // its ground was excavated: out of service
+  std::vector<char> removed;   // none of its rock is left: out of service
   std::vector<HeadDrive> drive;
   std::vector<double> drive_value;  // velocity [m/s], or force per metre of thickness [N/m]
   std::vector<double> head_force;   // axial pull on the head at the last cycle [N/m]

@@ -1,4 +1,4 @@
-// Bolts in a model: the same bits on any thread count, out of service in excavated ground,
+// Bolts in a model: the same bits on any thread count, cut where their rock is excavated,
 // re-hosted across a joint without a jump, untouched by reset{ displacement }, replayed with a
 // re-zone.
 #include <lua.hpp>
@@ -8,14 +8,14 @@
 namespace edem::test {
 namespace {
 
-// Two blocks under gravity, the joint between them dipping 45 deg: the lower-left one held by its
-// left side, the upper-right one resting on the joint (friction 25 deg, so it would slide) and
-// held by a bolt across it.
-const char* kBolted = R"(
+// A block cut by a joint dipping 45 deg (x + y = 3); the rock, the joint (friction 25 deg) and the
+// rebar, after any more cuts; the left side held, gravity on.
+const char* kJointedBlock = R"(
   model{ title = "bolted" }
   block{ x = {0, 4}, y = {0, 2} }
   crack{ from = {0.5, 2.5}, to = {3.5, -0.5} }
-  region{ name = "right", polygon = {{3, 0}, {4, 0}, {4, 2}, {1, 2}} }
+)";
+const char* kRockAndRebar = R"(
   zone{ edge = 0.25 }
   material{ "rock", density = 2500, young = 1e9, poisson = 0.25 }
   assign{ material = "rock" }
@@ -25,6 +25,13 @@ const char* kBolted = R"(
   boundary{ side = "left", fix = "xy" }
   bolt_material{ "rebar", young = 200e9, area = 4.9e-4, yield_tension = 0.156e6, failure_strain = 0.035,
                  bond_stiffness = 50e6, bond_strength = 0.2e6, spacing = 1.5 }
+)";
+
+// Two blocks under gravity: the lower-left one held by its left side, the upper-right one resting
+// on the joint (so it would slide) and held by a bolt across it.
+const std::string kBolted = std::string(kJointedBlock) + R"(
+  region{ name = "right", polygon = {{3, 0}, {4, 0}, {4, 2}, {1, 2}} }
+)" + kRockAndRebar + R"(
   bolt{ from = {0.5, 0.8}, to = {3.5, 1.4}, segments = 24, material = "rebar" }
 )";
 
@@ -111,23 +118,78 @@ TEST(Bolts, AreLaidWhereTheDrawnRockIsNow) {
   )lua");
 }
 
-TEST(Bolts, GoOutOfServiceInExcavatedGround) {
+TEST(Bolts, AreCutWhereTheirRockIsExcavatedAndGoOutOfServiceWhenNoneIsLeft) {
   Interpreter interpreter;
   interpreter.context().quiet = true;
-  expect_runs(interpreter, std::string(kBolted) + R"(
+  expect_runs(interpreter, std::string(kBolted) + R"lua(
+    bolt{ from = {3.3, 1.0}, to = {3.8, 1.5}, segments = 4, material = "rebar" }  -- all in the right block
     boundary{ side = "right", fix = "xy" }
     solve{ ratio = 1e-6 }
     excavate("right")
     cycle(10)
-    local b
-    for x in bolts() do b = x end
-    assert(b.removed, "the bolt's end was in the excavated region")
-    for _, s in ipairs(b.segments) do assert(s.force == 0 and s.state == "removed") end
-    assert(b.head_force == 0)
+    local across, inside
+    for x in bolts() do if x.id == 1 then across = x else inside = x end end
+    -- The bolt across the joint: its part in the right block is gone, its part in the left stays.
+    assert(not across.removed, "the bolt's head is still in the left block")
+    local cut, kept = 0, 0
+    for _, s in ipairs(across.segments) do
+      local beyond = s.b.x + s.b.y > 3 + 1e-6  -- its end past the joint x + y = 3, in the dug block
+      if beyond then
+        assert(s.force == 0 and s.state == "removed", ("segment at (%g, %g): %s, %g N/m"):format(s.x, s.y, s.state, s.force))
+        cut = cut + 1
+      else
+        assert(s.state ~= "removed", ("segment at (%g, %g) is in the left block"):format(s.x, s.y))
+        kept = kept + 1
+      end
+    end
+    assert(cut == 13 and kept == 11, ("%d segments cut, %d kept"):format(cut, kept))
+    -- The bolt wholly in the right block has nothing left.
+    assert(inside.removed, "all of the second bolt's rock was excavated")
+    for _, s in ipairs(inside.segments) do assert(s.force == 0 and s.state == "removed") end
+    assert(inside.head_force == 0)
     -- And a bolt cannot be laid there now.
     local ok, err = pcall(bolt, { from = {3.2, 1}, to = {3.8, 1}, segments = 2, material = "rebar" })
     assert(not ok and err:find("not in the rock"), err)
-  )");
+  )lua");
+}
+
+// A block resting on a joint that dips 45 deg (friction 25 deg) is held by a bolt whose head was in
+// the block beyond it, which is mucked out: the rest of the bolt, grouted in the block and in the
+// rock behind the joint, still holds it. With the block rigid and the joint slipping all along,
+// the bolt across the joint carries T = W (sin 45 - cos 45 tan 25) / (-u.s + (-u.n) tan 25), u the
+// bolt's axis towards its end, s the block's way down the joint, n the joint's normal into it.
+TEST(Bolts, StillHoldTheBlocksBehindWhenTheBlockAtTheirHeadIsMuckedOut) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, std::string(kJointedBlock) + R"lua(
+    crack{ from = {3.2, -0.5}, to = {3.2, 2.5} }  -- the bolt's head block, right of x = 3.2
+  )lua" + kRockAndRebar + R"lua(
+    local id = bolt{ from = {3.8, 1.4}, to = {0.8, 0.8}, segments = 24, material = "rebar" }
+    for b in blocks() do if b.x > 3.2 then excavate{ block = b.id } end end  -- mucked out
+    local r = solve{ ratio = 1e-6, max_cycles = 200000 }
+    assert(r.converged, ("not in equilibrium after %d cycles (ratio %g): nothing holds the block"):format(r.cycles, r.ratio))
+    local b
+    for x in bolts() do if x.id == id then b = x end end
+    assert(not b.removed, "the bolt was taken out of service whole")
+    -- The segment across the joint (its ends either side of x + y = 3).
+    local force
+    for _, s in ipairs(b.segments) do
+      if (s.a.x + s.a.y - 3) * (s.b.x + s.b.y - 3) < 0 then force = s.force end
+    end
+    local w = 2500 * 9.81 * 2.4  -- the block between the joint and x = 3.2: 2.4 m2
+    local u = { -3 / math.sqrt(9.36), -0.6 / math.sqrt(9.36) }
+    local r2 = math.sqrt(0.5)
+    local us, un, mu = u[1] * r2 - u[2] * r2, (u[1] + u[2]) * r2, math.tan(math.rad(25))
+    local expected = w * (r2 - r2 * mu) / (-us - un * mu)
+    print(("bolt across the joint: %.1f N/m, expected %.1f N/m (%.2f %%)"):format(force, expected,
+          100 * (force - expected) / expected))
+    assert(math.abs(force - expected) <= 0.02 * expected, "the bolt does not carry what the block needs")
+    local moved = 0
+    for g in gridpoints() do
+      if g.x + g.y > 3 + 1e-6 and g.x < 3.2 - 1e-6 then moved = math.max(moved, math.sqrt(g.ux ^ 2 + g.uy ^ 2)) end
+    end
+    assert(moved < 0.01, ("the block moved %.3g m"):format(moved))
+  )lua");
 }
 
 TEST(Bolts, ResetDisplacementLeavesTheirForces) {
