@@ -200,12 +200,11 @@ const Command& bolts_command() {
       .returns =
           "an iterator; each bolt is a table: id, material, stage (when it was laid), head, tip "
           "({x =, y =} as laid [m]), length [m], head_force (the pull on its head [N/m]), "
-          "max_force [N/m], broken and yielded (segment counts), removed (none of its rock "
-          "is left: out of service), segments (a list from the head: a, b (its ends now, {x =, y "
-          "=} [m]), x, y (its midpoint), force (axial, "
-          "tension positive [N/m]), strain [-], slip (grout, bolt against rock along it [m]), "
-          "plastic_slip [m], state (\"elastic\", \"yielded\", \"broken\", \"removed\": an end's "
-          "rock is gone))",
+          "max_force [N/m], broken and yielded (segment counts, of those still in the rock), "
+          "removed (none of its rock is left: out of service), segments (a list from the head: a, "
+          "b (its ends now, {x =, y =} [m]), x, y (its midpoint), force (axial, tension positive "
+          "[N/m]), strain [-], slip (grout, bolt against rock along it [m]), plastic_slip [m], "
+          "state (\"elastic\", \"yielded\", \"broken\", \"removed\": an end's rock is gone))",
       .usage = "for b in bolts() do print(b.id, b.max_force, b.broken) end",
   };
   return command;

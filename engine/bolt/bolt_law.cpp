@@ -140,6 +140,8 @@ void update_segments(BoltSet& set) {
   const BoltNodes& n = set.nodes;
   BoltSegments& g = set.segments;
   for (size_t s = 0; s < g.size(); ++s) {
+    // Its rock is gone and an end no longer moves: it keeps the direction it had when cut.
+    if (g.state[s] == SegmentState::removed) continue;
     const size_t a = index(g.a[s]), b = index(g.b[s]);
     const Vec2 d = (n.x[b] + n.u[b]) - (n.x[a] + n.u[a]);
     const double length = norm(d);
@@ -161,10 +163,20 @@ void update_axes(BoltSet& set) {
   BoltNodes& n = set.nodes;
   const BoltSegments& g = set.segments;
   std::fill(n.axis.begin(), n.axis.end(), Vec2{});
+  // From the segments not cut (a cut one's far end stays where it was, and the rock may move past
+  // it); a node with none left takes its cut segments' directions as they were when cut.
+  std::vector<char> kept(n.size(), 0);
   for (size_t s = 0; s < g.size(); ++s) {
-    const size_t a = index(g.a[s]), b = index(g.b[s]);
-    n.axis[a] = n.axis[a] + g.direction[s];
-    n.axis[b] = n.axis[b] + g.direction[s];
+    if (g.state[s] == SegmentState::removed) continue;
+    for (const size_t i : {index(g.a[s]), index(g.b[s])}) {
+      n.axis[i] = n.axis[i] + g.direction[s];
+      kept[i] = 1;
+    }
+  }
+  for (size_t s = 0; s < g.size(); ++s) {
+    if (g.state[s] != SegmentState::removed) continue;
+    for (const size_t i : {index(g.a[s]), index(g.b[s])})
+      if (!kept[i]) n.axis[i] = n.axis[i] + g.direction[s];
   }
   for (size_t i = 0; i < n.size(); ++i) n.axis[i] = (1.0 / norm(n.axis[i])) * n.axis[i];
 }

@@ -163,10 +163,12 @@ int add_bolt(BoltSet& set, const BoltLine& line);
 
 // --- One cycle's bolt stage --------------------------------------------------------------------
 
-// Segment directions, forces and states from the nodes' current positions (x + u).
+// Segment directions, forces and states from the nodes' current positions (x + u); a removed
+// segment keeps the direction it had.
 void update_segments(BoltSet& set);
 
-// Node axes: the mean direction of each node's (one or two) segments, as last updated.
+// Node axes: the mean direction of each node's (one or two) segments not removed, as last updated;
+// of its removed ones where it has no other.
 void update_axes(BoltSet& set);
 
 // Node axes (update_axes) and grout forces from the nodes' displacements and the

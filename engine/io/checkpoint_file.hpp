@@ -24,7 +24,8 @@ namespace edem {
 
 // The layout of what Model::save writes (model/checkpoint.cpp). Raise it with any change a
 // reader of the old layout would misread; a file of a higher schema is refused.
-inline constexpr int kCheckpointSchema = 1;
+// 2: bolt segments may be SegmentState::removed (cut where their rock was excavated).
+inline constexpr int kCheckpointSchema = 2;
 inline constexpr std::size_t kCheckpointHeaderBytes = 512;
 
 struct CheckpointHeader {

@@ -128,7 +128,7 @@ struct BoltSegmentView {
   double strain = 0.0;    // elongation / rest length [-]
   double slip = 0.0;      // bolt against rock along the axis, mean of its ends [m]
   double plastic_slip = 0.0;  // the grout's plastic part of it [m]
-  std::string state;      // "elastic", "yielded", "broken"
+  std::string state;          // "elastic", "yielded", "broken", "removed" (an end's rock is gone)
 };
 
 struct BoltView {

@@ -192,9 +192,10 @@ void retire(Mechanics& m, int bolt) {
 }
 
 // Where a bolt's rock is gone (dug out, or a fallen block mucked away), the nodes tied to it let
-// go and the segments that reach them carry nothing from then on; the rest of the bolt, grouted in
-// the rock still there, holds what it holds, as a bolt whose head block has fallen still pins the
-// blocks behind it. A bolt with no segment left to carry goes out of service whole.
+// go and the segments that reach them, broken or not, are removed with that rock: they carry
+// nothing, and keep the direction they had. The rest of the bolt, grouted in the rock still there,
+// holds what it holds, as a bolt whose head block has fallen still pins the blocks behind it. A
+// bolt with no node left in rock goes out of service whole.
 void cut_where_the_rock_is_gone(Mechanics& m, int bolt) {
   BoltSet& set = m.bolts;
   BoltHosts& h = m.bolt_hosts;
@@ -213,20 +214,21 @@ void cut_where_the_rock_is_gone(Mechanics& m, int bolt) {
     n.force[at(i)] = {};
   }
   if (!any) return;
-  bool carrying = false;
-  for (int s = set.bolt_first_segment[at(bolt)]; s < set.bolt_first_segment[at(bolt) + 1]; ++s) {
+  const int first_segment = set.bolt_first_segment[at(bolt)];
+  for (int s = first_segment; s < set.bolt_first_segment[at(bolt) + 1]; ++s)
     if (gone[at(g.a[at(s)] - head)] || gone[at(g.b[at(s)] - head)]) {
       g.force[at(s)] = 0.0;
       g.state[at(s)] = SegmentState::removed;
     }
-    carrying = carrying || carries(g.state[at(s)]);
-  }
-  if (gone[0]) {  // nothing left to drive or to pull on at the head
+  if (g.state[at(first_segment)] == SegmentState::removed) {  // the head is no longer on the bolt
     h.drive[at(bolt)] = HeadDrive::none;
     h.drive_value[at(bolt)] = 0.0;
     h.head_force[at(bolt)] = 0.0;
   }
-  if (!carrying) retire(m, bolt);
+  bool in_rock = false;
+  for (int i = head; i < set.bolt_first_node[at(bolt) + 1]; ++i)
+    in_rock = in_rock || h.zone[at(i)] >= 0;
+  if (!in_rock) retire(m, bolt);
 }
 
 // The force on node `node` of bolt `b` along the direction it slides in (towards the bolt's end),

@@ -147,6 +147,8 @@ TEST(Bolts, AreCutWhereTheirRockIsExcavatedAndGoOutOfServiceWhenNoneIsLeft) {
     assert(inside.removed, "all of the second bolt's rock was excavated")
     for _, s in ipairs(inside.segments) do assert(s.force == 0 and s.state == "removed") end
     assert(inside.head_force == 0)
+    local ok_head, why = pcall(bolt_head, { bolt = inside.id, velocity = 1e-3 })
+    assert(not ok_head and why:find("head was cut off with its rock", 1, true), why)
     -- And a bolt cannot be laid there now.
     local ok, err = pcall(bolt, { from = {3.2, 1}, to = {3.8, 1}, segments = 2, material = "rebar" })
     assert(not ok and err:find("not in the rock"), err)

@@ -295,6 +295,30 @@ TEST(BoltSet, RigidRotationStressesNothing) {
     EXPECT_NEAR(set.segments.force[s], kEA * 1e-4, 1e-6 * kEA * 1e-4) << s;
 }
 
+// A segment removed with its rock keeps its direction, and the nodes of the rest take their axes
+// from the segments still in the rock: the rock left, and the node with it, may move past where
+// the cut node stays, which would turn or zero a mean with the cut segment in it.
+TEST(BoltSet, RemovedSegmentsKeepTheirDirectionAndLeaveTheAxesToTheRest) {
+  BoltSet set;
+  set.laws.push_back(bolt_law(seed_params()));
+  add_bolt(set, {{0.0, 0.0}, {2.0, 0.0}, 2, 0.0, 0});  // nodes at x = 0, 1, 2
+  std::vector<Vec2> host(set.nodes.size());
+  bolt_forces(set, host);
+  set.segments.state[0] = SegmentState::removed;  // node 0's rock is gone; it stays at x = 0
+  set.segments.force[0] = 0.0;
+  for (const double shift : {-0.5, -1.0, -1.5}) {  // nodes 1 and 2 move left, past node 0
+    for (size_t i : {size_t{1}, size_t{2}}) host[i] = set.nodes.u[i] = Vec2{shift, 0.0};
+    bolt_forces(set, host);
+    EXPECT_EQ(set.segments.direction[0], (Vec2{1.0, 0.0})) << shift;
+    EXPECT_EQ(set.segments.force[0], 0.0) << shift;
+    EXPECT_EQ(set.segments.state[0], SegmentState::removed) << shift;
+    for (size_t i = 0; i < 3; ++i) {
+      EXPECT_NEAR(set.nodes.axis[i].x, 1.0, 1e-12) << shift << " node " << i;
+      EXPECT_NEAR(norm(set.nodes.force[i]), 0.0, 1e-9) << shift << " node " << i;
+    }
+  }
+}
+
 // Whatever the state, the forces on the bolt nodes and the grout's reactions on the rock add up to
 // zero (the bolt makes no force out of nothing), and the reaction lies along the axis.
 TEST(BoltSet, ForcesOnBoltAndRockBalance) {

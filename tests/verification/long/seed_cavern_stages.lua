@@ -216,7 +216,7 @@ local function run(bolted, release)
   end
   cancel(mucking)
   if bolted then  -- how the bolts fared
-    local yielded, broken, removed, largest, n, crossing = 0, 0, 0, 0, 0, 0
+    local yielded, broken, cut, removed, largest, n, crossing = 0, 0, 0, 0, 0, 0, 0
     for b in bolts() do
       n = n + 1
       local near = { x = b.head.x + 0.05 * (b.tip.x - b.head.x), y = b.head.y + 0.05 * (b.tip.y - b.head.y) }
@@ -224,11 +224,18 @@ local function run(bolted, release)
       if head and tip and head.block ~= tip.block then crossing = crossing + 1 end
       if b.yielded > 0 then yielded = yielded + 1 end
       if b.broken > 0 then broken = broken + 1 end
-      if b.removed then removed = removed + 1 end
+      if b.removed then
+        removed = removed + 1
+      else
+        for _, s in ipairs(b.segments) do
+          if s.state == "removed" then cut = cut + 1; break end
+        end
+      end
       largest = math.max(largest, b.max_force)
     end
-    print(("  bolts: %d laid, %d crossing a joint, %d with a yielded segment, %d broken, %d out of "
-           .. "service; largest force %.4g N/m"):format(n, crossing, yielded, broken, removed, largest))
+    print(("  bolts: %d laid, %d crossing a joint, %d with a yielded segment, %d broken, %d cut where "
+           .. "their rock was mucked out, %d out of service; largest force %.4g N/m"):format(n, crossing,
+           yielded, broken, cut, removed, largest))
   end
   out.settlement = settlement(crown)
   out.slipping, out.slipped, out.slip_near = slipping(c.outline)
