@@ -24,7 +24,7 @@ int install_bolt(Mechanics& m, const BoltLine& line, int material);
 
 // Cuts the bolts where their rock is gone (a host zone excavated or null: dug out, or a fallen
 // block mucked away): the nodes there let go and the segments reaching them carry nothing, the
-// rest of each bolt stays in service (a bolt with nothing left to carry goes out of service);
+// rest of each bolt stays in service (a bolt with no node left in rock goes out of service);
 // then ties the bolts to the rock's nodes (the gather lists and the grout's share of each node's
 // stiffness). After `active` is known (prepare()).
 void tie_bolts(Mechanics& m);
