@@ -164,19 +164,15 @@ void update_axes(BoltSet& set) {
   const BoltSegments& g = set.segments;
   std::fill(n.axis.begin(), n.axis.end(), Vec2{});
   // From the segments not cut (a cut one's far end stays where it was, and the rock may move past
-  // it); a node with none left takes its cut segments' directions as they were when cut.
-  std::vector<char> kept(n.size(), 0);
+  // it); a node with none left, which carries nothing, takes a cut one's direction as it was.
   for (size_t s = 0; s < g.size(); ++s) {
     if (g.state[s] == SegmentState::removed) continue;
-    for (const size_t i : {index(g.a[s]), index(g.b[s])}) {
-      n.axis[i] = n.axis[i] + g.direction[s];
-      kept[i] = 1;
-    }
+    for (const size_t i : {index(g.a[s]), index(g.b[s])}) n.axis[i] = n.axis[i] + g.direction[s];
   }
   for (size_t s = 0; s < g.size(); ++s) {
     if (g.state[s] != SegmentState::removed) continue;
     for (const size_t i : {index(g.a[s]), index(g.b[s])})
-      if (!kept[i]) n.axis[i] = n.axis[i] + g.direction[s];
+      if (n.axis[i] == Vec2{}) n.axis[i] = g.direction[s];
   }
   for (size_t i = 0; i < n.size(); ++i) n.axis[i] = (1.0 / norm(n.axis[i])) * n.axis[i];
 }

@@ -168,7 +168,7 @@ int add_bolt(BoltSet& set, const BoltLine& line);
 void update_segments(BoltSet& set);
 
 // Node axes: the mean direction of each node's (one or two) segments not removed, as last updated;
-// of its removed ones where it has no other.
+// a removed one's where it has no other.
 void update_axes(BoltSet& set);
 
 // Node axes (update_axes) and grout forces from the nodes' displacements and the
