@@ -113,9 +113,7 @@ void Model::bolt_head(const BoltHeadDef& def) {
     fail("the head's velocity or force must be finite");
   BoltHosts& h = m.bolt_hosts;
   const size_t b = at(def.bolt);
-  const bool head_cut =
-      m.bolts.segments.state[at(m.bolts.bolt_first_segment[b])] == SegmentState::removed;
-  if ((velocity || force) && (h.removed[b] || head_cut))
+  if ((velocity || force) && !head_on_bolt(m, def.bolt))
     fail("bolt {}'s head was cut off with its rock (excavated): there is no head to drive",
          def.bolt + 1);
   h.drive[b] = velocity ? HeadDrive::velocity : force ? HeadDrive::force : HeadDrive::none;

@@ -326,6 +326,16 @@ int install_bolt(Mechanics& m, const BoltLine& given, int material) {
   return bolt;
 }
 
+bool head_on_bolt(const Mechanics& m, int bolt) {
+  const BoltSet& set = m.bolts;
+  const BoltHosts& h = m.bolt_hosts;
+  const int first = set.bolt_first_segment[at(bolt)];
+  if (h.removed[at(bolt)] || set.segments.state[at(first)] == SegmentState::removed) return false;
+  for (const int node : {set.segments.a[at(first)], set.segments.b[at(first)]})
+    if (h.zone[at(node)] >= 0 && !rock_zone(m, h.zone[at(node)])) return false;
+  return true;
+}
+
 void tie_bolts(Mechanics& m) {
   BoltSet& set = m.bolts;
   BoltHosts& h = m.bolt_hosts;

@@ -29,6 +29,11 @@ int install_bolt(Mechanics& m, const BoltLine& line, int material);
 // stiffness). After `active` is known (prepare()).
 void tie_bolts(Mechanics& m);
 
+// Whether bolt `bolt`'s head is still on it: the bolt in service and its first segment neither cut
+// nor reaching a node whose rock is gone since the cuts were last made (an excavate{} before the
+// next cycle).
+bool head_on_bolt(const Mechanics& m, int bolt);
+
 // The bolt nodes' cycling masses: with a step of 1 and the rock's rule in static mode
 // (`amplification`, `fraction`), their real masses in dynamic mode. Returns the bolts' critical
 // step with real masses [s] (infinity without bolts).

@@ -155,6 +155,28 @@ TEST(Bolts, AreCutWhereTheirRockIsExcavatedAndGoOutOfServiceWhenNoneIsLeft) {
   )lua");
 }
 
+// The cut is applied when the model is next prepared, but a head dug out by an excavate{} just
+// before is gone already: a drive given to it then is refused too, not dropped at the next cycle.
+TEST(Bolts, RefuseADriveOnAHeadDugOutBeforeAnyCycle) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, std::string(kBolted) + R"lua(
+    local inside = bolt{ from = {3.3, 1.0}, to = {3.8, 1.5}, segments = 4, material = "rebar" }
+    boundary{ side = "right", fix = "xy" }
+    solve{ ratio = 1e-6 }
+    excavate("right")
+    local ok, why = pcall(bolt_head, { bolt = inside, velocity = 1e-3 })
+    assert(not ok, "a drive on a head dug out was accepted")
+    assert(why:find("head was cut off with its rock", 1, true), why)
+    -- The bolt across the joint keeps its head in the left block: it can still be driven.
+    bolt_head{ bolt = 1, force = 1e3 }
+    cycle(10)
+    local across
+    for x in bolts() do if x.id == 1 then across = x end end
+    assert(across.head_force ~= 0, "the drive on the head left in the rock was dropped")
+  )lua");
+}
+
 // A block resting on a joint that dips 45 deg (friction 25 deg) is held by a bolt whose head was in
 // the block beyond it, which is mucked out: the rest of the bolt, grouted in the block and in the
 // rock behind the joint, still holds it. With the block rigid and the joint slipping all along,
