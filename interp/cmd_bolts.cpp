@@ -176,7 +176,8 @@ const Command& bolt_head_command() {
       .help =
           "Holds a bolt's head: a jack pulling it out of the hole at a velocity, or a constant "
           "pull (a pretension, or a plate's load); with neither, the head is free again. The "
-          "pull on the head is the bolt's head_force in bolts().",
+          "pull on the head is the bolt's head_force in bolts(). A head whose rock is excavated, "
+          "even by an excavate{} since the last cycle, is cut off: a drive on it is refused.",
       .keys =
           {
               {"bolt", Type::integer, "", ge(1), kRequired, "the bolt's id, as bolt{} returned it"},
