@@ -268,8 +268,7 @@ const Command& crackseed_command() {
           "or tension (judge{}); the section then becomes a crack with a joint material. "
           "Each zone edge along a cut is a section, judged on its own. With auto = a prepass{} "
           "result it places them itself, where that prepass found the rock yielding: the yielded "
-          "zones grouped by principal direction, each group grown from the zone nearest the "
-          "opening not yet in one, two sets in each group, at +-(45 + phi/2) from "
+          "zones grouped by principal direction, two sets in each group, at +-(45 + phi/2) from "
           "the major principal plane where shear governs, along and across it where tension "
           "does, in more than half the group's area (crack/auto_placement.hpp tells how).",
       .keys =

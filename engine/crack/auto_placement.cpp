@@ -5,7 +5,6 @@
 #include <map>
 #include <numbers>
 #include <set>
-#include <tuple>
 #include <utility>
 
 namespace edem {
@@ -131,10 +130,7 @@ std::vector<CrackRegion> group_yielded(const Mesh& mesh, const std::vector<Yield
                                        double similar, bool by_mode) {
   std::vector<size_t> order(zones.size());
   for (size_t k = 0; k < order.size(); ++k) order[k] = k;
-  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-    return std::tie(zones[a].from_opening, zones[a].zone) <
-           std::tie(zones[b].from_opening, zones[b].zone);
-  });
+  std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return zones[a].zone < zones[b].zone; });
   const auto neighbours = touching(mesh, zones);
   std::vector<char> taken(zones.size(), 0);
   std::vector<CrackRegion> regions;

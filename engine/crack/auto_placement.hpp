@@ -4,13 +4,9 @@
 //
 // Grouping: a yielded zone is a tension zone if it yielded in tension at any stage, else a shear
 // zone. Zones touch when they share a corner's place (across a joint too). A region grows from the
-// zone nearest the opening not yet taken (the lowest-numbered where two are as near, or where the
-// prepass dug nothing), through touching zones whose most compressive principal direction is
-// within `similar` degrees of that first zone's (axes: 0 and 180 are the same), until none is left
-// to add; then the next region starts. Starting at the wall, where the rock yields first, makes
-// the regions the same however the mesher numbered the zones (from the lowest-numbered zone, as
-// until 2026-11-24, Case 1's mirror-image joints got half again as much potential crack beside one
-// wall as beside the other: scripts/paper/README.md). As the seed has it (its §2.2), regions are
+// lowest-numbered zone not yet taken, through touching zones whose most compressive principal
+// direction is within `similar` degrees of that first zone's (axes: 0 and 180 are the same), until
+// none is left to add; then the next region starts. As the seed has it (its §2.2), regions are
 // those of one principal direction, and each is a tension region where tension is the principal
 // reason: where its tension zones cover more than half its area; else a shear region. With
 // `by_mode`, a region also keeps to the mode of its first zone (EDEM's grouping until 2026-11-23):
@@ -43,7 +39,6 @@ struct YieldedZone {
   bool tension = false;   // tension governs (it yielded in tension), else shear
   double angle = 0.0;     // direction of the most compressive principal stress, from +x [deg]
   double friction = 0.0;  // friction angle of the rock that judges it [deg]
-  double from_opening = 0.0;  // distance to the nearest excavated zone: regions start nearest [m]
 };
 
 using Cut = std::array<Vec2, 2>;
@@ -62,7 +57,7 @@ struct CrackRegion {
 // Difference between two directions taken as axes, in [0, 90] [deg].
 double axis_difference(double a, double b);
 
-// The regions of the yielded zones (see above), in the order they were started.
+// The regions of the yielded zones (see above), in order of their first zone.
 std::vector<CrackRegion> group_yielded(const Mesh& mesh, const std::vector<YieldedZone>& zones,
                                        double similar, bool by_mode = false);
 

@@ -64,21 +64,13 @@ std::vector<CrackRegion> Model::add_auto_crackseed(const AutoCrackSeedDef& def) 
   std::set<int> inside;
   if (!def.region.empty())
     for (int z : zones_in(def.region)) inside.insert(z);
-  std::vector<Vec2> opening;
-  for (const PrepassZone& z : def.zones)
-    if (z.excavated) opening.push_back(z.centroid);
   std::vector<YieldedZone> yielded;
   for (const PrepassZone& z : def.zones) {
     if (z.excavated || !(z.shear || z.tension)) continue;
     if (!def.region.empty() && !inside.count(z.zone)) continue;
     const int material = strength >= 0 ? strength : m.zone_material[static_cast<size_t>(z.zone)];
     const double friction = material >= 0 ? m.materials[static_cast<size_t>(material)].friction : 0.0;
-    double from_opening = 0.0;
-    if (!opening.empty()) {
-      from_opening = INFINITY;
-      for (const Vec2& p : opening) from_opening = std::min(from_opening, norm(p - z.centroid));
-    }
-    yielded.push_back({z.zone, z.tension, z.angle, friction, from_opening});
+    yielded.push_back({z.zone, z.tension, z.angle, friction});
   }
   std::vector<CrackRegion> regions =
       place_cracks(mesh_, yielded, spacing, def.similar, def.origin, def.by_mode);

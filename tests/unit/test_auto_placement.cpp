@@ -99,35 +99,6 @@ TEST(AutoPlacement, GroupsByDirectionWithTheModeOfMostOfTheArea) {
   EXPECT_FALSE(regions[1].tension);
 }
 
-// A region starts from the yielded zone nearest the opening not yet taken, so the regions are the
-// same however the mesher numbered the zones. A strip of 12 zones whose direction turns by 10 deg
-// from one to the next, the opening beyond its right end: the first region is the 45 deg either
-// side of the zone at that end, not of zone 0.
-TEST(AutoPlacement, RegionsStartNearestTheOpeningWhateverTheNumbering) {
-  const Mesh mesh = grid(6, 1);
-  Mesh reversed = mesh;  // the same zones numbered from the other end
-  std::reverse(reversed.zone_gp.begin(), reversed.zone_gp.end());
-  std::vector<YieldedZone> zones, renumbered;
-  for (int k = 0; k < 12; ++k) {
-    const double angle = 10.0 * k, from_opening = 12.0 - 0.5 * (k + 1);
-    zones.push_back({k, false, angle, 30.0, from_opening});
-    renumbered.push_back({11 - k, false, angle, 30.0, from_opening});
-  }
-  const auto regions = group_yielded(mesh, zones, 45.0);
-  ASSERT_EQ(regions.size(), 3u);
-  EXPECT_EQ(regions[0].zones, (std::vector<int>{7, 8, 9, 10, 11}));  // 110 deg +-45
-  EXPECT_EQ(regions[1].zones, (std::vector<int>{2, 3, 4, 5, 6}));    // 60 deg +-45
-  EXPECT_EQ(regions[2].zones, (std::vector<int>{0, 1}));
-  const auto again = group_yielded(reversed, renumbered, 45.0);
-  ASSERT_EQ(again.size(), regions.size());
-  for (size_t r = 0; r < regions.size(); ++r) {
-    std::vector<int> back;
-    for (int z : again[r].zones) back.push_back(11 - z);
-    std::sort(back.begin(), back.end());
-    EXPECT_EQ(back, regions[r].zones) << "region " << r;
-  }
-}
-
 // With by_mode, a zone of the other mode starts its own region too.
 TEST(AutoPlacement, GroupsByModeAndDirection) {
   const Mesh mesh = grid(3, 1);
