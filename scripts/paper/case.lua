@@ -16,7 +16,8 @@
 --             no longer depends on it (scripts/paper/README.md, "The release rate": since session
 --             26 Case 3 at 158 m ends within the spread of runs 10 cycles apart from 5,000 cycles
 --             up, but the whole study at 10,000 caved in more often than at 20,000, and under
---             local damping (session 30) ended single runs beyond the spread of 20,000's)
+--             local damping (session 30) ended single runs beyond the spread of 20,000's; in
+--             session 35 at 10,000 Case 3 at 262 m ended 5 % below in cracks and 6 % in crown)
 --   release_offset  cycles added to release [0]: scripts/paper/study.sh --members runs each case
 --             with releases a few cycles apart, to show the spread numerical detail gives
 --   similar   deg: crackseed{ auto }'s grouping angle [45]
