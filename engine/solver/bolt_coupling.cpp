@@ -21,6 +21,13 @@ bool rock_zone(const Mechanics& m, int z) {
   return material >= 0 && m.params[at(material)].model != MaterialModel::null && m.zone_excavated[at(z)] == 0;
 }
 
+// A bolt node tied to a zone that is no longer rock (its rock excavated or mucked out since it was
+// tied; an untied node, on the free length outside the rock, has nothing to lose).
+bool rock_gone_at(const Mechanics& m, int node) {
+  const int z = m.bolt_hosts.zone[at(node)];
+  return z >= 0 && !rock_zone(m, z);
+}
+
 // Where points are looked for: as the model was drawn (the mesh's positions, the frame of every
 // point a script gives: regions, gp_near, zone_at, bolt{}'s ends), or as the rock stands now.
 enum class Frame { drawn, now };
@@ -205,7 +212,7 @@ void cut_where_the_rock_is_gone(Mechanics& m, int bolt) {
   std::vector<char> gone(at(set.bolt_first_node[at(bolt) + 1] - head), 0);
   bool any = false;
   for (int i = head; i < set.bolt_first_node[at(bolt) + 1]; ++i) {
-    if (h.zone[at(i)] < 0 || rock_zone(m, h.zone[at(i)])) continue;
+    if (!rock_gone_at(m, i)) continue;
     gone[at(i - head)] = 1;
     any = true;
     h.zone[at(i)] = -1;
@@ -331,9 +338,7 @@ bool head_on_bolt(const Mechanics& m, int bolt) {
   const BoltHosts& h = m.bolt_hosts;
   const int first = set.bolt_first_segment[at(bolt)];
   if (h.removed[at(bolt)] || set.segments.state[at(first)] == SegmentState::removed) return false;
-  for (const int node : {set.segments.a[at(first)], set.segments.b[at(first)]})
-    if (h.zone[at(node)] >= 0 && !rock_zone(m, h.zone[at(node)])) return false;
-  return true;
+  return !rock_gone_at(m, set.segments.a[at(first)]) && !rock_gone_at(m, set.segments.b[at(first)]);
 }
 
 void tie_bolts(Mechanics& m) {
