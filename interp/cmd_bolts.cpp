@@ -69,7 +69,7 @@ void push_bolt(lua_State* L, const Model& model, size_t index) {
   lua_createtable(L, static_cast<int>(b.segments.size()), 0);
   for (size_t i = 0; i < b.segments.size(); ++i) {
     const BoltSegmentView& s = b.segments[i];
-    lua_createtable(L, 0, 8);
+    lua_createtable(L, 0, 9);
     set_field(L, "x", 0.5 * (s.a.x + s.b.x));
     set_field(L, "y", 0.5 * (s.a.y + s.b.y));
     push_point(L, s.a);
@@ -81,9 +81,11 @@ void push_bolt(lua_State* L, const Model& model, size_t index) {
     set_field(L, "slip", s.slip);
     set_field(L, "plastic_slip", s.plastic_slip);
     set_field(L, "state", s.state);
+    lua_pushboolean(L, s.broke);
+    lua_setfield(L, -2, "broke");
     lua_rawseti(L, -2, static_cast<lua_Integer>(i) + 1);
     largest = std::max(largest, s.force);
-    broken += s.state == "broken";
+    broken += s.broke;
     yielded += s.state == "yielded";
   }
   lua_setfield(L, -2, "segments");
@@ -201,11 +203,13 @@ const Command& bolts_command() {
       .returns =
           "an iterator; each bolt is a table: id, material, stage (when it was laid), head, tip "
           "({x =, y =} as laid [m]), length [m], head_force (the pull on its head [N/m]), "
-          "max_force [N/m], broken and yielded (segment counts, of those still in the rock), "
-          "removed (none of its rock is left: out of service), segments (a list from the head: a, "
-          "b (its ends now, {x =, y =} [m]), x, y (its midpoint), force (axial, tension positive "
-          "[N/m]), strain [-], slip (grout, bolt against rock along it [m]), plastic_slip [m], "
-          "state (\"elastic\", \"yielded\", \"broken\", \"removed\": an end's rock is gone))",
+          "max_force [N/m], broken (segments that have broken, also those cut away with their rock "
+          "since), yielded (segments yielded now, of those still in the rock), removed (none of "
+          "its rock is left: out of service), segments (a list from the head: a, b (its ends now, "
+          "{x =, y =} [m]), x, y (its midpoint), force (axial, tension positive [N/m]), strain "
+          "[-], slip (grout, bolt against rock along it [m]), plastic_slip [m], state "
+          "(\"elastic\", \"yielded\", \"broken\", \"removed\": an end's rock is gone), broke "
+          "(true once it has broken, whatever its state now)))",
       .usage = "for b in bolts() do print(b.id, b.max_force, b.broken) end",
   };
   return command;

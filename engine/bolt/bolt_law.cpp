@@ -129,6 +129,7 @@ int add_bolt(BoltSet& set, const BoltLine& line) {
       g.direction.push_back(axis);
       g.force.push_back(0.0);
       g.state.push_back(SegmentState::elastic);
+      g.broke.push_back(0);
     }
   }
   set.bolt_first_node.push_back(static_cast<int>(n.size()));
@@ -155,6 +156,7 @@ void update_segments(BoltSet& set) {
                                          g.state[s], g.elongation[s], elongation);
     g.force[s] = up.force;
     g.state[s] = up.state;
+    if (up.state == SegmentState::broken) g.broke[s] = 1;
     g.elongation[s] = elongation;
   }
 }

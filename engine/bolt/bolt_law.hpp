@@ -132,6 +132,9 @@ struct BoltSegments {
   std::vector<Vec2> direction;     // unit vector from a to b, as last updated
   std::vector<double> force;       // axial, tension positive [N/m]
   std::vector<SegmentState> state;
+  // 1 once it has broken, kept when its rock is cut away (state removed), so a count of broken
+  // segments does not lose those that fell with a mucked-out block.
+  std::vector<std::uint8_t> broke;
 
   size_t size() const { return a.size(); }
 };

@@ -152,6 +152,7 @@ BoltView Model::bolt(int id) const {
     seg.slip = 0.5 * (grout_slip(n, a) + grout_slip(n, e));
     seg.plastic_slip = 0.5 * (n.grout_slip[a] + n.grout_slip[e]);
     seg.state = view.removed ? "removed" : segment_state(set.segments.state[i]);
+    seg.broke = set.segments.broke[i] != 0;
     view.segments.push_back(seg);
   }
   return view;

@@ -155,6 +155,16 @@ template <class Ar> void fields(Ar& ar, BoltNodes& n) {
 template <class Ar> void fields(Ar& ar, BoltSegments& s) {
   ar("a", s.a); ar("b", s.b); ar("material", s.material); ar("rest", s.rest); ar("elongation", s.elongation);
   ar("direction", s.direction); ar("force", s.force); ar("state", s.state);
+  // Files older than it have none: then a segment has broken if its state says so (one broken and
+  // cut away since, which those files forgot, cannot be told).
+  std::optional<std::vector<std::uint8_t>> broke = s.broke;
+  ar("broke", broke);
+  if (broke) {
+    s.broke = std::move(*broke);
+  } else {
+    s.broke.clear();
+    for (SegmentState state : s.state) s.broke.push_back(state == SegmentState::broken ? 1 : 0);
+  }
 }
 template <class Ar> void fields(Ar& ar, BoltSet& b) {
   ar("laws", b.laws); ar("nodes", b.nodes); ar("segments", b.segments); ar("bolt_first_node", b.bolt_first_node);
@@ -477,6 +487,7 @@ void check_sizes(const Mechanics& m, const Mesh& mesh) {
   expect(m.gp_node.size(), static_cast<size_t>(mesh.gp_count()), "gp_node");
   for (const auto* v : {&m.position, &m.u, &m.v, &m.origin, &m.force, &m.load}) expect(v->size(), 2 * nodes, "node vector");
   expect(m.fix.size(), nodes, "fix");
+  expect(m.bolts.segments.broke.size(), m.bolts.segments.size(), "bolt segments' broke");
   expect(m.node_block.size(), nodes, "node_block");
   if (!m.dirty) {
     expect(m.geometry.size(), zones, "geometry");

@@ -129,6 +129,7 @@ struct BoltSegmentView {
   double slip = 0.0;      // bolt against rock along the axis, mean of its ends [m]
   double plastic_slip = 0.0;  // the grout's plastic part of it [m]
   std::string state;          // "elastic", "yielded", "broken", "removed" (an end's rock is gone)
+  bool broke = false;         // it has broken, also if it was removed with its rock since
 };
 
 struct BoltView {

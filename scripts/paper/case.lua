@@ -279,8 +279,9 @@ if BOLTS ~= "none" then
   bolt_material{ "bolt", young = 190e9, area = 446e-6, density = 6083, yield_tension = BOLT_YIELD,
                  failure_strain = 0.035, bond_stiffness = 50e6, bond_strength = 0.2e6, spacing = BOLT_SPACING }
 end
--- How hard the bolts work: those with a broken segment, and those whose most loaded segment
--- carries half the yield force or more now (bolts() gives forces per metre out of the plane).
+-- How hard the bolts work: those with a segment that broke (also one cut away with its rock since),
+-- and those whose most loaded segment carries half the yield force or more now (bolts() gives
+-- forces per metre out of the plane).
 local function bolt_loads()
   local broken, loaded = 0, 0
   for b in bolts() do

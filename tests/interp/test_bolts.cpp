@@ -155,6 +155,50 @@ TEST(Bolts, AreCutWhereTheirRockIsExcavatedAndGoOutOfServiceWhenNoneIsLeft) {
   )lua");
 }
 
+// A segment that broke and was then cut away with its rock (a block mucked out) still counts in
+// the bolt's broken, and says it broke; a checkpoint keeps that.
+TEST(Bolts, CountASegmentThatBrokeAfterItIsCutAwayWithItsRock) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, std::string(kBolted) + R"lua(
+    -- The right block pulled off until the bolt across the joint breaks there, then held.
+    local function the_bolt() for b in bolts() do return b end end
+    boundary{ side = "right", xvel = 2e-6 }
+    local broken_at
+    for batch = 1, 40 do
+      cycle(500)
+      for i, s in ipairs(the_bolt().segments) do if s.state == "broken" then broken_at = i end end
+      if broken_at then break end
+    end
+    assert(broken_at, "the bolt did not break")
+    boundary{ side = "right", fix = "xy" }
+    cycle(10)
+    local before = the_bolt()
+    assert(before.broken >= 1 and before.segments[broken_at].broke, "a broken segment counts as broken")
+    for i, s in ipairs(before.segments) do
+      assert(s.broke == (s.state == "broken"), ("segment %d: %s, broke %s"):format(i, s.state, tostring(s.broke)))
+    end
+    -- The rock beyond the joint dug out: the broken segment reaches it and is cut away with it,
+    -- but it broke all the same.
+    excavate("right")
+    cycle(10)
+    local function check(b, when)
+      local s = b.segments[broken_at]
+      assert(s.state == "removed" and s.broke, ("%s: the broken segment is %s, broke %s"):format(when, s.state,
+             tostring(s.broke)))
+      assert(b.broken == before.broken, ("%s: broken %d, %d before the cut"):format(when, b.broken, before.broken))
+      assert(not b.segments[1].broke, when .. ": the head's segment never broke")
+    end
+    check(the_bolt(), "after the cut")
+    local file = os.tmpname()
+    save(file .. ".h5")
+    restore(file .. ".h5")
+    os.remove(file .. ".h5")
+    os.remove(file)
+    check(the_bolt(), "restored")
+  )lua");
+}
+
 // The cut is applied when the model is next prepared, but a head dug out by an excavate{} just
 // before is gone already: a drive given to it then is refused too, not dropped at the next cycle.
 TEST(Bolts, RefuseADriveOnAHeadDugOutBeforeAnyCycle) {
