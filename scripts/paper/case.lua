@@ -221,8 +221,10 @@ local crown = rock_gridpoint_near(c.crown[1], c.crown[2])
 -- coming down, which 5 m bolts cannot hold.
 local above_crown = rock_gridpoint_near(c.crown[1], c.crown[2] + 5)
 -- Each side wall's points at the springline (y = 0) and halfway down the benches (y = -12).
-local left_wall = { rock_gridpoint_near(-12, 0).id, rock_gridpoint_near(-12, -12).id }
-local right_wall = { rock_gridpoint_near(12, 0).id, rock_gridpoint_near(12, -12).id }
+local left_points = { rock_gridpoint_near(-12, 0), rock_gridpoint_near(-12, -12) }
+local right_points = { rock_gridpoint_near(12, 0), rock_gridpoint_near(12, -12) }
+local left_wall = { left_points[1].id, left_points[2].id }
+local right_wall = { right_points[1].id, right_points[2].id }
 local function ux_of(ids)
   local want, sum = {}, 0
   for _, id in ipairs(ids) do want[id] = true end
@@ -239,6 +241,7 @@ end
 -- Mucking out: blocks whose gridpoints have moved more than 1 m; with muck = "opening" only those
 -- of them whose centre has moved into the opening dug so far.
 local fallen = 0
+local mucked = {}   -- block id -> true: the blocks mucked out so far
 local step_now = 0  -- the step being excavated
 local function in_opening(x, y)
   for k = 1, math.min(step_now, #c.stages) do
@@ -270,9 +273,26 @@ local function muck_out()
   for _, b in ipairs(moved) do
     excavate{ block = b.id }
     fallen = fallen + 1
+    mucked[b.id] = true
   end
 end
 local mucking = every(200, muck_out)
+-- The measuring points whose block has been mucked out: a gridpoint of rock that is gone keeps
+-- the displacement it had, so what the row gives for it is where it was when it fell, not a
+-- measurement; the row names them (column points_fallen) and trends.lua does not judge on them.
+local function points_fallen()
+  local names = {}
+  local function check(name, points)
+    for _, g in ipairs(points) do
+      if mucked[g.block] then names[#names + 1] = name; return end
+    end
+  end
+  check("crown", { crown })
+  check("5m_above_crown", { above_crown })
+  check("left_wall", left_points)
+  check("right_wall", right_points)
+  return table.concat(names, " ")
+end
 
 local BOLT_YIELD, BOLT_SPACING = 0.156e6, 1.5  -- N per bolt; m out of the plane
 if BOLTS ~= "none" then
@@ -312,7 +332,7 @@ local columns = { "case", "set", "depth", "bolts", "release", "steps", "cracks",
                   "right", "left_mean_y_m", "right_mean_y_m", "crown_settlement_m", "settlement_5m_above_crown_m",
                   "left_wall_m", "right_wall_m", "convergence_m", "slipping", "slipped", "fallen", "bolts_laid",
                   "bolts_skipped", "bolts_broken", "bolts_over_half_yield", "cuts_left_out",
-                  "threads", "seconds", "prepass_stopped", "unconverged", "stopped" }
+                  "threads", "seconds", "prepass_stopped", "unconverged", "stopped", "points_fallen" }
 local function result_row()
   local r = { tension = 0, shear = 0, left = 0, right = 0 }
   local left_y, right_y = 0, 0
@@ -342,7 +362,7 @@ local function result_row()
                 r.seconds,
                 prepass_note == "complete" and '""' or ('"' .. prepass_note .. '"'),
                 '"' .. table.concat(unconverged, " ") .. '"',
-                '"' .. stopped:gsub('"', "'") .. '"' }
+                '"' .. stopped:gsub('"', "'") .. '"', '"' .. points_fallen() .. '"' }
   for i, v in ipairs(row) do row[i] = tostring(v) end
   return r, table.concat(row, ",")
 end
@@ -386,7 +406,9 @@ print(("%s: %d steps, %d cracks (%d tension, %d shear; %d left, %d right), crown
        .. "and %.4f m (right), %d contacts slipping, %d fallen, %d bolts (%d skipped, %d broken), %d s%s"):format(
   tag, done, r.tension + r.shear, r.tension, r.shear, r.left, r.right, settlement(), r.left_moves, r.right_moves,
   r.slipping, fallen, laid, skipped, r.bolts_broken, r.seconds, stopped ~= "" and ("; stopped at " .. stopped) or "")
-  .. (#unconverged > 0 and ("; short of equilibrium after step " .. table.concat(unconverged, ", ")) or ""))
+  .. (#unconverged > 0 and ("; short of equilibrium after step " .. table.concat(unconverged, ", ")) or "")
+  .. (points_fallen() ~= "" and ("; measuring points mucked out with their blocks (their last values kept): "
+                                 .. points_fallen()) or ""))
 
 
 plot{ file = tag .. "_cracks.png", show = { "blocks", "cracks", "bolts" }, window = { -50, 50, -40, 50 } }

@@ -12,9 +12,10 @@
 --             common: after the last step every run reached [the end of each run]
 --   markdown  also write the table of trends to this file (markdown)
 --   strict    true: fail (exit 1) unless every trend holds [false]
--- Each trend compares the rows it needs; a row missing, or a run that stopped before its last
--- step, makes the trend "not shown" (a comparison of unfinished runs says nothing), which fails
--- as a trend that does not hold does. With several members a trend holds only if it holds for
+-- Each trend compares the rows it needs; a row missing, a run that stopped before its last step
+-- (a comparison of unfinished runs says nothing), or a run whose measuring point the trend reads
+-- was mucked out with its block (case.lua's column points_fallen: its value is where the point
+-- was when it fell) makes the trend "not shown", which fails as a trend that does not hold does. With several members a trend holds only if it holds for
 -- every pairing of them; where it holds for some only, it is "within the spread", and fails.
 local function setting(key, default)
   local v = arg and arg[key]
@@ -121,14 +122,23 @@ end
 -- A trend holds when `holds` is true for every way of taking one member of each case it needs
 -- (for "A above B": every run of A above every run of B), fails when it is true for none, and
 -- is within the spread otherwise. `describe(value)` writes the numbers; value(i, field, format)
--- gives need i's field in every member, separated by commas.
+-- gives need i's field in every member, separated by commas. `points`: the measuring points
+-- (case.lua's names) the trend reads.
 local results = {}
-local function trend(statement, needs, holds, describe)
+local function trend(statement, needs, holds, describe, points)
   local got, why = {}, nil
   for i, n in ipairs(needs) do
     local list, missing = runs(n[1], n[2], n[3])
     if not list then why = why or missing end
     got[i] = list
+    for _, r in ipairs(list or {}) do
+      for _, point in ipairs(points or {}) do
+        if not why and (" " .. tostring(r.points_fallen or "") .. " "):find(" " .. point .. " ", 1, true) then
+          why = ("the %s point of Case %s, %g m, bolts %s (release %s) was mucked out with its block"):format(
+            point:gsub("_", " "), n[1], n[2], n[3], tostring(r.release))
+        end
+      end
+    end
   end
   local verdict, numbers
   if why then
@@ -192,20 +202,20 @@ trend("Pattern 1 lowers the crack count and the crown settlement (Case 3)", { { 
   function(v)
     return ("cracks %s against %s; crown %s against %s m"):format(v(1, "cracks"), v(2, "cracks"),
       v(1, "crown_settlement_m", "%.3f"), v(2, "crown_settlement_m", "%.3f"))
-  end)
+  end, { "crown" })
 trend("Pattern 2 lowers them at least as much as pattern 1 (Case 3)", { { 3, D, "2" }, { 3, D, "1" } },
   function(p2, p1) return p2.cracks <= p1.cracks and p2.crown_settlement_m <= p1.crown_settlement_m end,
   function(v)
     return ("cracks %s against %s; crown %s against %s m"):format(v(1, "cracks"), v(2, "cracks"),
       v(1, "crown_settlement_m", "%.3f"), v(2, "crown_settlement_m", "%.3f"))
-  end)
+  end, { "crown" })
 for _, case in ipairs{ 1, 2, 3 } do
   trend(("The side the joints dip towards (right) moves more (Case %d)"):format(case), { { case, D, "none" } },
     function(r) return r.right_wall_m > r.left_wall_m end,
     function(v)
       return ("walls moved in %s m (right) and %s m (left)"):format(v(1, "right_wall_m", "%.3f"),
         v(1, "left_wall_m", "%.3f"))
-    end)
+    end, { "left_wall", "right_wall" })
 end
 
 local when = STEP and ("after step %d of 16 in every run"):format(STEP) or "at the end of each run"

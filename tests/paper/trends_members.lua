@@ -1,8 +1,10 @@
 -- scripts/paper/trends.lua over several runs of each case (study.sh --members): a trend holds only
 -- if it holds for every pairing of the runs, fails if for none, is "within the spread" otherwise,
--- and is "not shown" when a run of a case it needs stopped. The fixture's numbers are made up to
--- give each verdict (trends_members.csv: two runs of each of the study's seven, releases 100 and
--- 110; trends_members_stop.csv: a third run of Case 2 that stopped at step 12).
+-- and is "not shown" when a run of a case it needs stopped, or a measuring point it reads fell with
+-- its block. The fixture's numbers are made up to give each verdict (trends_members.csv: two runs
+-- of each of the study's seven, releases 100 and 110; trends_members_stop.csv: a third run of Case
+-- 2 that stopped at step 12; trends_members_fallen.csv: third runs whose measuring points fell
+-- with their blocks).
 local here = debug.getinfo(1, "S").source:match("^@(.*[/\\])") or "./"
 local trends = here .. "../../scripts/paper/trends.lua"
 
@@ -48,6 +50,18 @@ found, text = verdicts(here .. "trends_members.csv," .. here .. "trends_members_
 expect(found, "Case 3 (denser joints) gives more new cracks than Case 2", "not shown")
 expect(found, "The side the joints dip towards (right) moves more (Case 3)", "holds")
 assert(text:find("1 of 3 runs of Case 2, 158 m, bolts none stopped (at step 12)", 1, true), "says which run stopped")
+
+-- A third run of Case 3 whose right wall's measuring point was mucked out, and one of pattern 1
+-- whose crown's was: what the row gives there is where the point was when it fell, so the trends
+-- that read it are not shown; the others still judge those runs.
+found, text = verdicts(here .. "trends_members.csv," .. here .. "trends_members_fallen.csv")
+expect(found, "The side the joints dip towards (right) moves more (Case 3)", "not shown")
+assert(text:find("the right wall point of Case 3, 158 m, bolts none (release 90) was mucked out with its block", 1,
+  true), "says whose point fell")
+expect(found, "Pattern 1 lowers the crack count and the crown settlement (Case 3)", "not shown")
+expect(found, "Pattern 2 lowers them at least as much as pattern 1 (Case 3)", "not shown")
+expect(found, "The side the joints dip towards (right) moves more (Case 2)", "fails")
+expect(found, "Case 3 (denser joints) gives more new cracks than Case 2", "holds")
 
 if failures > 0 then error(("%d verdicts wrong"):format(failures), 0) end
 print("all verdicts as expected")
