@@ -15,8 +15,9 @@
 -- Each trend compares the rows it needs; a row missing, a run that stopped before its last step
 -- (a comparison of unfinished runs says nothing), or a run whose measuring point the trend reads
 -- was mucked out with its block (case.lua's column points_fallen: its value is where the point
--- was when it fell) makes the trend "not shown", which fails as a trend that does not hold does. With several members a trend holds only if it holds for
--- every pairing of them; where it holds for some only, it is "within the spread", and fails.
+-- was when it fell) makes the trend "not shown", which fails as a trend that does not hold does.
+-- With several members a trend holds only if it holds for every pairing of them; where it holds
+-- for some only, it is "within the spread", and fails.
 local function setting(key, default)
   local v = arg and arg[key]
   if v == nil then return default end
