@@ -223,16 +223,14 @@ local above_crown = rock_gridpoint_near(c.crown[1], c.crown[2] + 5)
 -- Each side wall's points at the springline (y = 0) and halfway down the benches (y = -12).
 local left_points = { rock_gridpoint_near(-12, 0), rock_gridpoint_near(-12, -12) }
 local right_points = { rock_gridpoint_near(12, 0), rock_gridpoint_near(12, -12) }
-local left_wall = { left_points[1].id, left_points[2].id }
-local right_wall = { right_points[1].id, right_points[2].id }
-local function ux_of(ids)
+local function ux_of(points)
   local want, sum = {}, 0
-  for _, id in ipairs(ids) do want[id] = true end
+  for _, p in ipairs(points) do want[p.id] = true end
   for g in gridpoints() do if want[g.id] then sum = sum + g.ux end end
-  return sum / #ids
+  return sum / #points
 end
 -- How far each wall has moved into the opening, the mean of its two points [m].
-local function wall_moves() return ux_of(left_wall), -ux_of(right_wall) end
+local function wall_moves() return ux_of(left_points), -ux_of(right_points) end
 local function settlement(point)
   point = point or crown
   for g in gridpoints() do if g.id == point.id then return -g.uy end end
