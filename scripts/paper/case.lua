@@ -220,17 +220,39 @@ local crown = rock_gridpoint_near(c.crown[1], c.crown[2])
 -- this point's is what the bolted part of the roof stretches; the rest is the roof as a whole
 -- coming down, which 5 m bolts cannot hold.
 local above_crown = rock_gridpoint_near(c.crown[1], c.crown[2] + 5)
--- Each side wall's points at the springline (y = 0) and halfway down the benches (y = -12).
+-- Each side wall's points at the springline (y = 0) and halfway down the benches (y = -12), on
+-- its face and 5 m behind it. The face's blocks are the ones that loosen and fall, and a point
+-- that falls with its block measures nothing from then on; 5 m in, as far as pattern 1's bolts
+-- reach and as far as the crown's second point sits above it, is the rock mass beyond the skin.
 local left_points = { rock_gridpoint_near(-12, 0), rock_gridpoint_near(-12, -12) }
 local right_points = { rock_gridpoint_near(12, 0), rock_gridpoint_near(12, -12) }
+local left_points_5m = { rock_gridpoint_near(-17, 0), rock_gridpoint_near(-17, -12) }
+local right_points_5m = { rock_gridpoint_near(17, 0), rock_gridpoint_near(17, -12) }
 local function ux_of(points)
   local want, sum = {}, 0
   for _, p in ipairs(points) do want[p.id] = true end
   for g in gridpoints() do if want[g.id] then sum = sum + g.ux end end
   return sum / #points
 end
--- How far each wall has moved into the opening, the mean of its two points [m].
+-- How far each wall has moved into the opening, the mean of its two points [m]: on the face, and
+-- 5 m behind it.
 local function wall_moves() return ux_of(left_points), -ux_of(right_points) end
+local function wall_moves_5m() return ux_of(left_points_5m), -ux_of(right_points_5m) end
+-- The seed's Figure 12: the vertical displacement along a line 10 m above the crown. Its two
+-- halves' mean settlements, left and right of the axis (the point on it left out), say which side
+-- comes down more, which is what the seed reads off its Figure 12 [m].
+local PROFILE_LINE = { from = { -60, c.crown[2] + 10 }, to = { 60, c.crown[2] + 10 }, points = 61 }
+local function profile_halves()
+  local p = profile{ from = PROFILE_LINE.from, to = PROFILE_LINE.to, points = PROFILE_LINE.points, quantity = "uy" }
+  local sums, counts = { 0, 0 }, { 0, 0 }
+  for i, x in ipairs(p.x) do
+    if x ~= 0 then
+      local side = x < 0 and 1 or 2
+      sums[side], counts[side] = sums[side] - p.value[i], counts[side] + 1
+    end
+  end
+  return sums[1] / counts[1], sums[2] / counts[2]
+end
 local function settlement(point)
   point = point or crown
   for g in gridpoints() do if g.id == point.id then return -g.uy end end
@@ -289,6 +311,8 @@ local function points_fallen()
   check("5m_above_crown", { above_crown })
   check("left_wall", left_points)
   check("right_wall", right_points)
+  check("left_wall_5m", left_points_5m)
+  check("right_wall_5m", right_points_5m)
   return table.concat(names, " ")
 end
 
@@ -328,7 +352,8 @@ local unconverged = {}       -- steps whose solve reached max_cycles short of th
 -- The result row: after each step into TABLE's _steps file, and at the end into TABLE.
 local columns = { "case", "set", "depth", "bolts", "release", "steps", "cracks", "tension", "shear", "left",
                   "right", "left_mean_y_m", "right_mean_y_m", "crown_settlement_m", "settlement_5m_above_crown_m",
-                  "left_wall_m", "right_wall_m", "convergence_m", "slipping", "slipped", "fallen", "bolts_laid",
+                  "left_wall_m", "right_wall_m", "convergence_m", "left_wall_5m_m", "right_wall_5m_m",
+                  "profile_left_m", "profile_right_m", "slipping", "slipped", "fallen", "bolts_laid",
                   "bolts_skipped", "bolts_broken", "bolts_over_half_yield", "cuts_left_out",
                   "threads", "seconds", "prepass_stopped", "unconverged", "stopped", "points_fallen" }
 local function result_row()
@@ -350,12 +375,16 @@ local function result_row()
     if k.slip > 0 then r.slipped = r.slipped + 1 end
   end
   r.left_moves, r.right_moves = wall_moves()
+  r.left_moves_5m, r.right_moves_5m = wall_moves_5m()
+  r.profile_left, r.profile_right = profile_halves()
   r.bolts_broken, r.bolts_loaded = bolt_loads()
   r.seconds = os.time() - started
   local row = { CASE, SET, DEPTH, BOLTS, RELEASE, done, r.tension + r.shear, r.tension, r.shear, r.left, r.right,
                 ("%.3f"):format(r.left_mean_y), ("%.3f"):format(r.right_mean_y), ("%.5f"):format(settlement()),
                 ("%.5f"):format(settlement(above_crown)), ("%.5f"):format(r.left_moves),
-                ("%.5f"):format(r.right_moves), ("%.5f"):format(r.left_moves + r.right_moves), r.slipping,
+                ("%.5f"):format(r.right_moves), ("%.5f"):format(r.left_moves + r.right_moves),
+                ("%.5f"):format(r.left_moves_5m), ("%.5f"):format(r.right_moves_5m), ("%.5f"):format(r.profile_left),
+                ("%.5f"):format(r.profile_right), r.slipping,
                 r.slipped, fallen, laid, skipped, r.bolts_broken, r.bolts_loaded, info().cuts_left_out, THREADS,
                 r.seconds,
                 prepass_note == "complete" and '""' or ('"' .. prepass_note .. '"'),
@@ -401,15 +430,17 @@ cancel(mucking)
 local r, line = result_row()
 append_row(TABLE, line)
 print(("%s: %d steps, %d cracks (%d tension, %d shear; %d left, %d right), crown %.4f m, walls in %.4f (left) "
-       .. "and %.4f m (right), %d contacts slipping, %d fallen, %d bolts (%d skipped, %d broken), %d s%s"):format(
+       .. "and %.4f m (right), 5 m behind their faces %.4f and %.4f m, 10 m above the crown left / right half "
+       .. "%.4f / %.4f m, %d contacts slipping, %d fallen, %d bolts (%d skipped, %d broken), %d s%s"):format(
   tag, done, r.tension + r.shear, r.tension, r.shear, r.left, r.right, settlement(), r.left_moves, r.right_moves,
-  r.slipping, fallen, laid, skipped, r.bolts_broken, r.seconds, stopped ~= "" and ("; stopped at " .. stopped) or "")
+  r.left_moves_5m, r.right_moves_5m, r.profile_left, r.profile_right, r.slipping, fallen, laid, skipped,
+  r.bolts_broken, r.seconds, stopped ~= "" and ("; stopped at " .. stopped) or "")
   .. (#unconverged > 0 and ("; short of equilibrium after step " .. table.concat(unconverged, ", ")) or "")
   .. (points_fallen() ~= "" and ("; measuring points mucked out with their blocks (their last values kept): "
                                  .. points_fallen()) or ""))
 
 
 plot{ file = tag .. "_cracks.png", show = { "blocks", "cracks", "bolts" }, window = { -50, 50, -40, 50 } }
-profile{ from = { -60, c.crown[2] + 10 }, to = { 60, c.crown[2] + 10 }, quantity = "uy", points = 61,
+profile{ from = PROFILE_LINE.from, to = PROFILE_LINE.to, quantity = "uy", points = PROFILE_LINE.points,
          file = tag .. "_profile.png", title = tag .. ": vertical displacement 10 m above the crown" }
 if setting("strict", false) == true and stopped ~= "" then error("stopped at " .. stopped, 0) end

@@ -212,11 +212,11 @@ trend("Pattern 2 lowers them at least as much as pattern 1 (Case 3)", { { 3, D, 
   end, { "crown" })
 for _, case in ipairs{ 1, 2, 3 } do
   trend(("The side the joints dip towards (right) moves more (Case %d)"):format(case), { { case, D, "none" } },
-    function(r) return r.right_wall_m > r.left_wall_m end,
+    function(r) return r.right_wall_5m_m > r.left_wall_5m_m end,
     function(v)
-      return ("walls moved in %s m (right) and %s m (left)"):format(v(1, "right_wall_m", "%.3f"),
-        v(1, "left_wall_m", "%.3f"))
-    end, { "left_wall", "right_wall" })
+      return ("walls moved in, 5 m behind their faces: %s m (right) and %s m (left)"):format(
+        v(1, "right_wall_5m_m", "%.3f"), v(1, "left_wall_5m_m", "%.3f"))
+    end, { "left_wall_5m", "right_wall_5m" })
 end
 
 local when = STEP and ("after step %d of 16 in every run"):format(STEP) or "at the end of each run"

@@ -51,13 +51,15 @@ expect(found, "Case 3 (denser joints) gives more new cracks than Case 2", "not s
 expect(found, "The side the joints dip towards (right) moves more (Case 3)", "holds")
 assert(text:find("1 of 3 runs of Case 2, 158 m, bolts none stopped (at step 12)", 1, true), "says which run stopped")
 
--- A third run of Case 3 whose right wall's measuring point was mucked out, and one of pattern 1
--- whose crown's was: what the row gives there is where the point was when it fell, so the trends
--- that read it are not shown; the others still judge those runs.
+-- A third run of Case 3 whose right wall's measuring points, on the face and 5 m behind it, were
+-- mucked out, and one of pattern 1 whose crown's was: what the row gives there is where the point
+-- was when it fell, so the trends that read it are not shown; the others still judge those runs.
+-- A third run of Case 2 lost only its face points, which the wall trend does not read: it is judged.
 found, text = verdicts(here .. "trends_members.csv," .. here .. "trends_members_fallen.csv")
 expect(found, "The side the joints dip towards (right) moves more (Case 3)", "not shown")
-assert(text:find("the right wall point of Case 3, 158 m, bolts none (release 90) was mucked out with its block", 1,
-  true), "says whose point fell")
+assert(text:find("the right wall 5m point of Case 3, 158 m, bolts none (release 90) was mucked out with its block",
+  1, true), "says whose point fell")
+assert(text:find("0.100, 0.200, 0.250 m (right)", 1, true), "judges the run whose face points fell")
 expect(found, "Pattern 1 lowers the crack count and the crown settlement (Case 3)", "not shown")
 expect(found, "Pattern 2 lowers them at least as much as pattern 1 (Case 3)", "not shown")
 expect(found, "The side the joints dip towards (right) moves more (Case 2)", "fails")
