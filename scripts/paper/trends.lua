@@ -16,6 +16,8 @@
 -- (a comparison of unfinished runs says nothing), or a run whose measuring point the trend reads
 -- was mucked out with its block (case.lua's column points_fallen: its value is where the point
 -- was when it fell) makes the trend "not shown", which fails as a trend that does not hold does.
+-- The wall trend takes a fallen wall point's value as what it is, the least that wall moved, and
+-- is not shown only where that bound does not settle which wall moved more.
 -- With several members a trend holds only if it holds for every pairing of them; where it holds
 -- for some only, it is "within the spread", and fails.
 local function setting(key, default)
@@ -120,11 +122,17 @@ local function runs(case, depth, bolts)
   return got
 end
 
+-- Whether measuring point `point` (case.lua's name) of row r was mucked out with its block.
+local function fell(r, point)
+  return (" " .. tostring(r.points_fallen or "") .. " "):find(" " .. point .. " ", 1, true) ~= nil
+end
+
 -- A trend holds when `holds` is true for every way of taking one member of each case it needs
 -- (for "A above B": every run of A above every run of B), fails when it is true for none, and
--- is within the spread otherwise. `describe(value)` writes the numbers; value(i, field, format)
--- gives need i's field in every member, separated by commas. `points`: the measuring points
--- (case.lua's names) the trend reads.
+-- is within the spread otherwise. `holds` may also give nil, undecided, for a pairing its rows
+-- cannot settle; then the trend is "not shown". `describe(value)` writes the numbers;
+-- value(i, field, format, point) gives need i's field in every member, separated by commas, with
+-- "at least" before those whose measuring point `point` fell. `points`: the measuring points (case.lua's names) the trend reads whose fall makes it "not shown".
 local results = {}
 local function trend(statement, needs, holds, describe, points)
   local got, why = {}, nil
@@ -134,7 +142,7 @@ local function trend(statement, needs, holds, describe, points)
     got[i] = list
     for _, r in ipairs(list or {}) do
       for _, point in ipairs(points or {}) do
-        if not why and (" " .. tostring(r.points_fallen or "") .. " "):find(" " .. point .. " ", 1, true) then
+        if not why and fell(r, point) then
           why = ("the %s point of Case %s, %g m, bolts %s (release %s) was mucked out with its block"):format(
             point:gsub("_", " "), n[1], n[2], n[3], tostring(r.release))
         end
@@ -145,29 +153,33 @@ local function trend(statement, needs, holds, describe, points)
   if why then
     verdict, numbers = "not shown", why
   else
-    local function value(i, field, format)
+    local function value(i, field, format, point)  -- point: a value whose point fell is a bound
       local parts = {}
       for _, r in ipairs(got[i]) do
         if r[field] == nil then error("no column " .. field) end
-        parts[#parts + 1] = (format or "%s"):format(r[field])
+        parts[#parts + 1] = (point and fell(r, point) and "at least " or "") .. (format or "%s"):format(r[field])
       end
       return table.concat(parts, ", ")
     end
-    local function count(i, picked, yes, all)  -- every pairing of members, depth first
+    local function count(i, picked, yes, all, open)  -- every pairing of members, depth first
       if i > #got then
-        return yes + (holds(table.unpack(picked)) and 1 or 0), all + 1
+        local answer = holds(table.unpack(picked))
+        if answer == nil then return yes, all + 1, open + 1 end
+        return yes + (answer and 1 or 0), all + 1, open
       end
       for _, r in ipairs(got[i]) do
         picked[i] = r
-        yes, all = count(i + 1, picked, yes, all)
+        yes, all, open = count(i + 1, picked, yes, all, open)
       end
-      return yes, all
+      return yes, all, open
     end
-    local ok, yes, all = pcall(count, 1, {}, 0, 0)
+    local ok, yes, all, open = pcall(count, 1, {}, 0, 0, 0)
     local described, text = pcall(describe, value)
     if ok and described then
       numbers = text
-      if yes == all then verdict = "holds"
+      if open > 0 then
+        verdict = ("not shown (%d of %d pairings undecided)"):format(open, all)
+      elseif yes == all then verdict = "holds"
       elseif yes == 0 then verdict = "fails"
       else verdict = ("within the spread (%d of %d pairings)"):format(yes, all) end
     else  -- a table from an older case.lua, without the column
@@ -210,13 +222,25 @@ trend("Pattern 2 lowers them at least as much as pattern 1 (Case 3)", { { 3, D, 
     return ("cracks %s against %s; crown %s against %s m"):format(v(1, "cracks"), v(2, "cracks"),
       v(1, "crown_settlement_m", "%.3f"), v(2, "crown_settlement_m", "%.3f"))
   end, { "crown" })
+-- A wall point mucked out with its block keeps the displacement it had when its block went, and
+-- a block is mucked out once it has moved 1 m, loose rock coming off the wall: the wall moved at
+-- least that far there, so a wall's mean with a fallen point is a lower bound. Right
+-- above left is settled where the right's value (exact or a lower bound) exceeds the left's exact
+-- one, and refuted where the left's (exact or a lower bound) exceeds or equals the right's exact
+-- one; where both points fell, or the larger value is the exact one and the other is a bound,
+-- the pairing is undecided.
 for _, case in ipairs{ 1, 2, 3 } do
   trend(("The side the joints dip towards (right) moves more (Case %d)"):format(case), { { case, D, "none" } },
-    function(r) return r.right_wall_5m_m > r.left_wall_5m_m end,
+    function(r)
+      local right, left = r.right_wall_5m_m, r.left_wall_5m_m
+      if right > left and not fell(r, "left_wall_5m") then return true end
+      if left >= right and not fell(r, "right_wall_5m") then return false end
+      return nil
+    end,
     function(v)
       return ("walls moved in, 5 m behind their faces: %s m (right) and %s m (left)"):format(
-        v(1, "right_wall_5m_m", "%.3f"), v(1, "left_wall_5m_m", "%.3f"))
-    end, { "left_wall_5m", "right_wall_5m" })
+        v(1, "right_wall_5m_m", "%.3f", "right_wall_5m"), v(1, "left_wall_5m_m", "%.3f", "left_wall_5m"))
+    end)
 end
 
 local when = STEP and ("after step %d of 16 in every run"):format(STEP) or "at the end of each run"
