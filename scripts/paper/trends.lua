@@ -132,7 +132,8 @@ end
 -- is within the spread otherwise. `holds` may also give nil, undecided, for a pairing its rows
 -- cannot settle; then the trend is "not shown". `describe(value)` writes the numbers;
 -- value(i, field, format, point) gives need i's field in every member, separated by commas, with
--- "at least" before those whose measuring point `point` fell. `points`: the measuring points (case.lua's names) the trend reads whose fall makes it "not shown".
+-- "at least" before those whose measuring point `point` fell. `points`: the measuring points
+-- (case.lua's names) the trend reads whose fall makes it "not shown".
 local results = {}
 local function trend(statement, needs, holds, describe, points)
   local got, why = {}, nil
