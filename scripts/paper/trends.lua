@@ -225,11 +225,10 @@ trend("Pattern 2 lowers them at least as much as pattern 1 (Case 3)", { { 3, D, 
   end, { "crown" })
 -- A wall point mucked out with its block keeps the displacement it had when its block went, and
 -- a block is mucked out once it has moved 1 m, loose rock coming off the wall: the wall moved at
--- least that far there, so a wall's mean with a fallen point is a lower bound. Right
--- above left is settled where the right's value (exact or a lower bound) exceeds the left's exact
--- one, and refuted where the left's (exact or a lower bound) exceeds or equals the right's exact
--- one; where both points fell, or the larger value is the exact one and the other is a bound,
--- the pairing is undecided.
+-- least that far there, so a wall's mean with a fallen point is a lower bound. Right above left
+-- is settled where the right's value (exact or a lower bound) exceeds the left's exact one, and
+-- refuted where the left's (exact or a lower bound) reaches the right's exact one; where both
+-- points fell, or the larger value is exact and the other a bound, the pairing is undecided.
 for _, case in ipairs{ 1, 2, 3 } do
   trend(("The side the joints dip towards (right) moves more (Case %d)"):format(case), { { case, D, "none" } },
     function(r)
