@@ -299,7 +299,8 @@ end
 local mucking = every(200, muck_out)
 -- The measuring points whose block has been mucked out: a gridpoint of rock that is gone keeps
 -- the displacement it had, so what the row gives for it is where it was when it fell, not a
--- measurement; the row names them (column points_fallen) and trends.lua does not judge on them.
+-- measurement; the row names them (column points_fallen), and trends.lua does not judge on them
+-- but for the walls, where it takes such a value as the least the wall moved.
 local function points_fallen()
   local names = {}
   local function check(name, points)
