@@ -18,7 +18,7 @@
 --             up, but the whole study at 10,000 caved in more often than at 20,000, and under
 --             local damping (session 30) ended single runs beyond the spread of 20,000's; in
 --             session 35 at 10,000 Case 3 at 262 m ended 5 % below in cracks and 6 % in crown)
---             study.sh --reduced gives 10,000: on its zones twice as large as many crossings
+--             (study.sh --reduced gives 10,000, as slow on its zones twice as large)
 --   release_offset  cycles added to release [0]: scripts/paper/study.sh --members runs each case
 --             with releases a few cycles apart, to show the spread numerical detail gives
 --   similar   deg: crackseed{ auto }'s grouping angle [45]

@@ -17,7 +17,7 @@
 #              first 8 of the 16 steps, each step's load released over 10,000 cycles, not 20,000
 #              (with scaled masses a cycle carries the load about one zone, so on zones twice as
 #              large that is as slow; scripts/paper/README.md, "The release rate"); the same runs
-#              and trends
+#              and trends (edem takes a --set key once, so none of these four again after --)
 #   --strict   exit 1 unless every trend holds
 #   --resume   keep the runs that already wrote their row in OUT (a study cut short, or more
 #              --members on top of an earlier study made by the same edem) and run only the rest
