@@ -52,7 +52,8 @@
 --             cycles), those furthest past their strength first [0: all that fail]
 --   tolerance model{}'s geometric tolerance [7e-4]
 --   table     CSV file the result row is appended to [case_results.csv]; a row after each step
---             goes to the same name with _steps before .csv
+--             goes to the same name with _steps before .csv; either, if there already, must have
+--             the columns this script writes
 --   threads   recorded in the table: the threads the run was given [OMP_NUM_THREADS, else default]
 --   strict    true: a step that stops on an error fails the script (after the row and pictures)
 --             instead of only being recorded [false]
@@ -111,6 +112,26 @@ if (ORIGIN_X == nil) ~= (ORIGIN_Y == nil) then error("give origin_x and origin_y
 local ORIGIN = ORIGIN_X and { ORIGIN_X, ORIGIN_Y } or nil
 local TABLE = tostring(setting("table", "case_results.csv"))
 local STEPS_TABLE = TABLE:gsub("%.csv$", "") .. "_steps.csv"  -- a row after each step
+-- The result row's columns. A table that exists already is appended to, so it must have them,
+-- or its rows would not line up under its header (a table an older case.lua wrote).
+local columns = { "case", "set", "depth", "bolts", "release", "steps", "cracks", "tension", "shear", "left",
+                  "right", "left_mean_y_m", "right_mean_y_m", "crown_settlement_m", "settlement_5m_above_crown_m",
+                  "left_wall_m", "right_wall_m", "convergence_m", "left_wall_5m_m", "right_wall_5m_m",
+                  "profile_left_m", "profile_right_m", "slipping", "slipped", "fallen", "bolts_laid",
+                  "bolts_skipped", "bolts_broken", "bolts_over_half_yield", "cuts_left_out",
+                  "threads", "seconds", "prepass_stopped", "unconverged", "stopped", "points_fallen",
+                  "edge_m", "far_m", "first", "muck", "damping" }
+for _, file in ipairs{ TABLE, STEPS_TABLE } do
+  local existing = io.open(file, "r")
+  if existing then
+    local header = existing:read("l")
+    existing:close()
+    if header ~= table.concat(columns, ",") then
+      error(("table has other columns than case.lua writes: give another table or move it away, got %s")
+            :format(file), 0)
+    end
+  end
+end
 -- For the table only: the threads it ran on, as the caller set them (edem --threads N --set threads=N).
 local THREADS = tostring(setting("threads", os.getenv("OMP_NUM_THREADS") or "default"))
 assert(BOLTS == "none" or BOLTS == "1" or BOLTS == "2", "bolts must be none, 1 or 2, got " .. BOLTS)
@@ -352,12 +373,6 @@ local done, stopped = 0, ""  -- steps done; where the run stopped, if it did
 local unconverged = {}       -- steps whose solve reached max_cycles short of the ratio
 
 -- The result row: after each step into TABLE's _steps file, and at the end into TABLE.
-local columns = { "case", "set", "depth", "bolts", "release", "steps", "cracks", "tension", "shear", "left",
-                  "right", "left_mean_y_m", "right_mean_y_m", "crown_settlement_m", "settlement_5m_above_crown_m",
-                  "left_wall_m", "right_wall_m", "convergence_m", "left_wall_5m_m", "right_wall_5m_m",
-                  "profile_left_m", "profile_right_m", "slipping", "slipped", "fallen", "bolts_laid",
-                  "bolts_skipped", "bolts_broken", "bolts_over_half_yield", "cuts_left_out",
-                  "threads", "seconds", "prepass_stopped", "unconverged", "stopped", "points_fallen" }
 local function result_row()
   local r = { tension = 0, shear = 0, left = 0, right = 0 }
   local left_y, right_y = 0, 0
@@ -391,7 +406,8 @@ local function result_row()
                 r.seconds,
                 prepass_note == "complete" and '""' or ('"' .. prepass_note .. '"'),
                 '"' .. table.concat(unconverged, " ") .. '"',
-                '"' .. stopped:gsub('"', "'") .. '"', '"' .. points_fallen() .. '"' }
+                '"' .. stopped:gsub('"', "'") .. '"', '"' .. points_fallen() .. '"', EDGE, FAR, FIRST, MUCK,
+                DAMPING }
   for i, v in ipairs(row) do row[i] = tostring(v) end
   return r, table.concat(row, ",")
 end

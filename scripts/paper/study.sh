@@ -107,6 +107,12 @@ gather() {  # gather SUFFIX FILE
     f="$out/$(name_of "$r")$1.csv"
     [[ -f $f ]] && tables+=("$f")
   done
+  for f in "${tables[@]}"; do  # rows kept by --resume from an older case.lua would not line up
+    [[ $(head -n 1 "$f") == "$(head -n 1 "${tables[0]}")" ]] || {
+      echo "study: $f has other columns than ${tables[0]} (an older case.lua's? run it again)" >&2
+      exit 1
+    }
+  done
   {
     [[ ${#tables[@]} -gt 0 ]] && head -n 1 "${tables[0]}"
     for f in "${tables[@]}"; do tail -n +2 "$f"; done
