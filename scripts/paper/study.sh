@@ -56,7 +56,9 @@ mkdir -p "$out"
 out=$(cd "$out" && pwd)
 
 common=(--set "threads=$threads")
-if [[ $reduced == 1 ]]; then common+=(--set edge=3 --set far=20 --set stages=8 --set release=10000); fi
+if [[ $reduced == 1 ]]; then
+  common+=(--set edge=3 --set far=20 --set stages=8 --set release=10000)
+fi
 cases=(
   "case=1 depth=158 bolts=none"
   "case=2 depth=158 bolts=none"
