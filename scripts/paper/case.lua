@@ -117,8 +117,9 @@ local STEPS_TABLE = TABLE:gsub("%.csv$", "") .. "_steps.csv"  -- a row after eac
 local columns = { "case", "set", "depth", "bolts", "release", "steps", "cracks", "tension", "shear", "left",
                   "right", "left_mean_y_m", "right_mean_y_m", "crown_settlement_m", "settlement_5m_above_crown_m",
                   "left_wall_m", "right_wall_m", "convergence_m", "left_wall_5m_m", "right_wall_5m_m",
-                  "profile_left_m", "profile_right_m", "slipping", "slipped", "fallen", "bolts_laid",
-                  "bolts_skipped", "bolts_broken", "bolts_over_half_yield", "cuts_left_out",
+                  "left_wall_15m_m", "right_wall_15m_m", "profile_left_m", "profile_right_m", "slipping",
+                  "slipped", "fallen", "bolts_laid", "bolts_skipped", "bolts_broken", "bolts_over_half_yield",
+                  "cuts_left_out",
                   "threads", "seconds", "prepass_stopped", "unconverged", "stopped", "points_fallen",
                   "edge_m", "far_m", "first", "muck", "damping" }
 for _, file in ipairs{ TABLE, STEPS_TABLE } do
@@ -246,10 +247,14 @@ local above_crown = rock_gridpoint_near(c.crown[1], c.crown[2] + 5)
 -- its face and 5 m behind it. The face's blocks are the ones that loosen and fall, and a point
 -- that falls with its block measures nothing from then on; 5 m in, as far as pattern 1's bolts
 -- reach and as far as the crown's second point sits above it, is the rock mass beyond the skin.
+-- 15 m in, as far as pattern 2's long bolts reach, where the seed finds the loosened rock deepest,
+-- is read where both points 5 m in fell (trends.lua).
 local left_points = { rock_gridpoint_near(-12, 0), rock_gridpoint_near(-12, -12) }
 local right_points = { rock_gridpoint_near(12, 0), rock_gridpoint_near(12, -12) }
 local left_points_5m = { rock_gridpoint_near(-17, 0), rock_gridpoint_near(-17, -12) }
 local right_points_5m = { rock_gridpoint_near(17, 0), rock_gridpoint_near(17, -12) }
+local left_points_15m = { rock_gridpoint_near(-27, 0), rock_gridpoint_near(-27, -12) }
+local right_points_15m = { rock_gridpoint_near(27, 0), rock_gridpoint_near(27, -12) }
 local function ux_of(points)
   local want, sum = {}, 0
   for _, p in ipairs(points) do want[p.id] = true end
@@ -257,9 +262,10 @@ local function ux_of(points)
   return sum / #points
 end
 -- How far each wall has moved into the opening, the mean of its two points [m]: on the face, and
--- 5 m behind it.
+-- 5 m and 15 m behind it.
 local function wall_moves() return ux_of(left_points), -ux_of(right_points) end
 local function wall_moves_5m() return ux_of(left_points_5m), -ux_of(right_points_5m) end
+local function wall_moves_15m() return ux_of(left_points_15m), -ux_of(right_points_15m) end
 -- The seed's Figure 12: the vertical displacement along a line 10 m above the crown. Its two
 -- halves' mean settlements, left and right of the axis (the point on it left out), say which side
 -- comes down more, which is what the seed reads off its Figure 12 [m].
@@ -336,6 +342,8 @@ local function points_fallen()
   check("right_wall", right_points)
   check("left_wall_5m", left_points_5m)
   check("right_wall_5m", right_points_5m)
+  check("left_wall_15m", left_points_15m)
+  check("right_wall_15m", right_points_15m)
   return table.concat(names, " ")
 end
 
@@ -393,6 +401,7 @@ local function result_row()
   end
   r.left_moves, r.right_moves = wall_moves()
   r.left_moves_5m, r.right_moves_5m = wall_moves_5m()
+  r.left_moves_15m, r.right_moves_15m = wall_moves_15m()
   r.profile_left, r.profile_right = profile_halves()
   r.bolts_broken, r.bolts_loaded = bolt_loads()
   r.seconds = os.time() - started
@@ -400,8 +409,9 @@ local function result_row()
                 ("%.3f"):format(r.left_mean_y), ("%.3f"):format(r.right_mean_y), ("%.5f"):format(settlement()),
                 ("%.5f"):format(settlement(above_crown)), ("%.5f"):format(r.left_moves),
                 ("%.5f"):format(r.right_moves), ("%.5f"):format(r.left_moves + r.right_moves),
-                ("%.5f"):format(r.left_moves_5m), ("%.5f"):format(r.right_moves_5m), ("%.5f"):format(r.profile_left),
-                ("%.5f"):format(r.profile_right), r.slipping,
+                ("%.5f"):format(r.left_moves_5m), ("%.5f"):format(r.right_moves_5m),
+                ("%.5f"):format(r.left_moves_15m), ("%.5f"):format(r.right_moves_15m),
+                ("%.5f"):format(r.profile_left), ("%.5f"):format(r.profile_right), r.slipping,
                 r.slipped, fallen, laid, skipped, r.bolts_broken, r.bolts_loaded, info().cuts_left_out, THREADS,
                 r.seconds,
                 prepass_note == "complete" and '""' or ('"' .. prepass_note .. '"'),
@@ -448,11 +458,12 @@ cancel(mucking)
 local r, line = result_row()
 append_row(TABLE, line)
 print(("%s: %d steps, %d cracks (%d tension, %d shear; %d left, %d right), crown %.4f m, walls in %.4f (left) "
-       .. "and %.4f m (right), 5 m behind their faces %.4f and %.4f m, 10 m above the crown left / right half "
-       .. "%.4f / %.4f m, %d contacts slipping, %d fallen, %d bolts (%d skipped, %d broken), %d s%s"):format(
+       .. "and %.4f m (right), 5 m behind their faces %.4f and %.4f m, 15 m behind %.4f and %.4f m, "
+       .. "10 m above the crown left / right half %.4f / %.4f m, %d contacts slipping, %d fallen, "
+       .. "%d bolts (%d skipped, %d broken), %d s%s"):format(
   tag, done, r.tension + r.shear, r.tension, r.shear, r.left, r.right, settlement(), r.left_moves, r.right_moves,
-  r.left_moves_5m, r.right_moves_5m, r.profile_left, r.profile_right, r.slipping, fallen, laid, skipped,
-  r.bolts_broken, r.seconds, stopped ~= "" and ("; stopped at " .. stopped) or "")
+  r.left_moves_5m, r.right_moves_5m, r.left_moves_15m, r.right_moves_15m, r.profile_left, r.profile_right,
+  r.slipping, fallen, laid, skipped, r.bolts_broken, r.seconds, stopped ~= "" and ("; stopped at " .. stopped) or "")
   .. (#unconverged > 0 and ("; short of equilibrium after step " .. table.concat(unconverged, ", ")) or "")
   .. (points_fallen() ~= "" and ("; measuring points mucked out with their blocks (their last values kept): "
                                  .. points_fallen()) or ""))

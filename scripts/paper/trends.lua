@@ -16,8 +16,9 @@
 -- (a comparison of unfinished runs says nothing), or a run whose measuring point the trend reads
 -- was mucked out with its block (case.lua's column points_fallen: its value is where the point
 -- was when it fell) makes the trend "not shown", which fails as a trend that does not hold does.
--- The wall trend takes a fallen wall point's value as what it is, the least that wall moved, and
--- is not shown only where that bound does not settle which wall moved more.
+-- The wall trend takes a fallen wall point's value as what it is, the least that wall moved; where
+-- that bound does not settle which wall moved more 5 m behind the faces, it reads the points 15 m
+-- behind them the same way, and is not shown only where neither settles it.
 -- With several members a trend holds only if it holds for every pairing of them; where it holds
 -- for some only, it is "within the spread", and fails.
 local function setting(key, default)
@@ -131,9 +132,9 @@ end
 -- (for "A above B": every run of A above every run of B), fails when it is true for none, and
 -- is within the spread otherwise. `holds` may also give nil, undecided, for a pairing its rows
 -- cannot settle; then the trend is "not shown". `describe(value)` writes the numbers;
--- value(i, field, format, point) gives need i's field in every member, separated by commas, with
--- "at least" before those whose measuring point `point` fell. `points`: the measuring points
--- (case.lua's names) the trend reads whose fall makes it "not shown".
+-- value(i, field, format, point, missing) gives need i's field in every member, separated by
+-- commas, with "at least" before those whose measuring point `point` fell. `points`: the measuring
+-- points (case.lua's names) the trend reads whose fall makes it "not shown".
 local results = {}
 local function trend(statement, needs, holds, describe, points)
   local got, why = {}, nil
@@ -154,11 +155,14 @@ local function trend(statement, needs, holds, describe, points)
   if why then
     verdict, numbers = "not shown", why
   else
-    local function value(i, field, format, point)  -- point: a value whose point fell is a bound
+    -- point: a value whose point fell is a bound; missing: what to write for a row without the field
+    -- (nil: such a row is an error)
+    local function value(i, field, format, point, missing)
       local parts = {}
       for _, r in ipairs(got[i]) do
-        if r[field] == nil then error("no column " .. field) end
-        parts[#parts + 1] = (point and fell(r, point) and "at least " or "") .. (format or "%s"):format(r[field])
+        if r[field] == nil and not missing then error("no column " .. field) end
+        parts[#parts + 1] = r[field] == nil and missing
+          or (point and fell(r, point) and "at least " or "") .. (format or "%s"):format(r[field])
       end
       return table.concat(parts, ", ")
     end
@@ -228,18 +232,29 @@ trend("Pattern 2 lowers them at least as much as pattern 1 (Case 3)", { { 3, D, 
 -- least that far there, so a wall's mean with a fallen point is a lower bound. Right above left
 -- is settled where the right's value (exact or a lower bound) exceeds the left's exact one, and
 -- refuted where the left's (exact or a lower bound) reaches the right's exact one; where both
--- points fell, or the larger value is exact and the other a bound, the pairing is undecided.
+-- points fell, or the larger value is exact and the other a bound, it is undecided 5 m behind
+-- the faces, and judged by the same rule 15 m behind them (a table without those columns, from an
+-- older case.lua, leaves it undecided).
+local function right_moves_more(r, depth)  -- depth: "5m" or "15m"
+  local right, left = r["right_wall_" .. depth .. "_m"], r["left_wall_" .. depth .. "_m"]
+  if right > left and not fell(r, "left_wall_" .. depth) then return true end
+  if left >= right and not fell(r, "right_wall_" .. depth) then return false end
+  return nil
+end
 for _, case in ipairs{ 1, 2, 3 } do
   trend(("The side the joints dip towards (right) moves more (Case %d)"):format(case), { { case, D, "none" } },
     function(r)
-      local right, left = r.right_wall_5m_m, r.left_wall_5m_m
-      if right > left and not fell(r, "left_wall_5m") then return true end
-      if left >= right and not fell(r, "right_wall_5m") then return false end
-      return nil
+      local at_5m = right_moves_more(r, "5m")
+      if at_5m ~= nil or r.right_wall_15m_m == nil then return at_5m end
+      return right_moves_more(r, "15m")
     end,
     function(v)
-      return ("walls moved in, 5 m behind their faces: %s m (right) and %s m (left)"):format(
+      local text = ("walls moved in, 5 m behind their faces: %s m (right) and %s m (left)"):format(
         v(1, "right_wall_5m_m", "%.3f", "right_wall_5m"), v(1, "left_wall_5m_m", "%.3f", "left_wall_5m"))
+      local right_15m = v(1, "right_wall_15m_m", "%.3f", "right_wall_15m", "none")
+      if not right_15m:find("%d") then return text end  -- no row has them
+      return ("%s; 15 m behind them: %s m (right) and %s m (left)"):format(text, right_15m,
+        v(1, "left_wall_15m_m", "%.3f", "left_wall_15m", "none"))
     end)
 end
 

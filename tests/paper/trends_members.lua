@@ -3,8 +3,8 @@
 -- and is "not shown" when a run of a case it needs stopped, or a measuring point it reads fell with
 -- its block. The fixture's numbers are made up to give each verdict (trends_members.csv: two runs
 -- of each of the study's seven, releases 100 and 110; trends_members_stop.csv: a third run of Case
--- 2 that stopped at step 12; trends_members_fallen.csv: third runs whose measuring points fell
--- with their blocks).
+-- 2 that stopped at step 12; trends_members_fallen.csv and trends_members_deeper.csv: third runs
+-- whose measuring points fell with their blocks).
 local here = debug.getinfo(1, "S").source:match("^@(.*[/\\])") or "./"
 local trends = here .. "../../scripts/paper/trends.lua"
 
@@ -57,7 +57,9 @@ assert(text:find("1 of 3 runs of Case 2, 158 m, bolts none stopped (at step 12)"
 -- point is the least that wall moved: Case 3's right wall, at least 0.40 m against the left's
 -- 0.20 m, settles "right moves more"; Case 2's left, at least 0.30 m against the right's 0.10 m,
 -- settles that it does not; Case 1's left, at least 0.20 m against the right's 0.30 m, settles
--- nothing, so that trend is not shown.
+-- nothing, and 15 m behind the faces, where its left point fell too, nor does at least 0.05
+-- against 0.08 m, so that trend is not shown. Where 5 m settles, 15 m is not read (Case 2's and
+-- Case 3's points 15 m in say the opposite).
 found, text = verdicts(here .. "trends_members.csv," .. here .. "trends_members_fallen.csv")
 expect(found, "Pattern 1 lowers the crack count and the crown settlement (Case 3)", "not shown")
 expect(found, "Pattern 2 lowers them at least as much as pattern 1 (Case 3)", "not shown")
@@ -69,6 +71,15 @@ assert(text:find("at least 0.400, 0.300, 0.310 m (right) and 0.200, 0.200, 0.200
   "marks a fallen point's value as a bound")
 expect(found, "The side the joints dip towards (right) moves more (Case 2)", "fails")
 expect(found, "The side the joints dip towards (right) moves more (Case 1)", "not shown (1 of 3 pairings undecided)")
+assert(text:find("15 m behind them: 0.080, none, none m (right) and at least 0.050, none, none m (left)", 1, true),
+  "gives the points 15 m in, and none for rows without them")
+
+-- Third runs of Cases 3 and 1 whose points 5 m in both fell, so that 5 m settles nothing: the
+-- points 15 m in, in place, settle it, for Case 3 (0.07 m right against 0.05 m left) and against
+-- it for Case 1 (0.04 against 0.06 m).
+found, text = verdicts(here .. "trends_members.csv," .. here .. "trends_members_deeper.csv")
+expect(found, "The side the joints dip towards (right) moves more (Case 3)", "holds")
+expect(found, "The side the joints dip towards (right) moves more (Case 1)", "within the spread (1 of 3 pairings)")
 
 if failures > 0 then error(("%d verdicts wrong"):format(failures), 0) end
 print("all verdicts as expected")
