@@ -119,9 +119,8 @@ local columns = { "case", "set", "depth", "bolts", "release", "steps", "cracks",
                   "left_wall_m", "right_wall_m", "convergence_m", "left_wall_5m_m", "right_wall_5m_m",
                   "left_wall_15m_m", "right_wall_15m_m", "profile_left_m", "profile_right_m", "slipping",
                   "slipped", "fallen", "bolts_laid", "bolts_skipped", "bolts_broken", "bolts_over_half_yield",
-                  "cuts_left_out",
-                  "threads", "seconds", "prepass_stopped", "unconverged", "stopped", "points_fallen",
-                  "edge_m", "far_m", "first", "muck", "damping" }
+                  "cuts_left_out", "threads", "seconds", "prepass_stopped", "unconverged", "stopped",
+                  "points_fallen", "edge_m", "far_m", "first", "muck", "damping" }
 for _, file in ipairs{ TABLE, STEPS_TABLE } do
   local existing = io.open(file, "r")
   if existing then
@@ -248,7 +247,7 @@ local above_crown = rock_gridpoint_near(c.crown[1], c.crown[2] + 5)
 -- that falls with its block measures nothing from then on; 5 m in, as far as pattern 1's bolts
 -- reach and as far as the crown's second point sits above it, is the rock mass beyond the skin.
 -- 15 m in, as far as pattern 2's long bolts reach, where the seed finds the loosened rock deepest,
--- is read where both points 5 m in fell (trends.lua).
+-- is read where the points 5 m in settle nothing, their blocks fallen (trends.lua).
 local left_points = { rock_gridpoint_near(-12, 0), rock_gridpoint_near(-12, -12) }
 local right_points = { rock_gridpoint_near(12, 0), rock_gridpoint_near(12, -12) }
 local left_points_5m = { rock_gridpoint_near(-17, 0), rock_gridpoint_near(-17, -12) }
