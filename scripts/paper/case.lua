@@ -248,23 +248,23 @@ local above_crown = rock_gridpoint_near(c.crown[1], c.crown[2] + 5)
 -- reach and as far as the crown's second point sits above it, is the rock mass beyond the skin.
 -- 15 m in, as far as pattern 2's long bolts reach, where the seed finds the loosened rock deepest,
 -- is read where the points 5 m in settle nothing, their blocks fallen (trends.lua).
-local left_points = { rock_gridpoint_near(-12, 0), rock_gridpoint_near(-12, -12) }
-local right_points = { rock_gridpoint_near(12, 0), rock_gridpoint_near(12, -12) }
-local left_points_5m = { rock_gridpoint_near(-17, 0), rock_gridpoint_near(-17, -12) }
-local right_points_5m = { rock_gridpoint_near(17, 0), rock_gridpoint_near(17, -12) }
-local left_points_15m = { rock_gridpoint_near(-27, 0), rock_gridpoint_near(-27, -12) }
-local right_points_15m = { rock_gridpoint_near(27, 0), rock_gridpoint_near(27, -12) }
+-- suffix: of the row's columns and the names in points_fallen; behind: m behind the face, the
+-- faces at x = -12 and 12 m (the cavern 24 m wide).
+local walls = { { suffix = "", behind = 0 }, { suffix = "_5m", behind = 5 }, { suffix = "_15m", behind = 15 } }
+for _, w in ipairs(walls) do
+  local x = 12 + w.behind
+  w.left = { rock_gridpoint_near(-x, 0), rock_gridpoint_near(-x, -12) }
+  w.right = { rock_gridpoint_near(x, 0), rock_gridpoint_near(x, -12) }
+end
 local function ux_of(points)
   local want, sum = {}, 0
   for _, p in ipairs(points) do want[p.id] = true end
   for g in gridpoints() do if want[g.id] then sum = sum + g.ux end end
   return sum / #points
 end
--- How far each wall has moved into the opening, the mean of its two points [m]: on the face, and
--- 5 m and 15 m behind it.
-local function wall_moves() return ux_of(left_points), -ux_of(right_points) end
-local function wall_moves_5m() return ux_of(left_points_5m), -ux_of(right_points_5m) end
-local function wall_moves_15m() return ux_of(left_points_15m), -ux_of(right_points_15m) end
+-- How far the left and the right wall have moved into the opening at one of `walls`' depths, the
+-- mean of each wall's two points [m].
+local function wall_moves(w) return ux_of(w.left), -ux_of(w.right) end
 -- The seed's Figure 12: the vertical displacement along a line 10 m above the crown. Its two
 -- halves' mean settlements, left and right of the axis (the point on it left out), say which side
 -- comes down more, which is what the seed reads off its Figure 12 [m].
@@ -337,12 +337,10 @@ local function points_fallen()
   end
   check("crown", { crown })
   check("5m_above_crown", { above_crown })
-  check("left_wall", left_points)
-  check("right_wall", right_points)
-  check("left_wall_5m", left_points_5m)
-  check("right_wall_5m", right_points_5m)
-  check("left_wall_15m", left_points_15m)
-  check("right_wall_15m", right_points_15m)
+  for _, w in ipairs(walls) do
+    check("left_wall" .. w.suffix, w.left)
+    check("right_wall" .. w.suffix, w.right)
+  end
   return table.concat(names, " ")
 end
 
@@ -398,9 +396,9 @@ local function result_row()
     if k.state == "slip" then r.slipping = r.slipping + 1 end
     if k.slip > 0 then r.slipped = r.slipped + 1 end
   end
-  r.left_moves, r.right_moves = wall_moves()
-  r.left_moves_5m, r.right_moves_5m = wall_moves_5m()
-  r.left_moves_15m, r.right_moves_15m = wall_moves_15m()
+  r.left_moves, r.right_moves = wall_moves(walls[1])
+  r.left_moves_5m, r.right_moves_5m = wall_moves(walls[2])
+  r.left_moves_15m, r.right_moves_15m = wall_moves(walls[3])
   r.profile_left, r.profile_right = profile_halves()
   r.bolts_broken, r.bolts_loaded = bolt_loads()
   r.seconds = os.time() - started
