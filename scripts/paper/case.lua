@@ -48,6 +48,11 @@
 --             joint sets are mirror images, and the order is the model's one asymmetry besides the
 --             mesh and what it carries; right first shows it is not what moves Case 1's left wall
 --             more (scripts/paper/README.md, "Where EDEM disagrees": Case 1's walls)
+--   mirror    true: the joints mirrored about x = 0 (edem.seed.region's mirror: they dip towards +x)
+--             [false]; with first = right the whole model is the mirror image of the one without,
+--             so what differs between the two, side for side, comes from the mesh and where
+--             crackseed{ auto } lays its cuts (scripts/paper/README.md, "Where EDEM disagrees": the
+--             walls' measuring points)
 --   judge_most  judge{ most }: at most this many sections break at a judgment (every 10
 --             cycles), those furthest past their strength first [0: all that fail]
 --   tolerance model{}'s geometric tolerance [7e-4]
@@ -104,6 +109,10 @@ local FIRST = tostring(setting("first", "left"))
 if FIRST ~= "left" and FIRST ~= "right" then
   error(("first must be left or right, got %s"):format(FIRST), 0)
 end
+local MIRROR = setting("mirror", false)
+if type(MIRROR) ~= "boolean" then
+  error(("mirror must be true or false, got %s"):format(MIRROR), 0)
+end
 local BY_MODE = setting("by_mode", false)
 if type(BY_MODE) ~= "boolean" then
   error(("by_mode must be true or false, got %s"):format(BY_MODE), 0)
@@ -120,7 +129,7 @@ local columns = { "case", "set", "depth", "bolts", "release", "steps", "cracks",
                   "left_wall_15m_m", "right_wall_15m_m", "profile_left_m", "profile_right_m", "slipping",
                   "slipped", "fallen", "bolts_laid", "bolts_skipped", "bolts_broken", "bolts_over_half_yield",
                   "cuts_left_out", "threads", "seconds", "prepass_stopped", "unconverged", "stopped",
-                  "points_fallen", "edge_m", "far_m", "first", "muck", "damping" }
+                  "points_fallen", "edge_m", "far_m", "first", "muck", "damping", "mirror" }
 for _, file in ipairs{ TABLE, STEPS_TABLE } do
   local existing = io.open(file, "r")
   if existing then
@@ -139,6 +148,7 @@ local tag = ("case%d_%s_h%g_%s"):format(CASE, SET, DEPTH, BOLTS == "none" and "n
 -- Runs that differ only in a nudged release (study.sh --members) keep their pictures apart.
 if RELEASE_OFFSET ~= 0 then tag = tag .. ("_release%d"):format(RELEASE) end
 if FIRST == "right" then tag = tag .. "_right_first" end
+if MIRROR then tag = tag .. "_mirror" end
 local started = os.time()
 
 local c = cavern.warhead{}
@@ -147,7 +157,7 @@ if FIRST == "right" then
   c.stages[2], c.stages[3] = c.stages[3], c.stages[2]
 end
 seed.region{ case = CASE, set = SET, depth = DEPTH, regions = c.stages, near = { c.outline }, edge = EDGE,
-             far = FAR, tolerance = TOLERANCE }
+             far = FAR, tolerance = TOLERANCE, mirror = MIRROR }
 local rock = seed[SET].rock
 
 -- 1. Where the rock mass yields, as one continuum (joints tied), over all the steps.
@@ -414,7 +424,7 @@ local function result_row()
                 prepass_note == "complete" and '""' or ('"' .. prepass_note .. '"'),
                 '"' .. table.concat(unconverged, " ") .. '"',
                 '"' .. stopped:gsub('"', "'") .. '"', '"' .. points_fallen() .. '"', EDGE, FAR, FIRST, MUCK,
-                DAMPING }
+                DAMPING, MIRROR }
   for i, v in ipairs(row) do row[i] = tostring(v) end
   return r, table.concat(row, ",")
 end

@@ -5,7 +5,9 @@
 -- Settings (--set KEY=VALUE):
 --   tables    CSV files of case.lua's rows, separated by commas [case_results.csv]; rows of one case
 --             (case, set, depth, bolts) with different releases are its members (study.sh
---             --members), and where one member has several rows the last one counts
+--             --members), and so is its mirror image (case.lua's mirror = true: study.sh
+--             --mirror), read with left and right swapped back, so that right is the side the
+--             joints dip towards in every row; where one member has several rows the last one counts
 --   set       the parameter set whose rows are compared [M]
 --   depth     the depth of the comparisons that are not about depth [158]
 --   step      N: compare each run's row after step N (the tables are case.lua's _steps files);
@@ -45,8 +47,23 @@ local function fields(line)
   return out
 end
 
+-- A mirrored run's row as the unmirrored model's: each left column and its right one swapped, and
+-- the fallen points' names.
+local function swap_sides(row)
+  local names = {}
+  for name in pairs(row) do if name:find("left", 1, true) then names[#names + 1] = name end end
+  for _, name in ipairs(names) do
+    local other = name:gsub("left", "right")
+    if row[other] ~= nil then row[name], row[other] = row[other], row[name] end
+  end
+  if type(row.points_fallen) == "string" then
+    row.points_fallen = row.points_fallen:gsub("%a+", { left = "right", right = "left" })
+  end
+end
+
 -- Per case key, per member (the run's release: study.sh --members runs each case several times,
--- the releases a few cycles apart), the rows in the order read.
+-- the releases a few cycles apart; "RELEASE mirrored" for a mirror image), the rows in the order
+-- read.
 local rows = {}
 local function key(case, depth, bolts) return ("%s/%g/%s"):format(case, depth, bolts) end
 for file in tostring(setting("tables", "case_results.csv")):gmatch("[^,]+") do
@@ -62,6 +79,10 @@ for file in tostring(setting("tables", "case_results.csv")):gmatch("[^,]+") do
       for i, name in ipairs(names) do row[name] = tonumber(values[i]) or values[i] end
       if row.set == SET then
         local k, member = key(row.case, row.depth, row.bolts), row.release or "default"
+        if row.mirror == "true" then
+          swap_sides(row)
+          member = ("%s mirrored"):format(member)
+        end
         rows[k] = rows[k] or {}
         rows[k][member] = rows[k][member] or {}
         table.insert(rows[k][member], row)
@@ -75,9 +96,10 @@ end
 local function members_of(k)
   local list = {}
   for member in pairs(rows[k]) do list[#list + 1] = member end
-  table.sort(list, function(a, b)
-    if type(a) == "number" and type(b) == "number" then return a < b end
-    return tostring(a) < tostring(b)
+  table.sort(list, function(a, b)  -- releases first, by number, then the mirrored ones
+    if type(a) ~= type(b) then return type(a) == "number" end
+    if type(a) == "number" then return a < b end
+    return a < b
   end)
   return list
 end
@@ -264,8 +286,13 @@ for k in pairs(rows) do
   local list = members_of(k)
   if #list > most then most, releases = #list, list end
 end
-local of_each = most > 1 and (", %d runs of each case (releases %s cycles a step; their numbers in that order)"):format(
-  most, table.concat(releases, ", ")) or ""
+local mirrored = false
+for _, member in ipairs(releases) do mirrored = mirrored or type(member) == "string" end
+local swapped = mirrored and "; a mirrored run's left and right swapped back, so right is where the joints dip" or ""
+local of_each = most > 1
+  and (", %d runs of each case (releases %s cycles a step; their numbers in that order%s)"):format(
+    most, table.concat(releases, ", "), swapped)
+  or ""
 local lines = { ("Set %s, %s%s. Trends of the seed paper (§3.4, §4, §5) in EDEM's runs:"):format(SET, when, of_each), "",
                 "| trend | EDEM | verdict |", "|---|---|---|" }
 local failed = 0

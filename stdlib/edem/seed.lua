@@ -12,6 +12,13 @@
 -- in-situ stress with the cavern roof (y = 24) `depth` below the ground (default 158 m) and K0
 -- (default 0.6), rollers on the sides and the base, the top loaded by the in-situ stress.
 --
+-- mirror = true mirrors the joints about x = 0 (the main set at 180 deg - its angle, dipping
+-- towards +x, its spacings in reverse order, so that every trace is the mirror image of one
+-- without it); the region, the stress and the boundaries are symmetric already. With a cavern
+-- whose stages are mirrored too (scripts/paper/case.lua's first = "right"), the whole model is the
+-- mirror image of the one without: what differs between the two, side for side, comes from the
+-- discretisation (the mesh, where crackseed{ auto } lays its cuts), not from the rock.
+--
 -- Optional keys for an excavation in the region (none given: the uniform model above):
 --   regions  list of { name = ..., polygon = ... } (e.g. edem.cavern's stages), each cut with
 --            region{} (glued outlines) after the joints, before zoning
@@ -60,11 +67,22 @@ function seed.region(t)
     error(("seed.region: set must be \"P\" or \"M\", got %s"):format(tostring(t.set)), 2)
   end
   local rock, joint = set.rock, set.joint
-  model{ title = ("seed region, Case %d joints, cross joints every %g m"):format(t.case or 3, cross),
+  if t.mirror ~= nil and type(t.mirror) ~= "boolean" then
+    error(("seed.region: mirror must be true or false, got %s"):format(tostring(t.mirror)), 2)
+  end
+  -- Traces at offsets d along the normal, mirrored, lie at -d along the mirrored set's normal:
+  -- the spacing list in reverse (edem's jset{} takes the list in turn up from its origin).
+  local angle, spacing = case.angle, case.spacing
+  if t.mirror then
+    angle, spacing = 180 - case.angle, {}
+    for i = #case.spacing, 1, -1 do spacing[#spacing + 1] = case.spacing[i] end
+  end
+  model{ title = ("seed region, Case %d joints%s, cross joints every %g m"):format(t.case or 3,
+                                                                              t.mirror and " mirrored" or "", cross),
          tolerance = t.tolerance }
   block{ x = {-100, 100}, y = {-90, 90} }
-  jset{ angle = case.angle, spacing = case.spacing }
-  jset{ angle = case.angle - 90, spacing = cross }
+  jset{ angle = angle, spacing = spacing }
+  jset{ angle = angle - 90, spacing = cross }
   for _, r in ipairs(t.regions or {}) do region{ name = r.name, polygon = r.polygon } end
   zone{ edge = edge, near = t.near, far = t.far, growth = t.growth }
   material{ "rock", density = rock.density, young = rock.young, poisson = rock.poisson }
