@@ -51,8 +51,8 @@
 --   mirror    true: the joints mirrored about x = 0 (edem.seed.region's mirror: they dip towards +x)
 --             [false]; with first = right the whole model is the mirror image of the one without,
 --             so what differs between the two, side for side, comes from the mesh and where
---             crackseed{ auto } lays its cuts (scripts/paper/README.md, "Where EDEM disagrees": the
---             walls' measuring points)
+--             crackseed{ auto } lays its cuts (scripts/paper/README.md, "Results", session 40;
+--             study.sh --mirror)
 --   judge_most  judge{ most }: at most this many sections break at a judgment (every 10
 --             cycles), those furthest past their strength first [0: all that fail]
 --   tolerance model{}'s geometric tolerance [7e-4]

@@ -32,9 +32,8 @@
 # The runs (Set M unless told otherwise): Cases 1, 2 and 3 at 158 m without bolts; Case 3 at
 # 212 m and 262 m without bolts; Case 3 at 158 m with bolt patterns 1 and 2; each --members times
 # (members after the first add _member-K to their names, the mirror image _member-mirror). Each
-# writes its own
-# row (OUT/TAG.csv, a row after each step in OUT/TAG_steps.csv) and pictures; OUT/study.csv and
-# OUT/steps.csv gather them; OUT/trends.md has the verdicts at the runs' ends, and
+# writes its own row (OUT/TAG.csv, a row after each step in OUT/TAG_steps.csv) and pictures;
+# OUT/study.csv and OUT/steps.csv gather them; OUT/trends.md has the verdicts at the runs' ends, and
 # OUT/trends_common_step.md after the last step all runs reached. Exit 1 when a run wrote no row
 # (a script error, not a stop: a stop is recorded in the row), or with --strict a trend fails.
 set -euo pipefail

@@ -98,7 +98,6 @@ local function members_of(k)
   for member in pairs(rows[k]) do list[#list + 1] = member end
   table.sort(list, function(a, b)  -- releases first, by number, then the mirrored ones
     if type(a) ~= type(b) then return type(a) == "number" end
-    if type(a) == "number" then return a < b end
     return a < b
   end)
   return list
@@ -287,7 +286,7 @@ for k in pairs(rows) do
   if #list > most then most, releases = #list, list end
 end
 local mirrored = false
-for _, member in ipairs(releases) do mirrored = mirrored or type(member) == "string" end
+for _, member in ipairs(releases) do mirrored = mirrored or tostring(member):find("mirrored", 1, true) ~= nil end
 local swapped = mirrored and "; a mirrored run's left and right swapped back, so right is where the joints dip" or ""
 local of_each = most > 1
   and (", %d runs of each case (releases %s cycles a step; their numbers in that order%s)"):format(

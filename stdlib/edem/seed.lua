@@ -77,9 +77,9 @@ function seed.region(t)
     angle, spacing = 180 - case.angle, {}
     for i = #case.spacing, 1, -1 do spacing[#spacing + 1] = case.spacing[i] end
   end
-  model{ title = ("seed region, Case %d joints%s, cross joints every %g m"):format(t.case or 3,
-                                                                              t.mirror and " mirrored" or "", cross),
-         tolerance = t.tolerance }
+  local title = ("seed region, Case %d joints%s, cross joints every %g m"):format(
+    t.case or 3, t.mirror and " mirrored" or "", cross)
+  model{ title = title, tolerance = t.tolerance }
   block{ x = {-100, 100}, y = {-90, 90} }
   jset{ angle = angle, spacing = spacing }
   jset{ angle = angle - 90, spacing = cross }
