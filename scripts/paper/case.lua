@@ -129,7 +129,7 @@ local columns = { "case", "set", "depth", "bolts", "release", "steps", "cracks",
                   "left_wall_15m_m", "right_wall_15m_m", "profile_left_m", "profile_right_m", "slipping",
                   "slipped", "fallen", "bolts_laid", "bolts_skipped", "bolts_broken", "bolts_over_half_yield",
                   "cuts_left_out", "threads", "seconds", "prepass_stopped", "unconverged", "stopped",
-                  "points_fallen", "edge_m", "far_m", "first", "muck", "damping", "mirror" }
+                  "points_fallen", "edge_m", "far_m", "first", "muck", "damping", "mirror", "crack_length_m" }
 for _, file in ipairs{ TABLE, STEPS_TABLE } do
   local existing = io.open(file, "r")
   if existing then
@@ -389,9 +389,10 @@ local unconverged = {}       -- steps whose solve reached max_cycles short of th
 
 -- The result row: after each step into TABLE's _steps file, and at the end into TABLE.
 local function result_row()
-  local r = { tension = 0, shear = 0, left = 0, right = 0 }
+  local r = { tension = 0, shear = 0, left = 0, right = 0, length = 0 }
   local left_y, right_y = 0, 0
   for k in cracks() do
+    r.length = r.length + k.length
     if k.mode == "tension" then r.tension = r.tension + 1 else r.shear = r.shear + 1 end
     if k.x < 0 then
       r.left, left_y = r.left + 1, left_y + k.y
@@ -424,7 +425,7 @@ local function result_row()
                 prepass_note == "complete" and '""' or ('"' .. prepass_note .. '"'),
                 '"' .. table.concat(unconverged, " ") .. '"',
                 '"' .. stopped:gsub('"', "'") .. '"', '"' .. points_fallen() .. '"', EDGE, FAR, FIRST, MUCK,
-                DAMPING, MIRROR }
+                DAMPING, MIRROR, ("%.2f"):format(r.length) }
   for i, v in ipairs(row) do row[i] = tostring(v) end
   return r, table.concat(row, ",")
 end
