@@ -215,15 +215,32 @@ local function trend(statement, needs, holds, describe, points)
   results[#results + 1] = { statement = statement, verdict = verdict, numbers = numbers }
 end
 
+-- The broken sections' total length after the count, where every row has it (case.lua since
+-- session 41): a section is one zone edge, so the count follows the zone size and the geometric
+-- tolerance, and the length much less. The verdict stays on the count, the seed's measure.
+local function broken_length(v, labels)
+  local parts = {}
+  for i, label in ipairs(labels) do
+    local text = v(i, "crack_length_m", "%.0f", nil, "none")
+    if text:find("none", 1, true) then return "" end
+    parts[i] = label .. text
+  end
+  return ("; broken length %s m"):format(table.concat(parts, ", "))
+end
+
 local D = DEPTH
 trend("Case 3 (denser joints) gives more new cracks than Case 2", { { 3, D, "none" }, { 2, D, "none" } },
   function(c3, c2) return c3.cracks > c2.cracks end,
-  function(v) return ("Case 3: %s, Case 2: %s cracks"):format(v(1, "cracks"), v(2, "cracks")) end)
+  function(v)
+    return ("Case 3: %s, Case 2: %s cracks%s"):format(v(1, "cracks"), v(2, "cracks"),
+      broken_length(v, { "Case 3: ", "Case 2: " }))
+  end)
 trend("The crack count grows with depth, 158 < 212 < 262 m (Case 3)",
   { { 3, 158, "none" }, { 3, 212, "none" }, { 3, 262, "none" } },
   function(a, b, c) return a.cracks < b.cracks and b.cracks < c.cracks end,
   function(v)
-    return ("158 m: %s, 212 m: %s, 262 m: %s cracks"):format(v(1, "cracks"), v(2, "cracks"), v(3, "cracks"))
+    return ("158 m: %s, 212 m: %s, 262 m: %s cracks%s"):format(v(1, "cracks"), v(2, "cracks"), v(3, "cracks"),
+      broken_length(v, { "158 m: ", "212 m: ", "262 m: " }))
   end)
 for _, case in ipairs{ 1, 2, 3 } do
   trend(("Tension cracks are the majority without bolts (Case %d)"):format(case), { { case, D, "none" } },

@@ -4,7 +4,8 @@
 -- its block. The fixture's numbers are made up to give each verdict (trends_members.csv: two runs
 -- of each of the study's seven, releases 100 and 110; trends_members_stop.csv: a third run of Case
 -- 2 that stopped at step 12; trends_members_fallen.csv and trends_members_deeper.csv: third runs
--- whose measuring points fell with their blocks; trends_members_mirror.csv: mirror images).
+-- whose measuring points fell with their blocks; trends_members_mirror.csv: mirror images;
+-- trends_members_length.csv: one run of each with the broken sections' length).
 local here = debug.getinfo(1, "S").source:match("^@(.*[/\\])") or "./"
 local trends = here .. "../../scripts/paper/trends.lua"
 
@@ -99,6 +100,17 @@ assert(text:find("at least 0.450 m (right) and 0.200, 0.200, 0.200 m (left)", 1,
 expect(found, "The side the joints dip towards (right) moves more (Case 2)", "within the spread (1 of 3 pairings)")
 expect(found, "Case 2's cracks on the right side sit higher than Case 1's", "within the spread (3 of 6 pairings)")
 assert(text:find("Case 2 10.0, 10.5, 13.0 m (100, 105, 120 cracks)", 1, true), "the swapped side's count and height")
+
+-- Rows with the broken sections' length (case.lua since session 41): the two count trends give it
+-- after the counts, and still judge on the counts (Case 3 has more cracks, 320 against 300, but
+-- less length, 380 against 390 m). Rows without the column give no length (above).
+assert(not text:find("broken length", 1, true), "no length from rows without it")
+found, text = verdicts(here .. "trends_members_length.csv")
+expect(found, "Case 3 (denser joints) gives more new cracks than Case 2", "holds")
+assert(text:find("Case 3: 320, Case 2: 300 cracks; broken length Case 3: 380, Case 2: 390 m", 1, true),
+  "the broken length after the count")
+assert(text:find("262 m: 380 cracks; broken length 158 m: 380, 212 m: 410, 262 m: 450 m", 1, true),
+  "the depth trend's lengths")
 
 if failures > 0 then error(("%d verdicts wrong"):format(failures), 0) end
 print("all verdicts as expected")
