@@ -39,6 +39,8 @@ int run_joint_material(lua_State*, Context& context, const Args& args) {
   def.dilation = args.number("dilation");
   def.residual_cohesion = args.number("residual_cohesion");
   if (args.has("residual_friction")) def.residual_friction = args.number("residual_friction");
+  def.fracture_energy = args.number("fracture_energy");
+  def.shear_fracture_energy = args.number("shear_fracture_energy");
   context.model().add_joint_material(def);
   return 0;
 }
@@ -68,7 +70,17 @@ const Command& joint_material_command() {
           "cohesion and tension hold only until the contact first slips or opens; then it "
           "has no tension and its residual cohesion and friction (UDEC's Coulomb slip with "
           "residual strength; by default zero and the friction; residual_cohesion = cohesion "
-          "keeps it). Dilation opens the joint while it slips. Defining a name again replaces "
+          "keeps it). Dilation opens the joint while it slips. With fracture_energy (opening) or "
+          "shear_fracture_energy (slip), the bond softens instead of dropping at once, "
+          "linearly, as a cohesive crack (Hillerborg): the tensile strength falls to 0 at an "
+          "opening of 2 fracture_energy / tension past the elastic one, unloading towards "
+          "zero opening; the cohesion falls to residual_cohesion at a plastic slip of 2 "
+          "shear_fracture_energy / (cohesion - residual_cohesion), the friction staying at its "
+          "peak meanwhile; what is left is the smaller of the two. (A shear_fracture_energy "
+          "below cohesion^2 / (2 ks) loses the cohesion faster than the contact unloads: the "
+          "slip snaps through.) A potential crack whose "
+          "crack takes such a material breaks into a bonded crack, carrying the section's "
+          "traction, tension too, until its strength runs out. Defining a name again replaces "
           "that material, in its contacts too.",
       .positional =
           {
@@ -98,11 +110,18 @@ const Command& joint_material_command() {
                "cohesion once it has slipped or opened, at most cohesion"},
               {"residual_friction", Type::number, "deg", from_below(0, 90), kOptional,
                "friction angle once it has slipped or opened (default: friction)"},
+              {"fracture_energy", Type::number, "J/m^2", ge(0), "0",
+               "energy to break the bond in opening: softens the tension (0: drops at once)"},
+              {"shear_fracture_energy", Type::number, "J/m^2", ge(0), "0",
+               "energy to break the bond in slip: softens the cohesion (0: drops at once)"},
           },
       .run = run_joint_material,
       .usage =
           "joint_material{ \"joint\", kn = 1.2e7, ks = 3.6e6, friction = 31.2 }\n"
-          "joint_material{ \"seed\", kn_law = \"seed-cubic\", ks = 8.07e7, friction = 31.2 }",
+          "joint_material{ \"seed\", kn_law = \"seed-cubic\", ks = 8.07e7, friction = 31.2 }\n"
+          "joint_material{ \"cohesive\", kn = 1.88e9, ks = 1.88e9, friction = 34, "
+          "cohesion = 0.143e6, tension = 0.0546e6, fracture_energy = 20, "
+          "shear_fracture_energy = 100 }",
   };
   return command;
 }

@@ -1,7 +1,7 @@
 // The force of one contact over one step: geometry from the current positions, the normal
 // stress from the closure (joint_law.hpp), the shear force incrementally, then Coulomb slip,
 // dilation and the drop to residual strength (cohesion and friction; no tension) once it slips
-// or opens.
+// or opens, or, for a softening bond, once its strength has run out (JointParams::softens).
 #pragma once
 
 #include <algorithm>
@@ -86,9 +86,21 @@ namespace edem {
   double sn = normal_stress(p, c.closure);
   const double length = share * carrying_length(c, -gap);
   bool open = !(length > 0.0);  // past the corner, or a tip not pressed in
-  // Fails in tension: the bond is gone. (A bond with no tensile strength between faces that
-  // start together must not break on the round-off of its gap.)
-  if (!open && c.intact && sn < -p.tension && c.closure < -1e-9 * c.limit) {
+  double left = 1.0;            // of a softening bond's strength (joint_law.hpp)
+  // (A bond with no tensile strength between faces that start together must not break on the
+  // round-off of its gap.)
+  const bool opening = c.closure < -1e-9 * c.limit;
+  if (!open && c.intact && p.softens) [[unlikely]] {
+    if (opening) c.opened = std::max(c.opened, -c.closure);
+    left = bond_left(p, c.opened, c.slip);
+    if (!(left > 0.0)) {
+      c.intact = false;
+      open = c.closure <= 0.0;
+    } else if (c.closure < 0.0) {  // towards zero opening from the largest (secant)
+      const double largest = std::max(c.opened, p.tension / p.kn_zero);
+      sn = largest > 0.0 ? p.tension * left * c.closure / largest : 0.0;
+    }
+  } else if (!open && c.intact && sn < -p.tension && opening) {  // fails in tension: gone
     c.intact = false;
     open = true;
   } else if (!open && !c.intact && c.closure <= 0.0) {
@@ -103,15 +115,18 @@ namespace edem {
   }
   const double ks = p.ks * length;
   const double trial = c.fs - ks * dus;
+  const double cohesion =
+      p.softens ? p.residual_cohesion + (p.cohesion - p.residual_cohesion) * left : p.cohesion;
   const double limit =
-      std::max(0.0, (c.intact ? p.cohesion + p.tan_friction * sn
-                              : p.residual_cohesion + p.tan_residual_friction * sn) * length);
+      std::max(0.0, (c.intact ? cohesion + p.tan_friction * sn
+                              : p.residual_cohesion + p.tan_residual_friction * sn) *
+                        length);
   if (std::fabs(trial) > limit) {
     const double plastic = (std::fabs(trial) - limit) / ks;
     c.fs = std::copysign(limit, trial);
     c.slip += plastic;
     if (sn > 0.0) c.dilation += p.tan_dilation * plastic;
-    c.intact = false;
+    c.intact = c.intact && p.softens && bond_left(p, c.opened, c.slip) > 0.0;
     c.state = ContactState::slip;
   } else {
     c.fs = trial;

@@ -91,6 +91,7 @@ struct Contact {
   double fs = 0.0;        // shear force on the gridpoint along the edge direction [N/m]
   double us = 0.0;        // shear displacement since it formed [m]
   double slip = 0.0;      // plastic shear displacement, accumulated as a length [m]
+  double opened = 0.0;    // a softening bond's largest opening, the closure's negative [m]
   double fx = 0.0, fy = 0.0;  // force on the gridpoint this cycle [N/m]
   ContactState state = ContactState::elastic;
   bool intact = false;    // still has its cohesion and tensile strength

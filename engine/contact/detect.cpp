@@ -119,6 +119,7 @@ struct Found {
   Vec2 normal;
   Vec2 insitu_force;   // consistent nodal force of the in-situ traction, this side's half [N/m]
   bool insitu = false;
+  bool cracked = false;  // the traction is a fresh crack's (its section broke since the last)
 };
 
 // The nearest touchable edge of `block` within `reach` of node k's gridpoint, or nothing:
@@ -213,11 +214,16 @@ bool continues_outline(const Mechanics& m, const Found& to, Vec2 p, Vec2 n_e, do
   return false;
 }
 
+// The section edge `edge` belongs to, -1 for none.
+int section_of(const Mechanics& m, int edge) {
+  return m.edge_section.empty() ? -1 : m.edge_section[static_cast<size_t>(edge)];
+}
+
 // The stress whose traction a contact found new on edge `edge` takes: that of the section the
 // edge belongs to if it broke since the last detection (its faces were carrying it), else the
 // in-situ field (with_insitu: the first detection after insitu{}), else none.
 std::optional<Stress> traction_source(const Mechanics& m, int edge, Vec2 point, bool with_insitu) {
-  const int section = m.edge_section.empty() ? -1 : m.edge_section[static_cast<size_t>(edge)];
+  const int section = section_of(m, edge);
   if (section >= 0) {
     const Section& s = m.sections[static_cast<size_t>(section)];
     if (!s.fresh) return std::nullopt;
@@ -371,11 +377,13 @@ std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t
     const double covered = covered_length(m, p, middle, to->edge);
     to->length += 0.5 * covered * std::max(0.0, -dot(n_e, to->normal));
     if (with_traction && covered > 0.0) {
-      if (const auto s = traction_source(m, cb.node_edges[static_cast<size_t>(i)], p + (1.0 / 3.0) * (far_end - p), with_insitu)) {
+      const int own = cb.node_edges[static_cast<size_t>(i)];
+      if (const auto s = traction_source(m, own, p + (1.0 / 3.0) * (far_end - p), with_insitu)) {
         // This side's share of the edge's consistent nodal force, half * sigma . n, for the
         // part that lies over the other block.
         to->insitu_force = to->insitu_force + 0.5 * covered * Vec2{s->xx * n_e.x + s->xy * n_e.y, s->xy * n_e.x + s->yy * n_e.y};
         to->insitu = true;
+        to->cracked = to->cracked || section_of(m, own) >= 0;
       }
     }
   }
@@ -591,6 +599,7 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
         c.slip = old->slip;
         c.state = old->state;
         c.intact = old->intact;
+        c.opened = old->opened;
       } else {
         // Already pressed in, and nothing held this gridpoint back before: it went into the other
         // block unseen. (At a junction a gridpoint held by one block may turn to its neighbour:
@@ -601,13 +610,15 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
           if (held == set.list.end() || held->node != c.node) ++late;
         }
         // Joints as built keep their strength until they fail; blocks that touch later do not
-        // stick together.
-        c.intact = first && (p.cohesion > 0.0 || p.tension > 0.0);
+        // stick together. A fresh crack whose joint material softens starts bonded: its
+        // strength runs out over the opening or slip its fracture energies allow (a cohesive
+        // crack), where one that does not soften has lost it already.
+        c.intact = (first || (f.cracked && p.softens)) && (p.cohesion > 0.0 || p.tension > 0.0);
         c.state = c.intact ? ContactState::bonded : ContactState::elastic;
       }
       // A fresh crack's faces take the traction the section carried, if pressing (a crack
-      // carries no tension), on new contacts only: one that was there keeps its own force
-      // for the part it had. insitu{} sets every contact's.
+      // carries no tension; a cohesive one, bonded, takes it whole), on new contacts only: one
+      // that was there keeps its own force for the part it had. insitu{} sets every contact's.
       // (A tip not yet pressed in, with none of its own length, has nothing to take it by.)
       if (f.insitu && (with_insitu || !kept) && carrying_length(c, -f.gap) > 0.0) {
         const Vec2 a = at(m, edge.a), b = at(m, edge.b);
@@ -616,7 +627,7 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
         // The half traction on this side, as the contact's force on its gridpoint.
         c.sn = dot(f.insitu_force, f.normal) / carrying_length(c, -gap);
         c.fs = dot(f.insitu_force, s);
-        if (!with_insitu && c.sn < 0.0) c.sn = c.fs = 0.0;
+        if (!with_insitu && c.sn < 0.0 && !c.intact) c.sn = c.fs = 0.0;
         c.closure0 = closure_at(p, c.sn) + gap;
         c.closure = c.closure0 - gap;
         c.dilation = c.us = c.slip = 0.0;

@@ -75,6 +75,20 @@ JointParams joint_params(const JointMaterialDef& def) {
   if (def.dilation > residual_friction)  // it dilates while slipping, at residual strength
     fail("dilation must be at most residual_friction = {} degrees, got {}", residual_friction, def.dilation);
   p.tan_residual_friction = std::tan(residual_friction * M_PI / 180.0);
+  check_finite_ge0(def.fracture_energy, "fracture_energy");
+  check_finite_ge0(def.shear_fracture_energy, "shear_fracture_energy");
+  if (def.fracture_energy > 0.0 && !(def.tension > 0.0))
+    fail("fracture_energy = {} needs a tension > 0 to soften from", def.fracture_energy);
+  if (def.shear_fracture_energy > 0.0 && !(def.cohesion > def.residual_cohesion))
+    fail(
+        "shear_fracture_energy = {} needs a cohesion above residual_cohesion = {} to soften from, "
+        "got cohesion = {}",
+        def.shear_fracture_energy, def.residual_cohesion, def.cohesion);
+  p.softens = def.fracture_energy > 0.0 || def.shear_fracture_energy > 0.0;
+  p.opening_at_loss = def.fracture_energy > 0.0 ? 2.0 * def.fracture_energy / def.tension : 0.0;
+  p.slip_at_loss = def.shear_fracture_energy > 0.0
+                       ? 2.0 * def.shear_fracture_energy / (def.cohesion - def.residual_cohesion)
+                       : 0.0;
   const bool kn_given = !std::isnan(def.kn);
   switch (def.law) {
     case NormalLaw::linear:
@@ -112,7 +126,26 @@ JointParams joint_params(const JointMaterialDef& def) {
       break;
     }
   }
+  // Past the peak the traction must fall as the opening grows: the linear branch from the peak
+  // opening tension / kn_zero to 2 G_I / tension needs G_I above the elastic energy at the peak.
+  if (def.fracture_energy > 0.0 && !(p.opening_at_loss > def.tension / p.kn_zero))
+    fail(
+        "fracture_energy must be more than tension^2 / (2 kn) = {:.6g} J/m^2 (the elastic energy "
+        "at the peak), got {}",
+        def.tension * def.tension / (2.0 * p.kn_zero), def.fracture_energy);
   return p;
+}
+
+double bond_left(const JointParams& p, double opened, double slip) {
+  const double peak = p.tension / p.kn_zero;
+  double in_opening = 1.0;
+  if (opened > peak)
+    in_opening = p.opening_at_loss > 0.0
+                     ? std::max(0.0, (p.opening_at_loss - opened) / (p.opening_at_loss - peak))
+                     : 0.0;
+  const double in_slip =
+      p.slip_at_loss > 0.0 ? std::max(0.0, 1.0 - slip / p.slip_at_loss) : (slip > 0.0 ? 0.0 : 1.0);
+  return std::min(in_opening, in_slip);
 }
 
 double normal_stress(const JointParams& p, double closure) {

@@ -23,6 +23,19 @@ struct JointParams {
   double residual_cohesion = 0.0;      // [Pa]
   double tan_residual_friction = 0.0;  // [-]
   double tan_dilation = 0.0;  // [-]
+  // A softening bond (JointMaterialDef::fracture_energy, shear_fracture_energy > 0) loses its
+  // strength over an opening or a slip instead of at once (Hillerborg's cohesive crack, linear):
+  //   tension: up to the peak, kn_zero times the opening; past it, the tensile strength falls
+  //     linearly to 0 at the opening 2 G_I / tension, and unloading heads back to zero opening
+  //     (secant), so that the area under traction against the opening past the elastic part
+  //     is G_I;
+  //   shear: the cohesion falls linearly to residual_cohesion at the plastic slip
+  //     2 G_II / (cohesion - residual_cohesion), the friction staying at its peak meanwhile.
+  // What is left of the bond is the smaller of the two fractions (bond_left); when none is
+  // left the contact is no longer intact. 0: that mode drops at once, as without softening.
+  bool softens = false;
+  double opening_at_loss = 0.0;  // 2 G_I / tension [m]
+  double slip_at_loss = 0.0;     // 2 G_II / (cohesion - residual_cohesion) [m]
   // Staged law: stage i holds from stage_closure[i] on, with stiffness stage_kn[i] and the
   // stress stage_stress[i] at its start.
   std::vector<double> stage_closure, stage_kn, stage_stress;
@@ -39,6 +52,10 @@ double normal_stress(const JointParams& p, double closure);
 
 // The closure at which the law gives `stress` (its inverse; negative stress: opening).
 double closure_at(const JointParams& p, double stress);
+
+// What is left of a softening bond's strength [0, 1], after the largest opening `opened`
+// (its closure's negative) and the plastic slip `slip` since it formed [m].
+double bond_left(const JointParams& p, double opened, double slip);
 
 // The seed paper's curve itself, unclamped, in SI: sn [Pa] at closure v [m] (for tests).
 double seed_cubic_raw(double v);

@@ -22,6 +22,13 @@ namespace edem {
 // is lost in a checkpoint, so each list follows its struct's declaration.
 
 template <class Ar> void fields(Ar& ar, RegionRef& r) { ar("name", r.name); ar("polygon", r.polygon); }
+// A member that files of the same schema written before it existed lack: `fallback` then.
+template <class Ar, class T>
+void optional_member(Ar& ar, const char* name, T& value, T fallback) {
+  std::optional<T> read = value;
+  ar(name, read);
+  value = read.value_or(fallback);
+}
 template <class Ar> void fields(Ar& ar, BlockDef& b) { ar("polygon", b.polygon); }
 template <class Ar> void fields(Ar& ar, JointSetDef& j) {
   ar("angle", j.angle); ar("spacing", j.spacing); ar("origin", j.origin); ar("trace", j.trace);
@@ -68,6 +75,9 @@ template <class Ar> void fields(Ar& ar, JointMaterialDef& j) {
   ar("tension", j.tension); ar("residual_cohesion", j.residual_cohesion);
   ar("residual_friction", j.residual_friction); ar("dilation", j.dilation); ar("law", j.law);
   ar("kn_table", j.kn_table);
+  // Optional: schema-1 files written before softening bonds have none (theirs dropped at once).
+  optional_member(ar, "fracture_energy", j.fracture_energy, 0.0);
+  optional_member(ar, "shear_fracture_energy", j.shear_fracture_energy, 0.0);
 }
 template <class Ar> void fields(Ar& ar, JointParams& p) {
   ar("law", p.law); ar("kn", p.kn); ar("ks", p.ks); ar("tan_friction", p.tan_friction); ar("cohesion", p.cohesion);
@@ -75,6 +85,9 @@ template <class Ar> void fields(Ar& ar, JointParams& p) {
   ar("tan_residual_friction", p.tan_residual_friction); ar("tan_dilation", p.tan_dilation);
   ar("stage_closure", p.stage_closure); ar("stage_kn", p.stage_kn); ar("stage_stress", p.stage_stress);
   ar("kn_zero", p.kn_zero); ar("kn_max", p.kn_max);
+  optional_member(ar, "softens", p.softens, false);  // as the material's fracture energies
+  optional_member(ar, "opening_at_loss", p.opening_at_loss, 0.0);
+  optional_member(ar, "slip_at_loss", p.slip_at_loss, 0.0);
 }
 template <class Ar> void fields(Ar& ar, JassignDef& j) {
   ar("material", j.material); ar("set", j.set); ar("kind", j.kind); ar("region", j.region);
@@ -102,11 +115,13 @@ template <class Ar> void fields(Ar& ar, Contact& c) {
   ar("wedge", c.wedge);
   ar("leads_past_a", c.leads_past_a);
   ar("leads_past_b", c.leads_past_b);
+  ar("opened", c.opened);
 }
 // Schema-1 files written before tips had their own length lack it (and had no tips); those
-// written before session 33 lack the leads_past flags (their tips faded past any corner).
+// written before session 33 lack the leads_past flags (their tips faded past any corner), and
+// those before session 42 a softening bond's opening (they had none).
 std::vector<const char*> later_members(const Contact*) {
-  return {"wedge", "leads_past_a", "leads_past_b"};
+  return {"wedge", "leads_past_a", "leads_past_b", "opened"};
 }
 template <class Ar> void fields(Ar& ar, ContactSet& s) {
   ar("list", s.list); ar("gather_first", s.gather_first); ar("gather", s.gather); ar("rows", s.rows);

@@ -55,6 +55,10 @@ struct JointMaterialDef {
   double residual_cohesion = 0.0;      // [Pa], at most cohesion
   double residual_friction = kUnset;   // [deg], unset: friction
   double dilation = 0.0;   // [deg], at most friction
+  // Softening instead of the drop (joint_law.hpp): the energy per unit area the bond takes to
+  // break in opening and in slip [J/m^2]; 0: it drops at once.
+  double fracture_energy = 0.0;
+  double shear_fracture_energy = 0.0;
   NormalLaw law = NormalLaw::linear;
   // Stages {closure from [m], kn [Pa/m]}: closures increasing from 0.
   std::vector<std::array<double, 2>> kn_table;

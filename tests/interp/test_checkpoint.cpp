@@ -131,6 +131,48 @@ TEST_F(Checkpoint, RestoredRunGoesOnBitForBitMidStage) {
   }
 }
 
+// A bar pulled apart through a cohesive crack (joint_material{ fracture_energy }) half way down its
+// softening, then pushed back a little and saved: a bond's largest opening, which sets what it
+// carries on the way back, is carried, so the restored run goes on bit for bit.
+TEST_F(Checkpoint, RestoredRunWithACohesiveCrackSofteningGoesOnBitForBit) {
+  const std::string bar = R"(
+    block{ x = { -0.1, 0.1 }, y = { 0, 1 } }
+    crackseed{ angle = 0, spacing = 10, origin = { 0, 0.5 }, material = "strength", after = "cohesive" }
+    zone{ edge = 0.1 }
+    material{ "rock", young = 415.52e6, poisson = 0.136, density = 1505 }
+    material{ "strength", model = "mohr", young = 415.52e6, poisson = 0.136, cohesion = 0.143e6,
+              friction = 34, tension = 0.0546e6 }
+    assign{ material = "rock" }
+    joint_material{ "cohesive", kn = 1880e6, ks = 1880e6, friction = 34, cohesion = 0.143e6,
+                    tension = 0.0546e6, fracture_energy = 20 }
+    judge{ every = 10 }
+    boundary{ side = "bottom", fix = "y" }
+    boundary{ polygon = { { -0.005, -0.005 }, { 0.005, -0.005 }, { 0.005, 0.005 }, { -0.005, 0.005 } }, fix = "x" }
+    boundary{ side = "top", yvel = 1e-7 }
+    calls = 0
+  )";
+  const char* softening = R"(
+    softening = 0
+    for c in contacts() do if c.state == "bonded" and c.fn > 1 and c.fn < 0.9 * 0.0546e6 * c.length then  -- tension
+      softening = softening + 1 end end
+  )";
+  Interpreter whole({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+  const std::string back = "cycle(4000)\nboundary{ side = 'top', yvel = -1e-7 }\ncycle(500)\n";
+  expect_runs(whole, bar + back + "cycle(1000)\n" + kDump);
+  const std::string expected = global(whole, "dump");
+  ASSERT_FALSE(expected.empty());
+  {
+    // Counted after the save: a contacts() between cycle()s finds the contacts then, which can
+    // change the run (the closing note of session 42).
+    Interpreter first({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+    expect_runs(first, bar + back + "save('" + file("mid.h5") + "')\n" + softening);
+    EXPECT_GT(std::stoi(global(first, "softening")), 0) << "no bond is softening at the save";
+  }
+  Interpreter second({.quiet = true, .threads = 2, .stdlib_dirs = {}});
+  expect_runs(second, "restore('" + file("mid.h5") + "')\ncalls = 0\ncycle(1000)\n" + kDump);
+  EXPECT_TRUE(global(second, "dump") == expected) << "restored differs";
+}
+
 // Output frames taken while the model cycles (every 7 cycles, so some right after sections broke,
 // when the contacts are not current) leave the run as it would be without them: through the
 // release's 300 cycles and 300 more, where the damping adapts and contacts are found again.
