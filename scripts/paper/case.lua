@@ -56,6 +56,12 @@
 --   judge_most  judge{ most }: at most this many sections break at a judgment (every 10
 --             cycles), those furthest past their strength first [0: all that fail]
 --   tolerance model{}'s geometric tolerance [7e-4]
+--   fracture_energy, shear_fracture_energy  J/m^2: a broken section's crack softens as a
+--             cohesive crack (joint_material{}'s keys) from the set's intact strength (its
+--             tension, cohesion and friction) to the joints' friction, instead of being a joint
+--             at once [0, 0: a joint at once, the seed's rule]; not the seed's method, and not in
+--             the result row: a departure tried in session 42 (scripts/paper/README.md, "Results",
+--             session 42)
 --   table     CSV file the result row is appended to [case_results.csv]; a row after each step
 --             goes to the same name with _steps before .csv; either, if there already, must have
 --             the columns this script writes
@@ -97,6 +103,13 @@ local SIMILAR, TOLERANCE = setting("similar", 45), setting("tolerance", 7e-4)
 local MIN_ANGLE = setting("min_angle", 30)
 local JUDGE_MOST = setting("judge_most", 0)
 local ORIGIN_X, ORIGIN_Y = setting("origin_x", nil), setting("origin_y", nil)
+local FRACTURE_ENERGY, SHEAR_FRACTURE_ENERGY = setting("fracture_energy", 0), setting("shear_fracture_energy", 0)
+for key, value in pairs({ fracture_energy = FRACTURE_ENERGY, shear_fracture_energy = SHEAR_FRACTURE_ENERGY }) do
+  if type(value) ~= "number" or value < 0 then
+    error(("%s must be a number >= 0 (J/m^2), got %s"):format(key, value), 0)
+  end
+end
+local COHESIVE = FRACTURE_ENERGY > 0 or SHEAR_FRACTURE_ENERGY > 0
 local MUCK = tostring(setting("muck", "moved"))
 if MUCK ~= "moved" and MUCK ~= "opening" then
   error(("muck must be moved or opening, got %s"):format(MUCK), 0)
@@ -149,6 +162,7 @@ local tag = ("case%d_%s_h%g_%s"):format(CASE, SET, DEPTH, BOLTS == "none" and "n
 if RELEASE_OFFSET ~= 0 then tag = tag .. ("_release%d"):format(RELEASE) end
 if FIRST == "right" then tag = tag .. "_right_first" end
 if MIRROR then tag = tag .. "_mirror" end
+if COHESIVE then tag = tag .. "_cohesive" end
 local started = os.time()
 
 local c = cavern.warhead{}
@@ -186,8 +200,14 @@ plot{ file = tag .. "_prepass.png", show = { "prepass", "joints" }, window = { -
 
 -- 2. Potential cracks there, then the discontinuum.
 judge{ most = JUDGE_MOST }
+if COHESIVE then
+  local joint = seed[SET].joint
+  joint_material{ "cohesive", kn = joint.kn, kn_law = joint.kn_law, ks = joint.ks, friction = rock.friction,
+                  cohesion = rock.cohesion, tension = rock.tension, residual_friction = joint.friction,
+                  fracture_energy = FRACTURE_ENERGY, shear_fracture_energy = SHEAR_FRACTURE_ENERGY }
+end
 local groups = crackseed{ auto = pre, spacing = 4.8, material = "intact", similar = SIMILAR, min_angle = MIN_ANGLE,
-                          origin = ORIGIN, by_mode = BY_MODE }
+                          origin = ORIGIN, by_mode = BY_MODE, after = COHESIVE and "cohesive" or nil }
 material{ "rock", density = rock.density, young = rock.young, poisson = rock.poisson }
 assign{ material = "rock" }
 local n = info()
