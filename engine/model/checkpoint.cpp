@@ -246,6 +246,9 @@ template <class Ar> void fields(Ar& ar, Mechanics& m) {
   ar("bolt_hosts", m.bolt_hosts); ar("fresh_cracks", m.fresh_cracks);
   // derived by prepare()
   ar("fits", m.fits); ar("keep_fits", m.keep_fits); ar("dirty", m.dirty); ar("geometry", m.geometry);
+  // Optional: schema-1 files written before it existed have none (their next cycle restarted
+  // the damping only if the model was dirty).
+  optional_member(ar, "restart_damping", m.restart_damping, false);
   ar("active", m.active); ar("block_live", m.block_live); ar("mates", m.mates); ar("mass", m.mass);
   ar("zone_rows", m.zone_rows); ar("real_mass", m.real_mass); ar("stiffness", m.stiffness); ar("weight", m.weight);
   ar("step", m.step); ar("critical_step", m.critical_step); ar("applied_magnitude", m.applied_magnitude);

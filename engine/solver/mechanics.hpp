@@ -206,6 +206,9 @@ struct Mechanics {
   SectionFits fits;
   bool keep_fits = false;              // the next prepare() keeps them (only nodes changed)
   bool dirty = true;
+  // A prepare() of a changed model since the adaptive damping last started: the next cycle starts
+  // it again, whoever prepared (a view between cycles must not change the run).
+  bool restart_damping = false;
   std::vector<ZoneGeometry> geometry;  // per mesh zone
   std::vector<int> active;             // mesh zones that are cycled (material not null)
   std::vector<char> block_live;        // per mesh block: has an active zone

@@ -397,6 +397,7 @@ void prepare(Mechanics& m, const Mesh& mesh) {
   split_among_threads(m);  // once the active zones are known
   m.info.step = m.step;
   m.dirty = false;
+  m.restart_damping = true;
 }
 
 }  // namespace edem

@@ -166,6 +166,7 @@ void start_adaptive(Mechanics& m) {
   m.last_kinetic = 0.0;
   m.growth_span = 0;
   m.growth_checks = 0;
+  m.restart_damping = false;
 }
 
 // A restored checkpoint holds no Lua functions: those it had must be given again first.
@@ -184,12 +185,8 @@ void check_functions_given(const Mechanics& m) {
 SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double target_ratio) {
   if (m.cycling_now) fail("cannot cycle from inside a callback or history while cycling");
   check_functions_given(m);
-  if (m.dirty) {
-    prepare(m, mesh);
-    start_adaptive(m);
-  } else {
-    prepare(m, mesh);  // the thread count may have changed
-  }
+  prepare(m, mesh);  // a changed model; else the thread count may have changed
+  if (m.restart_damping) start_adaptive(m);
   if (refresh_contacts(m, 0.0)) update_masses(m);
   // Past its critical step a bolt's segments chatter between their yield forces: bounded, so the
   // watchdog would not see it grow, and the answer would be garbage. Refused up front.
@@ -213,10 +210,8 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
     }
   }
   while (result.cycles < max_cycles) {
-    if (m.dirty) {  // a callback changed the model
-      prepare(m, mesh);
-      start_adaptive(m);
-    }
+    if (m.dirty) prepare(m, mesh);  // a callback changed the model
+    if (m.restart_damping) start_adaptive(m);
     const long cycle = m.info.cycle;
     // An excavation's loads come off a step every cycle while its release runs (run_cycles takes
     // the steps); the last step gives the boundary its own loads back, exactly, before its cycle.
