@@ -40,7 +40,14 @@ void write_string_attribute(hid_t group, const char* name, const std::string& va
 void write_dataset(hid_t group, const char* name, hid_t type, const hsize_t* dims, int rank,
                    const void* data, const std::string& path) {
   const Handle space = dataspace(dims, rank);
-  const Handle set(H5Dcreate2(group, name, type, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose);
+  // A flat struct is stored as its listed members only, packed: written in its own layout, the
+  // bytes of a member left out of its fields() (and the padding) would go into the file too and
+  // come back on reading, and a checkpoint test could not tell that the member is not stored.
+  const Handle stored(H5Tcopy(type), H5Tclose);
+  if (stored.get() < 0 || (H5Tget_class(type) == H5T_COMPOUND && H5Tpack(stored.get()) < 0))
+    fail("HDF5 could not describe {}", path);
+  const Handle set(H5Dcreate2(group, name, stored.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                   H5Dclose);
   if (set.get() < 0) fail("HDF5 could not create {}", path);
   if (dims[0] == 0) return;
   if (H5Dwrite(set.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0) fail("HDF5 could not write {}", path);
