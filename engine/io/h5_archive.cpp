@@ -46,8 +46,9 @@ void write_dataset(hid_t group, const char* name, hid_t type, const hsize_t* dim
   const Handle stored(H5Tcopy(type), H5Tclose);
   if (stored.get() < 0 || (H5Tget_class(type) == H5T_COMPOUND && H5Tpack(stored.get()) < 0))
     fail("HDF5 could not describe {}", path);
-  const Handle set(H5Dcreate2(group, name, stored.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-                   H5Dclose);
+  const Handle set(
+      H5Dcreate2(group, name, stored.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+      H5Dclose);
   if (set.get() < 0) fail("HDF5 could not create {}", path);
   if (dims[0] == 0) return;
   if (H5Dwrite(set.get(), type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0) fail("HDF5 could not write {}", path);
