@@ -630,7 +630,7 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
         if (!with_insitu && c.sn < 0.0 && !c.intact) c.sn = c.fs = 0.0;
         c.closure0 = closure_at(p, c.sn) + gap;
         c.closure = c.closure0 - gap;
-        c.dilation = c.us = c.slip = 0.0;
+        c.dilation = c.us = c.slip = c.opened = 0.0;
       }
       list.push_back(c);
     }

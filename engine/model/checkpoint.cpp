@@ -39,10 +39,7 @@ template <class Ar> void fields(Ar& ar, CrackDef& c) { ar("from", c.from); ar("t
 template <class Ar> void fields(Ar& ar, CrackSeedDef& c) {
   ar("region", c.region); ar("angles", c.angles); ar("spacing", c.spacing); ar("origin", c.origin);
   ar("material", c.material); ar("after", c.after); ar("cuts", c.cuts); ar("outline", c.outline);
-  // Optional: schema-1 files written before it existed have none.
-  std::optional<double> min_angle = c.min_angle;
-  ar("min_angle", min_angle);
-  c.min_angle = min_angle.value_or(0.0);
+  optional_member(ar, "min_angle", c.min_angle, 0.0);  // schema-1 files written before it have none
 }
 template <class Ar> void fields(Ar& ar, RegionDef& r) { ar("name", r.name); ar("polygon", r.polygon); ar("glued", r.glued); }
 template <class Ar> void fields(Ar& ar, SizeField& f) {
@@ -212,12 +209,8 @@ template <class Ar> void fields(Ar& ar, StageLog& l) {
   ar("steps", l.steps); ar("iterations", l.iterations); ar("cutbacks", l.cutbacks); ar("scale", l.scale);
   ar("seconds", l.seconds);
   // Optional: schema-1 files written before a prepass could stop short have neither.
-  std::optional<std::string> failure = l.failure;
-  std::optional<double> reached = l.reached;
-  ar("failure", failure);
-  ar("reached", reached);
-  l.failure = failure.value_or("");
-  l.reached = reached.value_or(1.0);
+  optional_member(ar, "failure", l.failure, std::string());
+  optional_member(ar, "reached", l.reached, 1.0);
 }
 template <class Ar> void fields(Ar& ar, PrepassStage& s) { ar("name", s.name); ar("log", s.log); }
 template <class Ar> void fields(Ar& ar, PrepassResult& r) {
@@ -256,9 +249,7 @@ template <class Ar> void fields(Ar& ar, Mechanics& m) {
   ar("info", m.info); ar("cycles_run", m.cycles_run); ar("adaptive", m.adaptive); ar("last_kinetic", m.last_kinetic);
   ar("growth_checks", m.growth_checks); ar("growth_span", m.growth_span); ar("next_handle", m.next_handle);
   ar("histories", m.histories);
-  std::optional<long> judge_most = m.judge.most;  // files older than judge{ most } have none: 0
-  ar("judge_most", judge_most);
-  m.judge.most = judge_most.value_or(0);
+  optional_member(ar, "judge_most", m.judge.most, 0L);  // files older than judge{ most } have none
 }
 
 // ---- The blocks and the mesh hold vectors of vectors per block: stored flat, with offsets, so
