@@ -3,7 +3,8 @@
 # trends need, then scripts/paper/trends.lua over their rows.
 #
 #   bash scripts/paper/study.sh [--edem PATH] [--out DIR] [--jobs N] [--threads T] [--members M]
-#                               [--mirror] [--reduced] [--strict] [--resume] [-- --set KEY=VALUE ...]
+#                               [--mirror] [--reduced] [--strict] [--resume] [--list | --only RUN | --judge]
+#                               [-- --set KEY=VALUE ...]
 #
 #   --edem     the edem to run [build/interp/edem]
 #   --out      where the table, the pictures and the logs go [paper-study]
@@ -27,6 +28,12 @@
 #   --strict   exit 1 unless every trend holds
 #   --resume   keep the runs that already wrote their row in OUT (a study cut short, or more
 #              --members on top of an earlier study made by the same edem) and run only the rest
+#   --list     print the study's runs, one a line (as --only takes them), and stop
+#   --only RUN one of those runs alone: its row, log and pictures in OUT, nothing gathered or
+#              judged; exit 1 when it wrote no row (ctest runs the reduced study's runs so, each a
+#              test of its own, so that they share the cores with the rest of the suite)
+#   --judge    run nothing: gather and judge the rows the runs (--only) left in OUT; exit 1 when
+#              one is missing (give the same --members, --mirror as the runs had)
 #   after --    more settings for every run (e.g. -- --set set=P)
 #
 # The runs (Set M unless told otherwise): Cases 1, 2 and 3 at 158 m without bolts; Case 3 at
@@ -40,6 +47,7 @@ set -euo pipefail
 
 here=$(cd "$(dirname "$0")" && pwd)
 edem=build/interp/edem out=paper-study jobs=1 threads=2 members=1 mirror=0 reduced=0 strict=false resume=0
+list=0 only='' judge=0
 extra=()
 while [[ $# -gt 0 ]]; do
   case "$1" in
@@ -52,15 +60,15 @@ while [[ $# -gt 0 ]]; do
     --reduced) reduced=1; shift ;;
     --strict) strict=true; shift ;;
     --resume) resume=1; shift ;;
+    --list) list=1; shift ;;
+    --only) only=$2; shift 2 ;;
+    --judge) judge=1; shift ;;
     --) shift; extra=("$@"); break ;;
     *) echo "study.sh: unknown option '$1' (see the comment at the top of $0)" >&2; exit 2 ;;
   esac
 done
 [[ $members =~ ^[1-9][0-9]*$ ]] || { echo "study.sh: --members must be a whole number >= 1, got '$members'" >&2; exit 2; }
-edem=$(cd "$(dirname "$edem")" && pwd)/$(basename "$edem")
-[[ -x $edem ]] || { echo "study.sh: no edem at $edem (build it, or give --edem)" >&2; exit 2; }
-mkdir -p "$out"
-out=$(cd "$out" && pwd)
+[[ -n $only && $judge == 1 ]] && { echo "study.sh: --only runs one run, --judge none; not both" >&2; exit 2; }
 
 common=(--set "threads=$threads")
 if [[ $reduced == 1 ]]; then
@@ -85,6 +93,18 @@ done
 if [[ $mirror == 1 ]]; then
   for c in "${cases[@]}"; do runs+=("$c member=mirror"); done
 fi
+if [[ $list == 1 ]]; then printf '%s\n' "${runs[@]}"; exit 0; fi
+if [[ -n $only ]]; then
+  printf '%s\n' "${runs[@]}" | grep -qxF -- "$only" || {
+    echo "study.sh: --only '$only' is not one of this study's runs (--list shows them)" >&2; exit 2
+  }
+fi
+
+edem=$(cd "$(dirname "$edem")" && pwd)/$(basename "$edem")
+[[ -x $edem ]] || { echo "study.sh: no edem at $edem (build it, or give --edem)" >&2; exit 2; }
+mkdir -p "$out"
+out=$(cd "$out" && pwd)
+
 
 name_of() {  # name_of "case=1 depth=158 bolts=none member=2 release_offset=-10" -> case-1_depth-158_bolts-none_member-2
   echo "${1% release_offset=*}" | tr ' =' '_-'
@@ -108,9 +128,22 @@ export -f one_run name_of
 export edem out threads here resume
 export common_flat="${common[*]}" extra_flat="${extra[*]}"
 
+if [[ -n $only ]]; then
+  one_run "$only"
+  [[ -f $out/$(name_of "$only").csv ]] || { echo "study: $only wrote no row" >&2; exit 1; }
+  exit 0
+fi
 started=$(date +%s)
-printf '%s\n' "${runs[@]}" | xargs -P "$jobs" -I{} bash -c \
-  'common=($common_flat); extra=($extra_flat); one_run "$1"' _ {}
+if [[ $judge == 0 ]]; then
+  printf '%s\n' "${runs[@]}" | xargs -P "$jobs" -I{} bash -c \
+    'common=($common_flat); extra=($extra_flat); one_run "$1"' _ {}
+else
+  missing=0
+  for r in "${runs[@]}"; do
+    [[ -f $out/$(name_of "$r").csv ]] || { echo "study: no row from $r in $out" >&2; missing=1; }
+  done
+  [[ $missing == 0 ]] || exit 1
+fi
 
 # One table of the runs' ends (study.csv) and one of their rows after each step (steps.csv): the
 # header once, then each run's rows.
