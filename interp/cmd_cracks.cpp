@@ -174,6 +174,7 @@ int run_judge(lua_State* L, Context& context, const Args& args) {
   JudgeDef def;
   def.every = static_cast<long>(args.integer("every"));
   def.most = static_cast<long>(args.integer("most"));
+  def.radius = args.number("radius");
   if (args.has("criterion")) def.criterion = lua_criterion(L, args.get<FunctionArg>("criterion").index);
   context.model().judge(def);
   return 0;
@@ -324,7 +325,8 @@ const Command& judge_command() {
       .help =
           "How potential-crack sections are judged: every n cycles, each intact section's "
           "stress is fitted from the zones around it (four each side, an equilibrium linear "
-          "field) and the section breaks in tension when s3 > tension, else in shear when "
+          "field; with radius, also the rest of its two blocks' zones within it) and the section "
+          "breaks in tension when s3 > tension, else in shear when "
           "(1 - sin phi) s1 - (1 + sin phi) s3 + 2 c cos phi < 0; or by your criterion.",
       .keys =
           {
@@ -333,6 +335,11 @@ const Command& judge_command() {
                "at most this many sections break at a judgment, those furthest past the built-in "
                "criteria first (larger of s3 / tension and the Mohr circle's radius over the shear "
                "strength at its centre); the rest are judged again next time; 0: all that fail"},
+              {"radius", Type::number, "m", ge(0), "0",
+               "the stress is also fitted to every zone of the section's two blocks whose "
+               "centroid lies within this distance of its point: a length of the rock's, so that "
+               "finer zones judge the same averaged stress instead of sharper peaks; 0: the four "
+               "nearest each side only, as the seed"},
               {"criterion", Type::function, "", any_value, kOptional,
                "fn(section) returning nil, \"shear\" or \"tension\"; the section is read-only: "
                "id, x, y, angle, length, sxx, syy, sxy, s1, s3, sn, tau, cohesion, friction, "
@@ -340,8 +347,9 @@ const Command& judge_command() {
                "the built-in criteria"},
           },
       .run = run_judge,
-      .usage = "judge{ every = 10, criterion = function(s) if s.s3 > s.tension then return "
-               "\"tension\" end end }",
+      .usage =
+          "judge{ every = 10, criterion = function(s) if s.s3 > s.tension then return "
+          "\"tension\" end end }",
   };
   return command;
 }

@@ -49,6 +49,25 @@ std::vector<int> side_zones(const Mesh& mesh, const GridpointZones& gz, const Se
   return zones;
 }
 
+// With judge{ radius }: the active zones of the section's two blocks whose centroids lie within
+// the radius of its point and that `zones` does not hold yet, in zone order. Only its own blocks:
+// the cuts and joints around them bound the rock whose stress is averaged.
+void add_zones_within(const Mesh& mesh, const std::vector<char>& active, const Section& s,
+                      double radius, std::vector<int>& zones) {
+  const size_t nearest = zones.size();
+  for (size_t side = 0; side < 2; ++side) {
+    const int block = s.block[side];
+    if (block < 0 || (side == 1 && block == s.block[0])) continue;  // each block once
+    const size_t b = static_cast<size_t>(block);
+    for (int z = mesh.block_first_zone[b]; z < mesh.block_first_zone[b + 1]; ++z)
+      if (active[static_cast<size_t>(z)] && norm(mesh.zone_centroid(z) - s.point) <= radius &&
+          std::find(zones.begin(), zones.begin() + static_cast<long>(nearest), z) ==
+              zones.begin() + static_cast<long>(nearest))
+        zones.push_back(z);
+  }
+  std::sort(zones.begin() + static_cast<long>(nearest), zones.end());
+}
+
 RockStrength strength_of(const Mechanics& m, int material, int seed, Vec2 at) {
   const MaterialDef& def = m.materials[static_cast<size_t>(material)];
   if (def.model != MaterialModel::mohr)
@@ -133,6 +152,11 @@ void fit_sections(Mechanics& m, const Mesh& mesh) {
     return;
   }
   const GridpointZones gz = gridpoint_zones(m, mesh);
+  std::vector<char> active;
+  if (m.judge.radius > 0.0) {
+    active.assign(static_cast<size_t>(mesh.zone_count()), 0);
+    for (const int z : m.active) active[static_cast<size_t>(z)] = 1;
+  }
   // The weights depend on the zones and the body force only: a prepare() after a boundary or a
   // material changed keeps those of sections whose inputs are the same (after sections broke,
   // prepare() does not call this at all: only nodes changed).
@@ -143,6 +167,8 @@ void fit_sections(Mechanics& m, const Mesh& mesh) {
     const CrackSeedDef& seed = m.crack_seeds[static_cast<size_t>(s.seed)];
     std::vector<int> zones = side_zones(mesh, gz, s, 0);
     for (const int z : side_zones(mesh, gz, s, 1)) zones.push_back(z);
+    if (m.judge.radius > 0.0 && !zones.empty())
+      add_zones_within(mesh, active, s, m.judge.radius, zones);
     if (!zones.empty()) {
       // The body force of the rock at the point, rho g, for the fit's equilibrium.
       const int own = m.zone_material[static_cast<size_t>(zones.front())];

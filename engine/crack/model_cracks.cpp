@@ -1,4 +1,6 @@
 // The Model's potential-crack commands and views: judge{}, sections, cracks.
+#include <cmath>
+
 #include "core/error.hpp"
 #include "crack/judge.hpp"
 #include "model/model.hpp"
@@ -9,6 +11,10 @@ namespace edem {
 
 void Model::judge(const JudgeDef& def) {
   if (!(def.every >= 1)) fail("every must be >= 1, got {}", def.every);
+  if (!(def.radius >= 0.0) || !std::isfinite(def.radius))
+    fail("radius must be >= 0 (m), got {}", def.radius);
+  // Another radius means other zones for every section's fit: prepare() fits them again.
+  if (def.radius != mechanics_->judge.radius) mechanics_->dirty = true;
   mechanics_->judge = def;
   mechanics_->judge_criterion_missing = false;
 }

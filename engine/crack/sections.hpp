@@ -35,8 +35,8 @@ struct Section {
 
 // What judging needs per section, derived from the zones and materials (judge.hpp): the zones
 // the stress is fitted to (up to four each side, nearest the point, among those touching the
-// section's ends) with the fit's weights, the rock strength, and the joint material it takes
-// when it breaks.
+// section's ends; with judge{ radius }, also the rest of its two blocks' within that distance)
+// with the fit's weights, the rock strength, and the joint material it takes when it breaks.
 struct SectionFits {
   std::vector<int> first;                      // per section + 1: its range in zone / weight
   std::vector<int> zone;                       // mesh zones

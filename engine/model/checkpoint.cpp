@@ -250,6 +250,7 @@ template <class Ar> void fields(Ar& ar, Mechanics& m) {
   ar("growth_checks", m.growth_checks); ar("growth_span", m.growth_span); ar("next_handle", m.next_handle);
   ar("histories", m.histories);
   optional_member(ar, "judge_most", m.judge.most, 0L);  // files older than judge{ most } have none
+  optional_member(ar, "judge_radius", m.judge.radius, 0.0);  // nor older than judge{ radius }
 }
 
 // ---- The blocks and the mesh hold vectors of vectors per block: stored flat, with offsets, so

@@ -310,6 +310,11 @@ struct JudgeDef {
   // At most this many sections break at one judgment, those furthest past the built-in criteria
   // first (crack/criteria.hpp, overstress); the rest wait for the next. 0: every one that fails.
   long most = 0;
+  // The stress at a section is fitted to the zones of its two blocks whose centroids lie within
+  // this distance of its point [m], besides the four nearest each side that the seed uses: a
+  // length of the rock's, not of the mesh's, so that finer zones judge the same averaged stress
+  // (crack/judge.cpp). 0: the four nearest each side only.
+  double radius = 0.0;
   std::function<CrackMode(const SectionView&)> criterion;  // empty: built in
 };
 

@@ -1,11 +1,14 @@
 // judge{ most = n }: at most n sections break at a judgment, those furthest past the built-in
-// criteria first; the rest wait for the next judgment.
+// criteria first; the rest wait for the next judgment. judge{ radius = r }: a section's stress is
+// fitted to its two blocks' zones within r of its point as well.
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "interp_test.hpp"
 #include "model/model.hpp"
@@ -18,11 +21,13 @@ using test::expect_runs;
 // The seed's tension bar (test::seed_bar) with potential cracks every 0.25 m, in vertical tension
 // above its sigma_t = 0.0546 MPa: 0.06 MPa where x < 0 and 0.08 MPa where x > 0, so every section
 // fails at the first judgment.
-std::string bar() {
-  return test::seed_bar("0.25") + R"(
+const char* const kStep = R"(
 insitu{ syy = 0.06e6, szz = 0.02e6 }
 insitu{ syy = 0.08e6, szz = 0.02e6, region = {{0, -1}, {1, -1}, {1, 2}, {0, 2}} }
 )";
+
+std::string bar() {
+  return test::seed_bar("0.25") + kStep;
 }
 
 struct Broken {
@@ -87,6 +92,121 @@ TEST(JudgeMost, ACheckpointKeepsIt) {
 
 TEST(JudgeMost, ANegativeCountIsAnErrorNamingIt) {
   EXPECT_TRUE(test::contains(test::error_of("judge{ most = -1 }"), "most"));
+}
+
+// judge{ radius }: sections of the bar (zones of 0.05 m, cracks at y = 0.25, 0.5 and 0.75) in the
+// stress insitu{} sets, before any cycle; `field` gives it.
+std::vector<SectionView> views(const std::string& field, const std::string& judge) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, test::seed_bar("0.25") + field + judge);
+  const Model& model = interpreter.context().model();
+  std::vector<SectionView> v;
+  for (int id = 0; id < model.section_count(); ++id) v.push_back(model.section(id));
+  return v;
+}
+
+TEST(JudgeRadius, ARadiusShorterThanTheZonesIsTheSeedsFourZonesToTheBit) {
+  const std::vector<SectionView> seeds = views(kStep, "judge{}");
+  const std::vector<SectionView> short_radius = views(kStep, "judge{ radius = 0.01 }");
+  ASSERT_EQ(seeds.size(), short_radius.size());
+  for (size_t i = 0; i < seeds.size(); ++i) {
+    EXPECT_EQ(seeds[i].sxx, short_radius[i].sxx);
+    EXPECT_EQ(seeds[i].syy, short_radius[i].syy);
+    EXPECT_EQ(seeds[i].sxy, short_radius[i].sxy);
+  }
+}
+
+// kStep: syy = 0.06 MPa where x < 0, 0.08 MPa where x > 0. The sections at x = -0.0875 m see only
+// the left's through their four nearest zones a side, and the right's too when the radius reaches
+// past x = 0: the fitted field then slopes, and at the point, near the fitted zones' left end, it
+// is more than 1 % off 0.06 MPa (below it: the least-squares line through a step).
+TEST(JudgeRadius, AStepInTheStressIsSeenOutToTheRadius) {
+  for (const auto& [judge, seen] :
+       {std::pair{"judge{}", false}, std::pair{"judge{ radius = 0.1 }", true}}) {
+    int left = 0;
+    for (const SectionView& v : views(kStep, judge)) {
+      if (v.position.x > -0.08) continue;
+      ++left;
+      if (seen)
+        EXPECT_GT(std::abs(v.syy - 0.06e6), 0.01 * 0.06e6) << judge << " at y = " << v.position.y;
+      else
+        EXPECT_NEAR(v.syy, 0.06e6, 1e-9 * 0.06e6) << judge << " at y = " << v.position.y;
+    }
+    EXPECT_EQ(left, 3);  // one on each crack
+  }
+}
+
+// syy = 0.06 MPa but 0.08 MPa above the crack at y = 0.75. Zones just above it lie within 0.3 m of
+// the sections at y = 0.5, but in another block: those sections see 0.06 MPa alone; the
+// sections at y = 0.75, whose upper block it is, see both.
+TEST(JudgeRadius, OnlyTheSectionsOwnTwoBlocksAreAveraged) {
+  const std::string field = R"(
+insitu{ syy = 0.06e6, szz = 0.02e6 }
+insitu{ syy = 0.08e6, szz = 0.02e6, region = {{-1, 0.75}, {1, 0.75}, {1, 2}, {-1, 2}} }
+)";
+  int middle = 0, upper = 0;
+  for (const SectionView& v : views(field, "judge{ radius = 0.3 }")) {
+    if (std::abs(v.position.y - 0.5) < 1e-9) {
+      ++middle;
+      EXPECT_NEAR(v.syy, 0.06e6, 1e-9 * 0.06e6) << "at x = " << v.position.x;
+    }
+    if (std::abs(v.position.y - 0.75) < 1e-9) {
+      ++upper;
+      EXPECT_GT(v.syy, 0.065e6) << "at x = " << v.position.x;
+      EXPECT_LT(v.syy, 0.075e6) << "at x = " << v.position.x;
+    }
+  }
+  EXPECT_EQ(middle, 8);  // the zones along a crack are 0.025 m
+  EXPECT_EQ(upper, 8);
+}
+
+// sxx = 0.01 MPa + 0.2 MPa/m * y, syy = 0.06 MPa: a linear field in equilibrium without a body
+// force. The fit is a linear equilibrium field, so at any radius it gives the field at each
+// section's point; only the zones it is fitted to change.
+TEST(JudgeRadius, ALinearEquilibriumFieldIsFittedExactlyAtAnyRadius) {
+  const std::string field =
+      "insitu{ sxx = 0.01e6, syy = 0.06e6, szz = 0.02e6, ygrad = {0.2e6, 0, 0} }\n";
+  for (const char* judge : {"judge{}", "judge{ radius = 0.1 }", "judge{ radius = 0.3 }"}) {
+    const std::vector<SectionView> v = views(field, judge);
+    ASSERT_EQ(v.size(), 23u) << judge;  // 8, 8 and 7 on the three cracks (one 0.05 m long)
+    for (const SectionView& s : v) {
+      EXPECT_NEAR(s.sxx, 0.01e6 + 0.2e6 * s.position.y, 1e-9 * 0.2e6)
+          << judge << " at y = " << s.position.y;
+      EXPECT_NEAR(s.syy, 0.06e6, 1e-9 * 0.06e6) << judge;
+      EXPECT_NEAR(s.sxy, 0.0, 1e-9 * 0.06e6) << judge;
+    }
+  }
+}
+
+TEST(JudgeRadius, AnotherRadiusFitsTheSectionsAgain) {
+  const std::vector<SectionView> seeds = views(kStep, "judge{}");
+  const std::vector<SectionView> back =
+      views(kStep, "judge{ radius = 0.1 }\nfor s in sections() do end\njudge{}");
+  ASSERT_EQ(seeds.size(), back.size());
+  for (size_t i = 0; i < seeds.size(); ++i) EXPECT_EQ(seeds[i].syy, back[i].syy);
+}
+
+TEST(JudgeRadius, ACheckpointKeepsIt) {
+  const std::filesystem::path file = std::filesystem::temp_directory_path() /
+                                     ("edem_judge_radius_" + std::to_string(::getpid()) + ".h5");
+  const std::vector<SectionView> wide = views(kStep, "judge{ radius = 0.1 }");
+  Interpreter first;
+  first.context().quiet = true;
+  expect_runs(first, bar() + "judge{ radius = 0.1 }\nsave('" + file.string() + "')");
+  Interpreter second;
+  second.context().quiet = true;
+  // assign{} makes the restored model fit its sections again, with the radius it read back.
+  expect_runs(second, "restore('" + file.string() + "')\nassign{ material = \"rock\" }");
+  std::filesystem::remove(file);
+  const Model& model = second.context().model();
+  ASSERT_EQ(model.section_count(), static_cast<int>(wide.size()));
+  for (int id = 0; id < model.section_count(); ++id)
+    EXPECT_EQ(model.section(id).syy, wide[static_cast<size_t>(id)].syy);
+}
+
+TEST(JudgeRadius, ANegativeRadiusIsAnErrorNamingIt) {
+  EXPECT_TRUE(test::contains(test::error_of("judge{ radius = -1 }"), "radius"));
 }
 
 }  // namespace
