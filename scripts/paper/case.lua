@@ -55,6 +55,11 @@
 --             study.sh --mirror)
 --   judge_most  judge{ most }: at most this many sections break at a judgment (every 10
 --             cycles), those furthest past their strength first [0: all that fail]
+--   judge_radius  judge{ radius } [m]: a section's stress is fitted to its two blocks' zones
+--             within this distance of its point as well as to the four nearest each side, so that
+--             finer zones judge the same averaged stress [0: the four nearest, the seed's]; not the
+--             seed's method, and not in the result row: a departure tried in session 43
+--             (scripts/paper/README.md, "Results", session 43)
 --   tolerance model{}'s geometric tolerance [7e-4]
 --   fracture_energy, shear_fracture_energy  J/m^2: a broken section's crack softens as a
 --             cohesive crack (joint_material{}'s keys) from the set's intact strength (its
@@ -102,6 +107,7 @@ end
 local SIMILAR, TOLERANCE = setting("similar", 45), setting("tolerance", 7e-4)
 local MIN_ANGLE = setting("min_angle", 30)
 local JUDGE_MOST = setting("judge_most", 0)
+local JUDGE_RADIUS = setting("judge_radius", 0)
 local ORIGIN_X, ORIGIN_Y = setting("origin_x", nil), setting("origin_y", nil)
 local FRACTURE_ENERGY, SHEAR_FRACTURE_ENERGY = setting("fracture_energy", 0), setting("shear_fracture_energy", 0)
 for key, value in pairs({ fracture_energy = FRACTURE_ENERGY, shear_fracture_energy = SHEAR_FRACTURE_ENERGY }) do
@@ -163,6 +169,7 @@ if RELEASE_OFFSET ~= 0 then tag = tag .. ("_release%d"):format(RELEASE) end
 if FIRST == "right" then tag = tag .. "_right_first" end
 if MIRROR then tag = tag .. "_mirror" end
 if COHESIVE then tag = tag .. "_cohesive" end
+if JUDGE_RADIUS ~= 0 then tag = tag .. "_radius" end
 local started = os.time()
 
 local c = cavern.warhead{}
@@ -199,7 +206,7 @@ for _, z in ipairs(pre.zones) do if z.state ~= "none" then yielded = yielded + 1
 plot{ file = tag .. "_prepass.png", show = { "prepass", "joints" }, window = { -60, 60, -50, 60 } }
 
 -- 2. Potential cracks there, then the discontinuum.
-judge{ most = JUDGE_MOST }
+judge{ most = JUDGE_MOST, radius = JUDGE_RADIUS }
 if COHESIVE then
   local joint = seed[SET].joint
   joint_material{ "cohesive", kn = joint.kn, kn_law = joint.kn_law, ks = joint.ks, friction = rock.friction,
