@@ -137,6 +137,9 @@ if type(BY_MODE) ~= "boolean" then
   error(("by_mode must be true or false, got %s"):format(BY_MODE), 0)
 end
 if (ORIGIN_X == nil) ~= (ORIGIN_Y == nil) then error("give origin_x and origin_y together, or neither", 0) end
+for key, value in pairs({ origin_x = ORIGIN_X, origin_y = ORIGIN_Y }) do
+  if type(value) ~= "number" then error(("%s must be a number (m), got %s"):format(key, value), 0) end
+end
 local ORIGIN = ORIGIN_X and { ORIGIN_X, ORIGIN_Y } or nil
 local TABLE = tostring(setting("table", "case_results.csv"))
 local STEPS_TABLE = TABLE:gsub("%.csv$", "") .. "_steps.csv"  -- a row after each step
@@ -148,7 +151,8 @@ local columns = { "case", "set", "depth", "bolts", "release", "steps", "cracks",
                   "left_wall_15m_m", "right_wall_15m_m", "profile_left_m", "profile_right_m", "slipping",
                   "slipped", "fallen", "bolts_laid", "bolts_skipped", "bolts_broken", "bolts_over_half_yield",
                   "cuts_left_out", "threads", "seconds", "prepass_stopped", "unconverged", "stopped",
-                  "points_fallen", "edge_m", "far_m", "first", "muck", "damping", "mirror", "crack_length_m" }
+                  "points_fallen", "edge_m", "far_m", "first", "muck", "damping", "mirror", "crack_length_m",
+                  "origin_x_m", "origin_y_m" }
 for _, file in ipairs{ TABLE, STEPS_TABLE } do
   local existing = io.open(file, "r")
   if existing then
@@ -170,6 +174,7 @@ if FIRST == "right" then tag = tag .. "_right_first" end
 if MIRROR then tag = tag .. "_mirror" end
 if COHESIVE then tag = tag .. "_cohesive" end
 if JUDGE_RADIUS ~= 0 then tag = tag .. "_radius" end
+if ORIGIN then tag = tag .. ("_origin%g_%g"):format(ORIGIN_X, ORIGIN_Y) end
 local started = os.time()
 
 local c = cavern.warhead{}
@@ -452,7 +457,7 @@ local function result_row()
                 prepass_note == "complete" and '""' or ('"' .. prepass_note .. '"'),
                 '"' .. table.concat(unconverged, " ") .. '"',
                 '"' .. stopped:gsub('"', "'") .. '"', '"' .. points_fallen() .. '"', EDGE, FAR, FIRST, MUCK,
-                DAMPING, MIRROR, ("%.2f"):format(r.length) }
+                DAMPING, MIRROR, ("%.2f"):format(r.length), ORIGIN_X or "", ORIGIN_Y or "" }
   for i, v in ipairs(row) do row[i] = tostring(v) end
   return r, table.concat(row, ",")
 end
