@@ -3,7 +3,7 @@
 # trends need, then scripts/paper/trends.lua over their rows.
 #
 #   bash scripts/paper/study.sh [--edem PATH] [--out DIR] [--jobs N] [--threads T] [--members M]
-#                               [--mirror] [--reduced] [--strict] [--resume] [--list | --only RUN | --judge]
+#                               [--mirror] [--origins K] [--reduced] [--strict] [--resume] [--list | --only RUN | --judge]
 #                               [-- --set KEY=VALUE ...]
 #
 #   --edem     the edem to run [build/interp/edem]
@@ -20,6 +20,14 @@
 #              cuts are new, so it shows the spread the discretisation gives, which releases a few
 #              cycles apart do not (trends.lua swaps its sides back; scripts/paper/README.md,
 #              "Results", session 40) (neither key again after --)
+#   --origins K  K more members of each case, each with its potential cracks laid through a point of
+#              its own (case.lua's origin_x, origin_y): the k-th point is (4.8 u, 4.8 v) m with (u, v)
+#              the k-th point of the R2 low-discrepancy sequence, (frac(0.5 + 0.75488 k), frac(0.5 +
+#              0.56984 k)), so that the offsets of the 4.8 m grid of cuts against the cavern are
+#              spread evenly and fixed before any run; like the mirror image, a fair discretisation of
+#              the same problem. With two or more members of each case trends.lua also judges each
+#              trend on the members' means (trends_means.md: a one-sided Welch test at 95 %,
+#              scripts/paper/README.md, "Results", session 44) [0]
 #   --reduced  the version CI runs: zones twice as large (edge 3 m near the cavern, 20 m far), the
 #              first 8 of the 16 steps, each step's load released over 10,000 cycles, not 20,000
 #              (with scaled masses a cycle carries the load about one zone, so on zones twice as
@@ -41,12 +49,14 @@
 # (members after the first add _member-K to their names, the mirror image _member-mirror). Each
 # writes its own row (OUT/TAG.csv, a row after each step in OUT/TAG_steps.csv) and pictures;
 # OUT/study.csv and OUT/steps.csv gather them; OUT/trends.md has the verdicts at the runs' ends, and
-# OUT/trends_common_step.md after the last step all runs reached. Exit 1 when a run wrote no row
+# OUT/trends_common_step.md after the last step all runs reached; with more than one member of each,
+# OUT/trends_means.md the verdicts at the runs' ends on the members' means. Exit 1 when a run wrote no row
 # (a script error, not a stop: a stop is recorded in the row), or with --strict a trend fails.
 set -euo pipefail
 
 here=$(cd "$(dirname "$0")" && pwd)
-edem=build/interp/edem out=paper-study jobs=1 threads=2 members=1 mirror=0 reduced=0 strict=false resume=0
+edem=build/interp/edem out=paper-study jobs=1 threads=2 members=1 mirror=0 origins=0 reduced=0 strict=false
+resume=0
 list=0 only='' judge=0
 extra=()
 while [[ $# -gt 0 ]]; do
@@ -57,6 +67,7 @@ while [[ $# -gt 0 ]]; do
     --threads) threads=$2; shift 2 ;;
     --members) members=$2; shift 2 ;;
     --mirror) mirror=1; shift ;;
+    --origins) origins=$2; shift 2 ;;
     --reduced) reduced=1; shift ;;
     --strict) strict=true; shift ;;
     --resume) resume=1; shift ;;
@@ -68,6 +79,7 @@ while [[ $# -gt 0 ]]; do
   esac
 done
 [[ $members =~ ^[1-9][0-9]*$ ]] || { echo "study.sh: --members must be a whole number >= 1, got '$members'" >&2; exit 2; }
+[[ $origins =~ ^[0-9]+$ ]] || { echo "study.sh: --origins must be a whole number >= 0, got '$origins'" >&2; exit 2; }
 [[ -n $only && $judge == 1 ]] && { echo "study.sh: --only runs one run, --judge none; not both" >&2; exit 2; }
 
 common=(--set "threads=$threads")
@@ -93,6 +105,11 @@ done
 if [[ $mirror == 1 ]]; then
   for c in "${cases[@]}"; do runs+=("$c member=mirror"); done
 fi
+for ((k = 1; k <= origins; k++)); do
+  point=$(awk -v k="$k" 'function frac(x) { return x - int(x) }
+    BEGIN { printf "origin_x=%.2f origin_y=%.2f", 4.8 * frac(0.5 + 0.7548776662 * k), 4.8 * frac(0.5 + 0.5698402910 * k) }')
+  for c in "${cases[@]}"; do runs+=("$c member=origin-$k $point"); done
+done
 if [[ $list == 1 ]]; then printf '%s\n' "${runs[@]}"; exit 0; fi
 if [[ -n $only ]]; then
   printf '%s\n' "${runs[@]}" | grep -qxF -- "$only" || {
@@ -107,7 +124,9 @@ out=$(cd "$out" && pwd)
 
 
 name_of() {  # name_of "case=1 depth=158 bolts=none member=2 release_offset=-10" -> case-1_depth-158_bolts-none_member-2
-  echo "${1% release_offset=*}" | tr ' =' '_-'
+  local kept=() kv
+  for kv in $1; do [[ $kv == release_offset=* || $kv == origin_[xy]=* ]] || kept+=("$kv"); done
+  echo "${kept[*]}" | tr ' =' '_-'
 }
 
 one_run() {  # one_run "case=1 depth=158 bolts=none"
@@ -178,5 +197,10 @@ echo
 trends=0
 "$edem" --quiet "${set_arg[@]}" --set tables=study.csv --set markdown=trends.md --set strict=$strict \
   run "$here/trends.lua" || trends=$?
+if (( members > 1 || mirror == 1 || origins > 0 )); then  # the same rows judged on their means
+  echo
+  "$edem" --quiet "${set_arg[@]}" --set tables=study.csv --set judge=means --set markdown=trends_means.md \
+    run "$here/trends.lua" || trends=$?
+fi
 [[ $written == "${#runs[@]}" ]] || { echo "study: only $written of ${#runs[@]} runs wrote their row" >&2; exit 1; }
 exit $trends

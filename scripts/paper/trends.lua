@@ -14,6 +14,7 @@
 --             common: after the last step every run reached [the end of each run]
 --   markdown  also write the table of trends to this file (markdown)
 --   strict    true: fail (exit 1) unless every trend holds [false]
+--   judge     pairings or means [pairings]: see below
 -- Each trend compares the rows it needs; a row missing, a run that stopped before its last step
 -- (a comparison of unfinished runs says nothing), or a run whose measuring point the trend reads
 -- was mucked out with its block (case.lua's column points_fallen: its value is where the point
@@ -22,13 +23,24 @@
 -- that bound does not settle which wall moved more 5 m behind the faces, it reads the points 15 m
 -- behind them the same way, and is not shown only where neither settles it.
 -- With several members a trend holds only if it holds for every pairing of them; where it holds
--- for some only, it is "within the spread", and fails.
+-- for some only, it is "within the spread", and fails. judge = means judges each trend on the
+-- members' means instead, each member a fair discretisation of the same problem (study.sh
+-- --mirror, --origins): "A above B" holds where a one-sided Welch t of mean(A) - mean(B) reaches
+-- the Student quantile at 95 % for its degrees of freedom, fails where -t does, and is "not
+-- resolved" (which does not hold) otherwise; a trend within one run (tension against shear, one
+-- wall against the other) takes the members' differences (a paired t). A trend of several such
+-- comparisons holds if each does and fails if one does; "at least as much" is tested as "more",
+-- which is stricter than the seed's words. It needs two members of each case at least.
 local function setting(key, default)
   local v = arg and arg[key]
   if v == nil then return default end
   return v
 end
 local SET, DEPTH = tostring(setting("set", "M")), setting("depth", 158)
+local JUDGE = tostring(setting("judge", "pairings"))
+if JUDGE ~= "pairings" and JUDGE ~= "means" then
+  error(("trends: judge must be pairings or means, got %s"):format(JUDGE), 0)
+end
 
 -- A CSV line: commas between fields, a field in double quotes may hold commas.
 local function fields(line)
@@ -79,6 +91,9 @@ for file in tostring(setting("tables", "case_results.csv")):gmatch("[^,]+") do
       for i, name in ipairs(names) do row[name] = tonumber(values[i]) or values[i] end
       if row.set == SET then
         local k, member = key(row.case, row.depth, row.bolts), row.release or "default"
+        if type(row.origin_x_m) == "number" then  -- study.sh --origins: the cuts through a point of its own
+          member = ("%s origin %g %g"):format(member, row.origin_x_m, row.origin_y_m)
+        end
         if row.mirror == "true" then
           swap_sides(row)
           member = ("%s mirrored"):format(member)
@@ -156,8 +171,70 @@ end
 -- value(i, field, format, point, missing) gives need i's field in every member, separated by
 -- commas, with "at least" before those whose measuring point `point` fell. `points`: the measuring
 -- points (case.lua's names) the trend reads whose fall makes it "not shown".
+-- judge = means. The one-sided Student t quantile at 95 % for df degrees of freedom: the table's
+-- value at the largest df listed that is not above it (conservative between the rows).
+local T95 = { { 1, 6.314 }, { 2, 2.920 }, { 3, 2.353 }, { 4, 2.132 }, { 5, 2.015 }, { 6, 1.943 }, { 7, 1.895 },
+              { 8, 1.860 }, { 9, 1.833 }, { 10, 1.812 }, { 12, 1.782 }, { 15, 1.753 }, { 20, 1.725 },
+              { 30, 1.697 }, { 60, 1.671 }, { 120, 1.658 } }
+local function t95(df)
+  local q = T95[1][2]
+  for _, row in ipairs(T95) do if df >= row[1] then q = row[2] end end
+  return q
+end
+local function mean_and_variance(values)
+  local sum, n = 0, #values
+  for _, v in ipairs(values) do sum = sum + v end
+  local mean, squares = sum / n, 0
+  for _, v in ipairs(values) do squares = squares + (v - mean) ^ 2 end
+  return mean, squares / (n - 1)
+end
+-- One comparison { label, a, b } (mean(a) above mean(b), Welch) or { label, d } (mean(d) above 0,
+-- paired): its t, the quantile it must reach, and its numbers as text; nil and why where a side has
+-- fewer than two members.
+local function welch(c)
+  local a = c.a or c.d
+  local na, nb = #a, c.b and #c.b or nil
+  if na < 2 or (nb and nb < 2) then return nil, c.label .. " needs two members of each run" end
+  local ma, va = mean_and_variance(a)
+  local mb, vb, se2, df = 0, 0, va / na, na - 1
+  if c.b then
+    mb, vb = mean_and_variance(c.b)
+    se2 = va / na + vb / nb
+    local denominator = (va / na) ^ 2 / (na - 1) + (vb / nb) ^ 2 / (nb - 1)
+    df = denominator > 0 and se2 ^ 2 / denominator or na + nb - 2
+  end
+  local diff, t = ma - mb, 0
+  if se2 > 0 then t = diff / math.sqrt(se2) elseif diff ~= 0 then t = diff > 0 and math.huge or -math.huge end
+  local spread = function(m, v) return ("%.4g ± %.2g"):format(m, math.sqrt(v)) end
+  local text = c.b and ("%s: %s against %s"):format(c.label, spread(ma, va), spread(mb, vb))
+    or ("%s: %s"):format(c.label, spread(ma, va))
+  return t, t95(df), ("%s (t %.2f, %d members, 95 %% needs %.2f)"):format(text, t, na, t95(df))
+end
+-- A field of every member of one need, as a list.
+local function column(list, field)
+  local out = {}
+  for i, r in ipairs(list) do
+    if type(r[field]) ~= "number" then error("no column " .. field) end
+    out[i] = r[field]
+  end
+  return out
+end
+local function judge_means(comparisons)
+  local texts, all_hold, one_fails = {}, true, false
+  for _, c in ipairs(comparisons) do
+    local t, needed, text = welch(c)
+    if not t then return "not shown", needed end
+    texts[#texts + 1] = text
+    all_hold = all_hold and t >= needed
+    one_fails = one_fails or t <= -needed
+  end
+  local verdict = all_hold and "holds" or (one_fails and "fails" or "not resolved")
+  return verdict, table.concat(texts, "; ")
+end
+
 local results = {}
-local function trend(statement, needs, holds, describe, points)
+-- means(got): the trend's comparisons for judge = means (see welch), or nil and why it cannot say.
+local function trend(statement, needs, holds, describe, points, means)
   local got, why = {}, nil
   for i, n in ipairs(needs) do
     local list, missing = runs(n[1], n[2], n[3])
@@ -175,6 +252,15 @@ local function trend(statement, needs, holds, describe, points)
   local verdict, numbers
   if why then
     verdict, numbers = "not shown", why
+  elseif JUDGE == "means" then
+    local ok, comparisons, why_not = pcall(means, got)
+    if not ok then
+      verdict, numbers = "not shown", "the table lacks a column it needs"
+    elseif not comparisons then
+      verdict, numbers = "not shown", why_not
+    else
+      verdict, numbers = judge_means(comparisons)
+    end
   else
     -- point: a value whose point fell is a bound; missing: what to write for a row without the field
     -- (nil: such a row is an error)
@@ -234,37 +320,63 @@ trend("Case 3 (denser joints) gives more new cracks than Case 2", { { 3, D, "non
   function(v)
     return ("Case 3: %s, Case 2: %s cracks%s"):format(v(1, "cracks"), v(2, "cracks"),
       broken_length(v, { "Case 3: ", "Case 2: " }))
-  end)
+  end, nil,
+  function(got) return { { label = "cracks, Case 3 against Case 2", a = column(got[1], "cracks"),
+                           b = column(got[2], "cracks") } } end)
 trend("The crack count grows with depth, 158 < 212 < 262 m (Case 3)",
   { { 3, 158, "none" }, { 3, 212, "none" }, { 3, 262, "none" } },
   function(a, b, c) return a.cracks < b.cracks and b.cracks < c.cracks end,
   function(v)
     return ("158 m: %s, 212 m: %s, 262 m: %s cracks%s"):format(v(1, "cracks"), v(2, "cracks"), v(3, "cracks"),
       broken_length(v, { "158 m: ", "212 m: ", "262 m: " }))
+  end, nil,
+  function(got)
+    return { { label = "cracks, 212 against 158 m", a = column(got[2], "cracks"), b = column(got[1], "cracks") },
+             { label = "262 against 212 m", a = column(got[3], "cracks"), b = column(got[2], "cracks") } }
   end)
 for _, case in ipairs{ 1, 2, 3 } do
   trend(("Tension cracks are the majority without bolts (Case %d)"):format(case), { { case, D, "none" } },
     function(r) return r.tension > r.shear end,
-    function(v) return ("%s tension, %s shear"):format(v(1, "tension"), v(1, "shear")) end)
+    function(v) return ("%s tension, %s shear"):format(v(1, "tension"), v(1, "shear")) end, nil,
+    function(got)
+      local d = column(got[1], "tension")
+      for i, shear in ipairs(column(got[1], "shear")) do d[i] = d[i] - shear end
+      return { { label = "tension less shear cracks", d = d } }
+    end)
 end
 trend("Case 2's cracks on the right side sit higher than Case 1's", { { 2, D, "none" }, { 1, D, "none" } },
   function(c2, c1) return c2.right_mean_y_m > c1.right_mean_y_m end,
   function(v)
     return ("mean height of the right side's cracks: Case 2 %s m (%s cracks), Case 1 %s m (%s cracks)"):format(
       v(1, "right_mean_y_m", "%.1f"), v(1, "right"), v(2, "right_mean_y_m", "%.1f"), v(2, "right"))
+  end, nil,
+  function(got)
+    return { { label = "mean height of the right side's cracks [m], Case 2 against Case 1",
+               a = column(got[1], "right_mean_y_m"), b = column(got[2], "right_mean_y_m") } }
   end)
+-- judge = means: the bolted run's (need 1) count and crown settlement each below the other's
+-- (need 2), named `other` and `bolted`.
+local function bolts_lower(got, other, bolted)
+  local comparisons = {}
+  for _, field in ipairs{ "cracks", "crown_settlement_m" } do
+    comparisons[#comparisons + 1] = { label = ("%s, %s against %s"):format(field:gsub("_m$", " [m]"):gsub("_", " "),
+                                                                         other, bolted),
+                                      a = column(got[2], field), b = column(got[1], field) }
+  end
+  return comparisons
+end
 trend("Pattern 1 lowers the crack count and the crown settlement (Case 3)", { { 3, D, "1" }, { 3, D, "none" } },
   function(p1, none) return p1.cracks < none.cracks and p1.crown_settlement_m < none.crown_settlement_m end,
   function(v)
     return ("cracks %s against %s; crown %s against %s m"):format(v(1, "cracks"), v(2, "cracks"),
       v(1, "crown_settlement_m", "%.3f"), v(2, "crown_settlement_m", "%.3f"))
-  end, { "crown" })
+  end, { "crown" }, function(got) return bolts_lower(got, "no bolts", "pattern 1") end)
 trend("Pattern 2 lowers them at least as much as pattern 1 (Case 3)", { { 3, D, "2" }, { 3, D, "1" } },
   function(p2, p1) return p2.cracks <= p1.cracks and p2.crown_settlement_m <= p1.crown_settlement_m end,
   function(v)
     return ("cracks %s against %s; crown %s against %s m"):format(v(1, "cracks"), v(2, "cracks"),
       v(1, "crown_settlement_m", "%.3f"), v(2, "crown_settlement_m", "%.3f"))
-  end, { "crown" })
+  end, { "crown" }, function(got) return bolts_lower(got, "pattern 1", "pattern 2") end)
 -- A wall point mucked out with its block keeps the displacement it had when its block went, and
 -- a block is mucked out once it has moved 1 m, loose rock coming off the wall: the wall moved at
 -- least that far there, so a wall's mean with a fallen point is a lower bound. Right above left
@@ -278,6 +390,21 @@ local function right_moves_more(r, depth)  -- depth: "5m" or "15m"
   if right > left and not fell(r, "left_wall_" .. depth) then return true end
   if left >= right and not fell(r, "right_wall_" .. depth) then return false end
   return nil
+end
+-- judge = means: right less left 5 m behind the faces where no member's point there fell (a
+-- fallen point's value is only a bound), else 15 m behind them where none fell there.
+local function wall_difference(got)
+  for _, depth in ipairs{ "5m", "15m" } do
+    local d, whole = {}, true
+    for i, r in ipairs(got[1]) do
+      local right, left = r["right_wall_" .. depth .. "_m"], r["left_wall_" .. depth .. "_m"]
+      if right == nil or fell(r, "right_wall_" .. depth) or fell(r, "left_wall_" .. depth) then whole = false end
+      d[i] = whole and right - left or nil
+    end
+    if whole then return { { label = ("right less left wall, %s behind the faces [m]"):format(depth:gsub("m$", " m")),
+                             d = d } } end
+  end
+  return nil, "a wall point fell with its block 5 m and 15 m behind the faces in some member"
 end
 for _, case in ipairs{ 1, 2, 3 } do
   trend(("The side the joints dip towards (right) moves more (Case %d)"):format(case), { { case, D, "none" } },
@@ -293,7 +420,7 @@ for _, case in ipairs{ 1, 2, 3 } do
       if not right_15m:find("%d") then return text end  -- no row has them
       return ("%s; 15 m behind them: %s m (right) and %s m (left)"):format(text, right_15m,
         v(1, "left_wall_15m_m", "%.3f", "left_wall_15m", "none"))
-    end)
+    end, nil, wall_difference)
 end
 
 local when = STEP and ("after step %d of 16 in every run"):format(STEP) or "at the end of each run"
@@ -305,11 +432,20 @@ end
 local mirrored = false
 for _, member in ipairs(releases) do mirrored = mirrored or tostring(member):find("mirrored", 1, true) ~= nil end
 local swapped = mirrored and "; a mirrored run's left and right swapped back, so right is where the joints dip" or ""
+local with_origins = false
+for _, member in ipairs(releases) do with_origins = with_origins or tostring(member):find("origin", 1, true) ~= nil end
+local members_are = with_origins
+  and "their releases in cycles a step, with the point their cuts pass through in m where it is set: %s"
+  or "releases %s cycles a step"
 local of_each = most > 1
-  and (", %d runs of each case (releases %s cycles a step; their numbers in that order%s)"):format(
+  and (", %d runs of each case (" .. members_are .. "; their numbers in that order%s)"):format(
     most, table.concat(releases, ", "), swapped)
   or ""
-local lines = { ("Set %s, %s%s. Trends of the seed paper (§3.4, §4, §5) in EDEM's runs:"):format(SET, when, of_each), "",
+local judged = JUDGE == "means"
+  and " Each trend judged on the members' means (one-sided Welch t at 95 %; mean ± standard deviation of the members)."
+  or ""
+local lines = { ("Set %s, %s%s.%s Trends of the seed paper (§3.4, §4, §5) in EDEM's runs:"):format(SET, when, of_each,
+                                                                                                   judged), "",
                 "| trend | EDEM | verdict |", "|---|---|---|" }
 local failed = 0
 for _, r in ipairs(results) do

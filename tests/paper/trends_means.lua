@@ -1,0 +1,79 @@
+-- scripts/paper/trends.lua with judge = means: each trend judged on the members' means by a
+-- one-sided Welch t at 95 % (study.sh --origins, --mirror). The fixture (trends_means.csv) has three
+-- members of each of the study's seven runs, all at release 100, told apart by the point their
+-- cuts pass through (none, (1.22, 0.34), (0.05, 3.07)); its numbers are made up so that each t
+-- below can be worked by hand.
+local here = debug.getinfo(1, "S").source:match("^@(.*[/\\])") or "./"
+local trends = here .. "../../scripts/paper/trends.lua"
+
+local function verdicts(tables)
+  local out = "trends_means.md"
+  arg = { tables = tables, markdown = out, judge = "means" }
+  dofile(trends)
+  local f = assert(io.open(out, "r"))
+  local text = f:read("a")
+  f:close()
+  local found = {}
+  for line in text:gmatch("[^\n]+") do
+    local statement, verdict = line:match("^| (.-) | .- | ([^|]-) |$")
+    if statement then found[statement] = verdict end
+  end
+  return found, text
+end
+
+local failures = 0
+local function expect(found, statement, verdict)
+  local got = found[statement]
+  local ok = got == verdict
+  print(("%s: %s -> %s (expected %s)"):format(ok and "ok" or "WRONG", statement, tostring(got), verdict))
+  if not ok then failures = failures + 1 end
+end
+local function says(text, words)
+  local ok = text:find(words, 1, true) ~= nil
+  print(("%s: the table says %q"):format(ok and "ok" or "WRONG", words))
+  if not ok then failures = failures + 1 end
+end
+
+local found, text = verdicts(here .. "trends_means.csv")
+says(text, "3 runs of each case")
+says(text, "100, 100 origin 0.05 3.07, 100 origin 1.22 0.34")
+-- 310 +- 10 against 210 +- 10: t = 100 / sqrt(100/3 + 100/3) = 12.25 on 4 degrees of freedom (2.132).
+expect(found, "Case 3 (denser joints) gives more new cracks than Case 2", "holds")
+says(text, "cracks, Case 3 against Case 2: 310 ± 10 against 210 ± 10 (t 12.25, 3 members, 95 % needs 2.13)")
+-- 212 m above 158 m by 5 (t 0.61, not resolved), 262 m below 212 m by 205: one comparison fails.
+expect(found, "The crack count grows with depth, 158 < 212 < 262 m (Case 3)", "fails")
+-- Paired: tension less shear 10, 12, 14 (t 10.39 on 2, needs 2.92); -6, 6, 2 (t 0.19); -50, -60, -40.
+expect(found, "Tension cracks are the majority without bolts (Case 1)", "holds")
+says(text, "tension less shear cracks: 12 ± 2 (t 10.39, 3 members, 95 % needs 2.92)")
+expect(found, "Tension cracks are the majority without bolts (Case 2)", "not resolved")
+expect(found, "Tension cracks are the majority without bolts (Case 3)", "fails")
+-- 12 +- 2 m against 11 +- 1 m: t 0.77.
+expect(found, "Case 2's cracks on the right side sit higher than Case 1's", "not resolved")
+expect(found, "Pattern 1 lowers the crack count and the crown settlement (Case 3)", "holds")
+-- Pattern 2's count equals pattern 1's: "at least as much" is tested as "more", so not resolved
+-- although its crown settles less.
+expect(found, "Pattern 2 lowers them at least as much as pattern 1 (Case 3)", "not resolved")
+expect(found, "The side the joints dip towards (right) moves more (Case 1)", "holds")
+-- Case 2's wall points fell 5 m behind the faces in one member and 15 m behind them in another.
+expect(found, "The side the joints dip towards (right) moves more (Case 2)", "not shown")
+-- Case 3's left point 5 m in fell in one member, so all three are read 15 m in: 0.10, 0.15, 0.20.
+expect(found, "The side the joints dip towards (right) moves more (Case 3)", "holds")
+says(text, "right less left wall, 15 m behind the faces [m]: 0.15 ± 0.05 (t 5.20, 3 members, 95 % needs 2.92)")
+says(text, "5 of 11 trends hold.")
+
+-- One member of each run cannot be judged on means.
+found, text = verdicts(here .. "trends_members_length.csv")
+expect(found, "Case 3 (denser joints) gives more new cracks than Case 2", "not shown")
+says(text, "needs two members of each run")
+
+-- A run of Case 2 that stopped makes the trends that need Case 2 not shown, as with pairings.
+found = verdicts(here .. "trends_means.csv," .. here .. "trends_members_stop.csv")
+expect(found, "Case 3 (denser joints) gives more new cracks than Case 2", "not shown")
+
+-- judge takes two words only.
+local ok, err = pcall(function() arg = { tables = here .. "trends_means.csv", judge = "mean" }; dofile(trends) end)
+print(("%s: judge = mean refused (%s)"):format(ok and "WRONG" or "ok", tostring(err)))
+if ok or not tostring(err):find("judge must be pairings or means, got mean", 1, true) then failures = failures + 1 end
+
+if failures > 0 then error(("%d verdicts or texts not as expected"):format(failures), 0) end
+print("trends judged on means: every verdict as expected")
