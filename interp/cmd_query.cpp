@@ -305,8 +305,8 @@ const Command& info_command() {
       .run = run_info,
       .returns =
           "a table: blocks, zones, gridpoints, joint_edges, dropped_cuts, cuts_left_out (pieces of "
-          "crackseed{ auto }'s cuts left out where no bending of the cuts kept them the model's tolerance "
-          "apart), cuts_cut_back (its cuts cut back from a corner sharper than its min_angle), regions, "
+          "crackseed{ auto }'s cuts, or of its groups' outlines where no cut was left to give way, left "
+          "out where no bending of the cuts kept them the model's tolerance apart), cuts_cut_back (its cuts cut back from a corner sharper than its min_angle), regions, "
           "joint_sets, crack_seeds, sections (potential-crack sections), intact_sections, "
           "cracks, shear_cracks, tension_cracks, stage (excavations so far), title, cycle (cycles run so far), time (model time [s]; static mode: "
           "the cycle count), step (time step [s]), ratio (last unbalanced-force ratio), "

@@ -61,6 +61,7 @@ struct Piece {
   bool closed = false;  // the last point joins the first
   bool base = false;    // base outlines never move
   bool optional = false;  // may be left out (CutSegment::optional)
+  bool last_resort = false;  // may be left out once no optional piece can be (CutSegment::last_resort)
   bool left_out = false;  // it was: not in the arrangement any more
   double min_angle = 0.0;  // [rad] an optional piece meeting another edge at a sharper corner is cut back
   size_t segment_count() const { return closed ? points.size() : points.size() - 1; }
@@ -173,9 +174,10 @@ class BaseCutter {
       }
       out.snapped_vertices += fixes;
       if (round + 1 < kMaxSnapRounds) continue;
-      // Bending goes round in circles: the optional cuts still being bent give way, and the
-      // rest get half the rounds again to settle.
-      if (left_out_ < kMaxLeftOut && leave_out_optional(bent_in_round_)) {
+      // Bending goes round in circles: the optional cuts still being bent give way (else the
+      // last-resort ones), and the rest get half the rounds again to settle.
+      if (left_out_ < kMaxLeftOut &&
+          (leave_out(bent_in_round_, false) || leave_out(bent_in_round_, true))) {
         round = kMaxSnapRounds / 2 - 1;
         continue;
       }
@@ -192,12 +194,14 @@ class BaseCutter {
   }
 
  private:
-  // Leaves out, of each optional piece bent at p, the segment nearest to p: a piece that is one
-  // segment goes, a longer one splits in two there. False if there was none.
-  bool leave_out_optional(const std::vector<std::pair<int, Vec2>>& bent) {
+  // Leaves out, of each optional (or, with last_resort, each last-resort) piece bent at p, the
+  // segment nearest to p: a piece that is one segment goes, a longer one splits in two there.
+  // False if there was none.
+  bool leave_out(const std::vector<std::pair<int, Vec2>>& bent, bool last_resort) {
     std::vector<int> done;
     for (const auto& [id, p] : bent) {
-      if (!pieces_[static_cast<size_t>(id)].optional || pieces_[static_cast<size_t>(id)].left_out ||
+      const Piece& candidate = pieces_[static_cast<size_t>(id)];
+      if (!(last_resort ? candidate.last_resort : candidate.optional) || candidate.left_out ||
           std::find(done.begin(), done.end(), id) != done.end())
         continue;
       done.push_back(id);
@@ -692,6 +696,7 @@ BlockSet cut_blocks(const CutInput& input) {
       piece.points = {p, q};
       piece.origin = cut.origin;
       piece.optional = cut.optional;
+      piece.last_resort = cut.last_resort;
       piece.min_angle = cut.min_angle * std::numbers::pi / 180.0;
       const Vec2 pv = to_vec(p), qv = to_vec(q);
       piece_boxes.push_back(bounding_box({pv, qv}));

@@ -6,7 +6,8 @@
 // vertex, a nearly parallel cut forming a sliver) are resolved by bending the cut through the
 // vertex, so no block has an edge or a thickness below the tolerance and none has zero area.
 // Where bending cannot resolve a feature, an optional cut taking part in it (the automatic
-// potential cracks) is left out and counted; any other cut fails with a message naming the cuts.
+// potential cracks) is left out and counted; where none is, a last-resort cut (the outline of an
+// automatic group) is, and counted with them; any other cut fails with a message naming the cuts.
 // An optional cut with a min_angle that would make a block corner sharper than that loses its
 // stretch at the corner, back to its crossings either side (no thin wedge; counted too).
 #pragma once
@@ -26,6 +27,10 @@ struct CutSegment {
   // Optional cuts only: where one meets another edge at a corner sharper than this [deg], its
   // stretch there is cut back to the crossings on either side (0: never).
   double min_angle = 0.0;
+  // May be left out as optional cuts are, but only where no optional cut taking part in the
+  // feature is left to give way (a crackseed{ auto } group's outline: glued, it only ends the
+  // group's cuts, and a stretch of it left out leaves the rock there whole).
+  bool last_resort = false;
 };
 
 struct CutInput {

@@ -116,7 +116,8 @@ struct ModelInfo {
   int gridpoints = 0;
   int joint_edges = 0;      // block edges made by joints, each counted once per side
   int dropped_cuts = 0;
-  int cuts_left_out = 0;    // automatic potential-crack cuts that could not be laid clear of the rest
+  int cuts_left_out = 0;    // automatic potential-crack cuts (or stretches of their groups' outlines) that
+                            // could not be laid clear of the rest
   int cuts_cut_back = 0;    // automatic potential-crack cuts cut back from a corner sharper than min_angle
   int regions = 0;
   int joint_sets = 0;

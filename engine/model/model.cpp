@@ -197,7 +197,8 @@ BlockSet Model::cut(const Inputs& inputs) const {
     for (const auto& [a, b] : seed.cuts)
       input.cuts.push_back({a, b, {EdgeKind::potential, -1, static_cast<int>(i), true}, clip, optional,
                             optional ? seed.min_angle : 0.0});
-    for (const auto& [a, b] : seed.outline) input.cuts.push_back({a, b, {EdgeKind::region, -1, -1, true}, -1});
+    for (const auto& [a, b] : seed.outline)
+      input.cuts.push_back({a, b, {EdgeKind::region, -1, -1, true}, -1, false, 0.0, true});
     if (!seed.cuts.empty()) continue;
     for (const double angle : seed.angles) {
       JointSetDef lines;
