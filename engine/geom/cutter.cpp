@@ -52,6 +52,8 @@ using Vertex = Arrangement::Vertex_const_handle;
 
 constexpr int kMaxSnapRounds = 12;
 constexpr int kMaxLeftOut = 200;  // optional pieces left out of one base before it fails all the same
+constexpr int kMaxRestarts = 4;   // fresh starts of one base with the optional cuts near a spot left out
+constexpr double kFirstRestartRadius = 8.0;  // [tolerances] the first restart's radius
 
 // A polyline that goes into the arrangement: a base outline, a region outline (both
 // closed) or one (clipped) cut.
@@ -156,7 +158,10 @@ class BaseCutter {
     for (auto& piece : cut_pieces) pieces_.push_back(std::move(piece));
   }
 
-  void run(BlockSet& out) {
+  // Lays the cuts into `out`; false (and nothing laid) where bending goes round in circles and
+  // nothing is left to give way: stuck_at() says where, fail_stuck() throws the message.
+  bool run(BlockSet& out) {
+    int snapped = 0;
     for (int round = 0;; ++round) {
       build();
       inside_faces_ = find_inside_faces();
@@ -172,7 +177,7 @@ class BaseCutter {
         round = -1;
         continue;
       }
-      out.snapped_vertices += fixes;
+      snapped += fixes;
       if (round + 1 < kMaxSnapRounds) continue;
       // Bending goes round in circles: the optional cuts still being bent give way (else the
       // last-resort ones), and the rest get half the rounds again to settle.
@@ -181,16 +186,24 @@ class BaseCutter {
         round = kMaxSnapRounds / 2 - 1;
         continue;
       }
-      fail("cannot resolve geometry features smaller than the tolerance ({:.3g} m) in block {}: "
-           "near ({:.4g}, {:.4g}) {} keep coming closer than that after being bent together "
-           "(cuts crossing at a shallow angle?); move the cuts apart or change "
-           "model{{tolerance=}}",
-           tolerance_, base_index_ + 1, last_fix_.x, last_fix_.y, describe_pieces(last_bent_));
+      return false;
     }
+    out.snapped_vertices += snapped;
     out.dropped_cuts += dropped_;
     out.cuts_left_out += left_out_;
     out.cuts_cut_back += cut_back_;
     extract(out);
+    return true;
+  }
+
+  Vec2 stuck_at() const { return last_fix_; }
+
+  [[noreturn]] void fail_stuck() const {
+    fail("cannot resolve geometry features smaller than the tolerance ({:.3g} m) in block {}: "
+         "near ({:.4g}, {:.4g}) {} keep coming closer than that after being bent together "
+         "(cuts crossing at a shallow angle?); move the cuts apart or change "
+         "model{{tolerance=}}",
+         tolerance_, base_index_ + 1, last_fix_.x, last_fix_.y, describe_pieces(last_bent_));
   }
 
  private:
@@ -671,6 +684,23 @@ bool boxes_overlap(const Box& a, const Box& b) {
   return a.x0 <= b.x1 && b.x0 <= a.x1 && a.y0 <= b.y1 && b.y0 <= a.y1;
 }
 
+// Removes the optional and last-resort pieces that pass within `radius` of p; how many.
+int leave_out_near(std::vector<Piece>& pieces, Vec2 p, double radius) {
+  const auto near_p = [&](const Piece& piece) {
+    if (!piece.optional && !piece.last_resort) return false;
+    for (size_t i = 0; i < piece.segment_count(); ++i) {
+      const Vec2 a = to_vec(piece.points[i]), b = to_vec(piece.points[(i + 1) % piece.points.size()]);
+      const Vec2 d = b - a;
+      const double t = std::clamp(dot(p - a, d) / std::max(dot(d, d), 1e-300), 0.0, 1.0);
+      if (norm(a + t * d - p) <= radius) return true;
+    }
+    return false;
+  };
+  const auto before = pieces.size();
+  std::erase_if(pieces, near_p);
+  return static_cast<int>(before - pieces.size());
+}
+
 }  // namespace
 
 BlockSet cut_blocks(const CutInput& input) {
@@ -723,8 +753,18 @@ BlockSet cut_blocks(const CutInput& input) {
     std::vector<Piece> near;
     for (size_t k = 0; k < pieces.size(); ++k)
       if (boxes_overlap(box, piece_boxes[k])) near.push_back(pieces[k]);
-    BaseCutter cutter(base, static_cast<int>(i), std::move(near), input.regions, input.tolerance);
-    cutter.run(out);
+    // Stuck with nothing left to give way, the required cuts there may be bent by optional ones
+    // that were left out since: start again from the cuts as given, less the optional and
+    // last-resort ones passing within a radius of the spot that grows with each try.
+    double radius = kFirstRestartRadius * input.tolerance;
+    for (int restart = 0;; ++restart) {
+      BaseCutter cutter(base, static_cast<int>(i), near, input.regions, input.tolerance);
+      if (cutter.run(out)) break;
+      const int left_out = leave_out_near(near, cutter.stuck_at(), radius);
+      if (restart == kMaxRestarts || left_out == 0) cutter.fail_stuck();
+      out.cuts_left_out += left_out;
+      radius *= 2.0;
+    }
   }
   return out;
 }

@@ -7,7 +7,10 @@
 // vertex, so no block has an edge or a thickness below the tolerance and none has zero area.
 // Where bending cannot resolve a feature, an optional cut taking part in it (the automatic
 // potential cracks) is left out and counted; where none is, a last-resort cut (the outline of an
-// automatic group) is, and counted with them; any other cut fails with a message naming the cuts.
+// automatic group) is, and counted with them. Where required cuts still keep coming closer (bent
+// by optional ones that gave way since), the base starts again from the cuts as given, less the
+// optional and last-resort ones near the spot, within a radius that doubles each time (counted
+// too); where none is left to go, it fails with a message naming the cuts.
 // An optional cut with a min_angle that would make a block corner sharper than that loses its
 // stretch at the corner, back to its crossings either side (no thin wedge; counted too).
 #pragma once
