@@ -5,35 +5,9 @@
 -- below can be worked by hand. The bolted runs of a member share its mesh and cuts, so the bolts'
 -- trends are paired member by member.
 local here = debug.getinfo(1, "S").source:match("^@(.*[/\\])") or "./"
-local trends = here .. "../../scripts/paper/trends.lua"
-
-local function verdicts(tables)
-  local out = "trends_means.md"
-  arg = { tables = tables, markdown = out, judge = "means" }
-  dofile(trends)
-  local f = assert(io.open(out, "r"))
-  local text = f:read("a")
-  f:close()
-  local found = {}
-  for line in text:gmatch("[^\n]+") do
-    local statement, verdict = line:match("^| (.-) | .- | ([^|]-) |$")
-    if statement then found[statement] = verdict end
-  end
-  return found, text
-end
-
-local failures = 0
-local function expect(found, statement, verdict)
-  local got = found[statement]
-  local ok = got == verdict
-  print(("%s: %s -> %s (expected %s)"):format(ok and "ok" or "WRONG", statement, tostring(got), verdict))
-  if not ok then failures = failures + 1 end
-end
-local function says(text, words)
-  local ok = text:find(words, 1, true) ~= nil
-  print(("%s: the table says %q"):format(ok and "ok" or "WRONG", words))
-  if not ok then failures = failures + 1 end
-end
+local check = dofile(here .. "trends_check.lua")
+local expect, says = check.expect, check.says
+local function verdicts(tables) return check.verdicts(tables, { judge = "means" }) end
 
 local found, text = verdicts(here .. "trends_means.csv")
 says(text, "3 runs of each case")
@@ -76,9 +50,11 @@ found = verdicts(here .. "trends_means.csv," .. here .. "trends_members_stop.csv
 expect(found, "Case 3 (denser joints) gives more new cracks than Case 2", "not shown")
 
 -- judge takes two words only.
-local ok, err = pcall(function() arg = { tables = here .. "trends_means.csv", judge = "mean" }; dofile(trends) end)
+local ok, err = pcall(check.verdicts, here .. "trends_means.csv", { judge = "mean" })
 print(("%s: judge = mean refused (%s)"):format(ok and "WRONG" or "ok", tostring(err)))
-if ok or not tostring(err):find("judge must be pairings or means, got mean", 1, true) then failures = failures + 1 end
+if ok or not tostring(err):find("judge must be pairings or means, got mean", 1, true) then
+  check.failures = check.failures + 1
+end
 
-if failures > 0 then error(("%d verdicts or texts not as expected"):format(failures), 0) end
+if check.failures > 0 then error(("%d verdicts or texts not as expected"):format(check.failures), 0) end
 print("trends judged on means: every verdict as expected")

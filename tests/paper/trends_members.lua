@@ -7,31 +7,8 @@
 -- whose measuring points fell with their blocks; trends_members_mirror.csv: mirror images;
 -- trends_members_length.csv: one run of each with the broken sections' length).
 local here = debug.getinfo(1, "S").source:match("^@(.*[/\\])") or "./"
-local trends = here .. "../../scripts/paper/trends.lua"
-
--- Runs trends.lua over `tables` and returns its markdown, one table row per trend statement.
-local function verdicts(tables)
-  local out = "trends_members.md"
-  arg = { tables = tables, markdown = out }
-  dofile(trends)
-  local f = assert(io.open(out, "r"))
-  local text = f:read("a")
-  f:close()
-  local found = {}
-  for line in text:gmatch("[^\n]+") do
-    local statement, verdict = line:match("^| (.-) | .- | ([^|]-) |$")
-    if statement then found[statement] = verdict end
-  end
-  return found, text
-end
-
-local failures = 0
-local function expect(found, statement, verdict)
-  local got = found[statement]
-  local ok = got == verdict
-  print(("%s: %s -> %s (expected %s)"):format(ok and "ok" or "WRONG", statement, tostring(got), verdict))
-  if not ok then failures = failures + 1 end
-end
+local check = dofile(here .. "trends_check.lua")
+local verdicts, expect = check.verdicts, check.expect
 
 local found, text = verdicts(here .. "trends_members.csv")
 assert(text:find("2 runs of each case (releases 100, 110", 1, true), "the title names the members")
@@ -112,5 +89,5 @@ assert(text:find("Case 3: 320, Case 2: 300 cracks; broken length Case 3: 380, Ca
 assert(text:find("262 m: 380 cracks; broken length 158 m: 380, 212 m: 410, 262 m: 450 m", 1, true),
   "the depth trend's lengths")
 
-if failures > 0 then error(("%d verdicts wrong"):format(failures), 0) end
+if check.failures > 0 then error(("%d verdicts wrong"):format(check.failures), 0) end
 print("all verdicts as expected")

@@ -391,11 +391,11 @@ TEST(Cutter, AreaIsConservedForRandomConfigurations) {
 // Cuts 2 deg off a joint set (tests/bad/crackseed_nearly_parallel_to_joints.lua): bending them
 // through each other's vertices goes round in circles. Required cuts fail, naming both inputs;
 // optional ones (crackseed{ auto }'s) give way where they must, are counted, and the rest are laid.
-CutInput cuts_two_degrees_off_the_joints(bool optional) {
+// In `extent`, each cut laid as `kind` says (its origin and flags).
+CutInput cuts_two_degrees_off_the_joints_in(const Box& extent, const CutSegment& kind) {
   CutInput input;
-  input.bases.push_back(box(-100, 100, -90, 90));
+  input.bases.push_back(box(extent.x0, extent.x1, extent.y0, extent.y1));
   input.tolerance = 1e-3 * std::hypot(200.0, 180.0);
-  const Box extent{-100, 100, -90, 90};
   JointSetDef joints;
   joints.angle = 60;
   joints.spacing = {16, 12, 8};
@@ -406,12 +406,19 @@ CutInput cuts_two_degrees_off_the_joints(bool optional) {
     cracks.spacing = {4.8};
     cracks.origin = {1.3, 0.7};
     for (CutSegment cut : joint_set_traces(cracks, extent, -1, -1)) {
-      cut.origin = {EdgeKind::potential, -1, 0, true};
-      cut.optional = optional;
+      cut.origin = kind.origin;
+      cut.optional = kind.optional;
+      cut.last_resort = kind.last_resort;
       input.cuts.push_back(cut);
     }
   }
   return input;
+}
+
+CutInput cuts_two_degrees_off_the_joints(bool optional) {
+  CutSegment kind{{}, {}, {EdgeKind::potential, -1, 0, true}};
+  kind.optional = optional;
+  return cuts_two_degrees_off_the_joints_in({-100, 100, -90, 90}, kind);
 }
 
 TEST(Cutter, OptionalCutsThatCannotBeLaidClearAreLeftOutAndCounted) {
@@ -458,27 +465,11 @@ TEST(Cutter, OptionalCutsThatCannotBeLaidClearAreLeftOutAndCounted) {
 // outline is laid as before, to the bit.
 // (A 50 m square: the 200 m x 180 m of the test above, cut four times, would take a minute.)
 CutInput two_degrees_off_the_joints_in_a_square(bool cuts_optional, bool outline, bool last_resort) {
-  CutInput input;
-  input.bases.push_back(box(-25, 25, -25, 25));
-  input.tolerance = 1e-3 * std::hypot(200.0, 180.0);
-  const Box extent{-25, 25, -25, 25};
-  JointSetDef joints;
-  joints.angle = 60;
-  joints.spacing = {16, 12, 8};
-  input.cuts = joint_set_traces(joints, extent, 0, -1);
-  for (double angle : {62.0, 118.0}) {
-    JointSetDef cracks;
-    cracks.angle = angle;
-    cracks.spacing = {4.8};
-    cracks.origin = {1.3, 0.7};
-    for (CutSegment cut : joint_set_traces(cracks, extent, -1, -1)) {
-      cut.origin = outline ? EdgeOrigin{EdgeKind::region, -1, -1, true} : EdgeOrigin{EdgeKind::potential, -1, 0, true};
-      cut.optional = cuts_optional && !outline;
-      cut.last_resort = outline && last_resort;
-      input.cuts.push_back(cut);
-    }
-  }
-  return input;
+  CutSegment kind{{}, {}, {EdgeKind::potential, -1, 0, true}};
+  if (outline) kind.origin = {EdgeKind::region, -1, -1, true};
+  kind.optional = cuts_optional && !outline;
+  kind.last_resort = outline && last_resort;
+  return cuts_two_degrees_off_the_joints_in({-25, 25, -25, 25}, kind);
 }
 
 TEST(Cutter, AnAutomaticGroupsOutlineGivesWayOnlyWhereNoOptionalCutCan) {
