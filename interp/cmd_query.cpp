@@ -306,7 +306,8 @@ const Command& info_command() {
       .returns =
           "a table: blocks, zones, gridpoints, joint_edges, dropped_cuts, cuts_left_out (pieces of "
           "crackseed{ auto }'s cuts, or of its groups' outlines where no cut was left to give way, left "
-          "out where no bending of the cuts kept them the model's tolerance apart), cuts_cut_back (its cuts cut back from a corner sharper than its min_angle), regions, "
+          "out where no bending of the cuts kept them the model's tolerance apart, or near where "
+          "joints they had bent kept coming closer), cuts_cut_back (its cuts cut back from a corner sharper than its min_angle), regions, "
           "joint_sets, crack_seeds, sections (potential-crack sections), intact_sections, "
           "cracks, shear_cracks, tension_cracks, stage (excavations so far), title, cycle (cycles run so far), time (model time [s]; static mode: "
           "the cycle count), step (time step [s]), ratio (last unbalanced-force ratio), "
