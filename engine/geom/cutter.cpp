@@ -68,10 +68,19 @@ struct Piece {
   double min_angle = 0.0;  // [rad] an optional piece meeting another edge at a sharper corner is cut back
   size_t segment_count() const { return closed ? points.size() : points.size() - 1; }
   Segment segment(size_t i) const { return Segment(points[i], points[(i + 1) % points.size()]); }
+  // Distance from p to segment i, in doubles (for choosing, not for the geometry).
+  double distance(size_t i, Vec2 p) const;
 };
 
 Point to_point(Vec2 p) { return Point(p.x, p.y); }
 Vec2 to_vec(const Point& p) { return {CGAL::to_double(p.x()), CGAL::to_double(p.y())}; }
+
+double Piece::distance(size_t i, Vec2 p) const {
+  const Vec2 a = to_vec(points[i]), b = to_vec(points[(i + 1) % points.size()]);
+  const Vec2 d = b - a;
+  const double t = std::clamp(dot(p - a, d) / std::max(dot(d, d), 1e-300), 0.0, 1.0);
+  return norm(a + t * d - p);
+}
 
 // Parts of segment ab strictly inside the polygon, computed exactly.
 std::vector<std::pair<Point, Point>> clip_segment(const Point& a, const Point& b,
@@ -223,10 +232,7 @@ class BaseCutter {
       size_t nearest = 0;
       double best = INFINITY;
       for (size_t i = 0; i < piece.segment_count(); ++i) {
-        const Vec2 a = to_vec(piece.points[i]), b = to_vec(piece.points[i + 1]);
-        const Vec2 d = b - a;
-        const double t = std::clamp(dot(p - a, d) / std::max(dot(d, d), 1e-300), 0.0, 1.0);
-        const double distance = norm(a + t * d - p);
+        const double distance = piece.distance(i, p);
         if (distance < best) best = distance, nearest = i;
       }
       Piece after = piece;
@@ -688,12 +694,8 @@ bool boxes_overlap(const Box& a, const Box& b) {
 int leave_out_near(std::vector<Piece>& pieces, Vec2 p, double radius) {
   const auto near_p = [&](const Piece& piece) {
     if (!piece.optional && !piece.last_resort) return false;
-    for (size_t i = 0; i < piece.segment_count(); ++i) {
-      const Vec2 a = to_vec(piece.points[i]), b = to_vec(piece.points[(i + 1) % piece.points.size()]);
-      const Vec2 d = b - a;
-      const double t = std::clamp(dot(p - a, d) / std::max(dot(d, d), 1e-300), 0.0, 1.0);
-      if (norm(a + t * d - p) <= radius) return true;
-    }
+    for (size_t i = 0; i < piece.segment_count(); ++i)
+      if (piece.distance(i, p) <= radius) return true;
     return false;
   };
   const auto before = pieces.size();
