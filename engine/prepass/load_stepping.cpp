@@ -204,11 +204,10 @@ int newton(Kinsol& k, System& s, ImplicitProblem& p, double to, StageLog& log) {
   return flag;
 }
 
-}  // namespace
-
-StageLog solve_stage(const Mechanics& m, ImplicitProblem& p, const NewtonSettings& settings, const std::string& stage,
-                     std::vector<std::uint8_t>& yielded) {
-  const auto start = std::chrono::steady_clock::now();
+// One attempt at the stage in `steps` load steps, from p's start; on failure log.failure says why
+// and p stays at the last converged step.
+StageLog solve_in_steps(const Mechanics& m, ImplicitProblem& p, const NewtonSettings& settings, int steps,
+                        const std::string& stage, std::vector<std::uint8_t>& yielded) {
   StageLog log;
   const sunindextype n = p.unknowns;
   yielded.assign(p.zones.size(), 0);
@@ -227,7 +226,7 @@ StageLog solve_stage(const Mechanics& m, ImplicitProblem& p, const NewtonSetting
   start_kinsol(k, s, n, p.zones.size(), settings);
 
   std::vector<double> out(static_cast<size_t>(n));
-  double done = 0.0, size = 1.0 / settings.steps;
+  double done = 0.0, size = 1.0 / steps;
   int halvings = 0;
   while (done < 1.0) {
     const double to = done + size >= 1.0 - 1e-9 ? 1.0 : done + size;  // no sliver step from rounding
@@ -246,25 +245,52 @@ StageLog solve_stage(const Mechanics& m, ImplicitProblem& p, const NewtonSetting
       for (size_t z = 0; z < p.zones.size(); ++z) yielded[z] |= p.state[z];
       done = to;
       halvings = 0;
-      size = std::min(2.0 * size, 1.0 / settings.steps);
+      size = std::min(2.0 * size, 1.0 / steps);
       continue;
     }
     ++log.cutbacks;
     if (++halvings > settings.max_cutbacks) {
-      const std::string why = fmt::format(
-          "{}: Newton did not converge from load factor {:.6g} to {:.6g} after {} cut-backs: "
-          "out-of-balance force {:.3g} of the scale {:.3g} N/m ({})",
-          stage, done, to, settings.max_cutbacks, largest / s.scale, s.scale,
+      log.failure = fmt::format(
+          "{}: Newton did not converge from load factor {:.6g} to {:.6g} after {} cut-backs ({} load steps "
+          "from the stage's start): out-of-balance force {:.3g} of the scale {:.3g} N/m ({})",
+          stage, done, to, settings.max_cutbacks, steps, largest / s.scale, s.scale,
           s.error.empty() ? "KINSOL: " + flag_name(flag) : s.error);
-      if (!settings.keep_on_failure) fail("{}; more steps, or a softer load path, may help", why);
-      // Kept: the state stays at the last converged step, and the caller solves no further stage.
-      log.failure = why;
       log.reached = done;
       break;
     }
     size = 0.5 * (to - done);  // of the step tried, which may have been clamped at the end
   }
+  return log;
+}
+
+}  // namespace
+
+// A stage that fails is solved again from its start in twice as many load steps, `restarts`
+// times at most. Newton's failure is a property of the path as much as of the load: the state a
+// coarse step converged to can be one from which no step however small converges, where a finer
+// path gets through (Set M's continuum at 212 m, bench 12, in 2 steps a stage: stuck at load
+// factor 0.625; in 4 or 10, complete). A stage that every path fails may be near collapse, or
+// may be Newton's failure alone: the message cannot tell which.
+StageLog solve_stage(const Mechanics& m, ImplicitProblem& p, const NewtonSettings& settings, const std::string& stage,
+                     std::vector<std::uint8_t>& yielded) {
+  const auto start = std::chrono::steady_clock::now();
+  const ImplicitProblem at_start = p;
+  int steps = settings.steps;
+  StageLog log = solve_in_steps(m, p, settings, steps, stage, yielded);
+  for (int restart = 1; restart <= settings.restarts && !log.failure.empty(); ++restart) {
+    p = at_start;
+    steps *= 2;
+    StageLog again = solve_in_steps(m, p, settings, steps, stage, yielded);
+    again.iterations += log.iterations;
+    again.cutbacks += log.cutbacks;
+    again.steps.insert(again.steps.begin(), log.steps.begin(), log.steps.end());
+    again.restarts = restart;
+    log = std::move(again);
+  }
   log.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!log.failure.empty() && !settings.keep_on_failure)
+    fail("{}; more steps, or a softer load path, may help", log.failure);
+  // Kept: the state stays at the last converged step, and the caller solves no further stage.
   return log;
 }
 

@@ -13,7 +13,9 @@ namespace edem {
 // Solves the problem from its start (p.u0, p.stress0): R0, the out-of-balance force there, is
 // applied in steps; at load factor a the system is force(u) - (1 - a) R0 = 0. On return p.u0 and
 // p.stress0 are the solution, and `yielded` (per problem zone) has the state bits of every
-// converged step or'ed in. Throws edem::Error naming `stage` when a step fails after the cut-backs.
+// converged step or'ed in. A stage whose step fails after the cut-backs is solved again from its
+// start in twice as many steps, settings.restarts times; throws edem::Error naming `stage` when the
+// last attempt fails too (settings.keep_on_failure: returns with log.failure set instead).
 StageLog solve_stage(const Mechanics& m, ImplicitProblem& p, const NewtonSettings& settings, const std::string& stage,
                      std::vector<std::uint8_t>& yielded);
 

@@ -17,6 +17,7 @@ void check_settings(const NewtonSettings& s) {
   if (s.steps < 1) fail("steps must be >= 1, got {}", s.steps);
   if (!(s.tolerance > 0.0 && s.tolerance < 1.0)) fail("tolerance must be in (0, 1), got {}", s.tolerance);
   if (s.max_iterations < 1) fail("iterations must be >= 1, got {}", s.max_iterations);
+  if (s.restarts < 0) fail("restarts must be >= 0, got {}", s.restarts);
 }
 
 // Each node tied to the first node at exactly its reference place: the two faces of a joint, whose

@@ -19,7 +19,8 @@ struct NewtonSettings {
   int steps = 10;                // load steps per stage
   double tolerance = 1e-8;       // converged: |out-of-balance force| <= tolerance x force scale, per component
   int max_iterations = 30;       // Newton iterations per load step before it is cut back
-  int max_cutbacks = 10;         // halvings of one step before the stage fails
+  int max_cutbacks = 10;         // halvings of one step before the stage's attempt fails
+  int restarts = 2;              // a failed stage solved again from its start in twice the steps
   PrepassSolver solver = PrepassSolver::umfpack;
   bool keep_on_failure = false;  // a stage that fails ends the prepass there instead of throwing
 };
@@ -34,6 +35,7 @@ struct StageLog {
   std::vector<LoadStep> steps;    // every attempt, cut-back ones included
   int iterations = 0;             // Newton iterations, all attempts
   int cutbacks = 0;
+  int restarts = 0;               // times the stage was solved again from its start (solve_stage)
   double scale = 0.0;             // force scale [N/m]
   double seconds = 0.0;
   std::string failure;            // keep_on_failure: why the stage stopped short of its full load

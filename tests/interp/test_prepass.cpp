@@ -146,14 +146,15 @@ TEST(Prepass, AStageWithNoStaticStateEndsThePrepassWhenKept) {
 // given the same out-of-balance force, to the last bit, four iterations in a row (it no longer
 // moves the iterate), instead of repeating it up to its 30th iteration. Six of the 17 failed load
 // steps end so (one did before, for KINSOL's own reasons), 814 iterations in all against 897, and
-// the steps are cut back exactly as before: the same 17 cut-backs, the same factor reached.
+// the steps are cut back exactly as before: the same 17 cut-backs, the same factor reached (one
+// attempt at the stage: restarts = 0).
 TEST(Prepass, AStuckLineSearchGivesUpAndTheStepIsCutBack) {
   Interpreter interpreter;
   interpreter.context().quiet = true;
   expect_runs(interpreter, std::string(kPlate) + R"(
     zone{ edge = 1 }
     material{ "rock", model = "mohr", young = 1e9, poisson = 0.25, cohesion = 0.3e6, friction = 10 }
-    local pre = prepass{ stages = { "hole" }, iterations = 30, on_failure = "keep" }
+    local pre = prepass{ stages = { "hole" }, iterations = 30, restarts = 0, on_failure = "keep" }
     local hole = pre.stages[2]
     assert(hole.reached == 0.7015625, "reached " .. hole.reached)
     local failed, stalled = 0, 0
@@ -168,6 +169,33 @@ TEST(Prepass, AStuckLineSearchGivesUpAndTheStepIsCutBack) {
     assert(stalled >= 4, "failed steps that ended on four equal forces: " .. stalled)  -- 6 now, 1 before
     assert(hole.iterations < 897, "iterations " .. hole.iterations)  -- 814 now, 897 before
   )");
+}
+
+// A stage that fails is solved again from its start in twice the load steps, `restarts` times:
+// the weak rock's hole, which has no static state past about half its unloading, fails in 10, 20
+// and 40 steps; the message names the last attempt's, and the stage's log keeps every attempt's
+// steps. restarts = 0 makes one attempt; a negative count is refused before anything is solved.
+TEST(Prepass, AFailedStageIsSolvedAgainInTwiceTheSteps) {
+  const std::string weak = std::string(kPlate) + R"(
+    zone{ edge = 1 }
+    material{ "rock", model = "mohr", young = 1e9, poisson = 0.25, cohesion = 0.3e6, friction = 10 }
+  )";
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, weak + R"lua(
+    local once = prepass{ stages = { "hole" }, iterations = 8, restarts = 0, on_failure = "keep" }
+    local hole = once.stages[2]
+    assert(hole.restarts == 0, "restarts " .. hole.restarts)
+    assert(once.failure:find("(10 load steps from the stage's start)", 1, true), once.failure)
+    local again = prepass{ stages = { "hole" }, iterations = 8, on_failure = "keep" }
+    local retried = again.stages[2]
+    assert(retried.restarts == 2, "restarts " .. retried.restarts)
+    assert(again.failure:find("(40 load steps from the stage's start)", 1, true), again.failure)
+    assert(#retried.steps > #hole.steps and retried.cutbacks > hole.cutbacks, "every attempt's steps are kept")
+    assert(retried.iterations > hole.iterations)
+    assert(retried.reached > 0.1 and retried.reached < 1, "reached " .. retried.reached)
+  )lua");
+  EXPECT_TRUE(contains(error_of(interpreter, weak + "prepass{ stages = { \"hole\" }, restarts = -1 }"), "restarts"));
 }
 
 // crackseed{ auto }'s regions: by principal direction, whatever the mode (a lone zone marked as
