@@ -75,8 +75,8 @@
 --             instead of only being recorded [false]
 -- Steps: the region with the case's joints and the cavern's steps cut as regions; the prepass of
 -- the rock mass as one continuum (Mohr-Coulomb rock of the set, joints tied) over all the steps
--- (where the continuum has no static state it ends there: on_failure = "keep", noted in the row);
--- potential cracks where it yields (crackseed{ auto }, spacing a tenth of the cavern's height,
+-- (where Newton fails on every load path it tries it ends there: on_failure = "keep", noted in the
+-- row); potential cracks where it yields (crackseed{ auto }, spacing a tenth of the cavern's height,
 -- 4.8 m; the set's intact strength); then elastic rock, the set's Coulomb joints and the
 -- potential cracks, in-situ stress solved, displacements reset, and each step excavated, solved
 -- and bolted. Blocks that come loose (a gridpoint 1 m from where it started) are mucked out every
@@ -192,8 +192,11 @@ material{ "intact", model = "mohr", density = rock.density, young = rock.young, 
 assign{ material = "intact" }
 local names = {}
 for _, s in ipairs(c.stages) do names[#names + 1] = s.name end
--- Near collapse the continuum may have no static state at a late step (Set M deeper than 158 m):
--- the prepass then ends there, and the cracks go where it yielded up to that point.
+-- Near collapse, or where Newton fails on the stage's load path and on the two finer ones the
+-- prepass tries after it (prepass{ restarts }), the prepass ends at that step, and the cracks go
+-- where it yielded up to that point. Until session 46 it had no restarts, and stopped at 212 m at
+-- bench 12 (load factor 0.625), where the path in 4 steps gets through (scripts/paper/README.md,
+-- "Results", session 46).
 -- Its linear solves use Eigen's SparseLU ("lu"), not the quicker UMFPACK: UMFPACK's dense kernels
 -- come from OpenBLAS, which picks them for the CPU it runs on, and their last bits move the cracks'
 -- ends, so the mesh and the whole run differ from one machine to the next (scripts/paper/README.md,
@@ -203,7 +206,7 @@ local prepass_note = "complete"
 if pre.failure then
   local last = pre.stages[#pre.stages]
   prepass_note = ("%s at load factor %.3g"):format(last.name, last.reached)
-  print(("%s: the prepass found no static state in %s: cracks placed from the zones yielded so far"):format(
+  print(("%s: the prepass stopped short in %s: cracks placed from the zones yielded so far"):format(
     tag, prepass_note))
 end
 local yielded = 0
