@@ -175,13 +175,15 @@ const Command& prepass_command() {
           "triangles, small strain, plane strain; elastic and Mohr-Coulomb zones), then excavates each of "
           "`stages` in turn and solves again, with KINSOL's Newton method and line search on the consistent "
           "tangent. Each stage's out-of-balance force is applied in `steps` load steps, a step that fails is "
-          "halved (up to 10 times), and a stage whose step still fails is solved again from its start in twice "
-          "as many steps (`restarts` times) before it fails with a message naming it (on_failure = \"keep\": "
-          "the prepass ends there instead and returns what it found up to that stage's last converged step, "
-          "with failure set: near collapse, where the continuum has no static state, or where Newton fails "
-          "on every path tried; the message cannot tell which). The model is left as it "
+          "halved (up to 10 times), and a stage whose step still fails is solved again from "
+          "its start in twice as many steps (`restarts` times) before it fails with a message "
+          "naming it (on_failure = \"keep\": the prepass ends there instead and returns what it "
+          "found up to that stage's last converged step, with failure set: near collapse, where "
+          "the continuum has no static state, or where Newton fails on every path tried; the "
+          "message cannot tell which). The model is left as it "
           "was. Returns a table: failure (only when it stopped short: the message), stages (name, iterations, "
-          "cutbacks, restarts, seconds, reached (load factor of the last converged step: 1 unless it stopped short), "
+          "cutbacks, restarts, seconds, reached (load factor of the last converged step: 1 unless "
+          "it stopped short), "
           "failure (the stage that stopped short), steps with each Newton iterate's residual), zones (id, x, y, state over all stages and states per stage: none, shear, "
           "tension, shear+tension, excavated; stresses, principal s1 (most compressive) and s3, angle of "
           "s1 from +x in degrees) and gridpoints (id, ux, uy: displacement the prepass adds). Joints are "
@@ -198,8 +200,9 @@ const Command& prepass_command() {
                "converged when every out-of-balance force component is at most this times the stage's force scale"},
               {"iterations", Type::integer, "", ge(1), "30", "Newton iterations per load step before it is halved"},
               {"restarts", Type::integer, "", ge(0), "2",
-               "a stage that fails after its cut-backs is solved again from its start in twice as many load steps, "
-               "at most this many times: Newton's failure depends on the load path as well as on the load"},
+               "a stage that fails after its cut-backs is solved again from its start in twice "
+               "as many load steps, at most this many times: Newton's failure depends on the load "
+               "path as well as on the load"},
               {"solver", Type::string, "", any_value, "\"umfpack\"",
                "sparse direct solver (measured in tests/bench/RESULTS.md): umfpack (SuiteSparse's UMFPACK, the "
                "fastest; its dense kernels come from OpenBLAS, which picks them for the CPU, so its last bits, and "

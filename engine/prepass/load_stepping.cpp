@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 
 #include "core/error.hpp"
 #include "prepass/eigen_linear_solver.hpp"
@@ -206,8 +207,8 @@ int newton(Kinsol& k, System& s, ImplicitProblem& p, double to, StageLog& log) {
 
 // One attempt at the stage in `steps` load steps, from p's start; on failure log.failure says why
 // and p stays at the last converged step.
-StageLog solve_in_steps(const Mechanics& m, ImplicitProblem& p, const NewtonSettings& settings, int steps,
-                        const std::string& stage, std::vector<std::uint8_t>& yielded) {
+StageLog solve_in_steps(const Mechanics& m, ImplicitProblem& p, const NewtonSettings& settings,
+                        int steps, const std::string& stage, std::vector<std::uint8_t>& yielded) {
   StageLog log;
   const sunindextype n = p.unknowns;
   yielded.assign(p.zones.size(), 0);
@@ -251,8 +252,9 @@ StageLog solve_in_steps(const Mechanics& m, ImplicitProblem& p, const NewtonSett
     ++log.cutbacks;
     if (++halvings > settings.max_cutbacks) {
       log.failure = fmt::format(
-          "{}: Newton did not converge from load factor {:.6g} to {:.6g} after {} cut-backs ({} load steps "
-          "from the stage's start): out-of-balance force {:.3g} of the scale {:.3g} N/m ({})",
+          "{}: Newton did not converge from load factor {:.6g} to {:.6g} after {} cut-backs ({} "
+          "load steps from the stage's start): out-of-balance force {:.3g} of the scale {:.3g} N/m "
+          "({})",
           stage, done, to, settings.max_cutbacks, steps, largest / s.scale, s.scale,
           s.error.empty() ? "KINSOL: " + flag_name(flag) : s.error);
       log.reached = done;
@@ -271,13 +273,14 @@ StageLog solve_in_steps(const Mechanics& m, ImplicitProblem& p, const NewtonSett
 // path gets through (Set M's continuum at 212 m, bench 12, in 2 steps a stage: stuck at load
 // factor 0.625; in 4 or 10, complete). A stage that every path fails may be near collapse, or
 // may be Newton's failure alone: the message cannot tell which.
-StageLog solve_stage(const Mechanics& m, ImplicitProblem& p, const NewtonSettings& settings, const std::string& stage,
-                     std::vector<std::uint8_t>& yielded) {
+StageLog solve_stage(const Mechanics& m, ImplicitProblem& p, const NewtonSettings& settings,
+                     const std::string& stage, std::vector<std::uint8_t>& yielded) {
   const auto start = std::chrono::steady_clock::now();
   const ImplicitProblem at_start = p;
   int steps = settings.steps;
   StageLog log = solve_in_steps(m, p, settings, steps, stage, yielded);
   for (int restart = 1; restart <= settings.restarts && !log.failure.empty(); ++restart) {
+    if (steps > std::numeric_limits<int>::max() / 2) break;  // no finer path to count
     p = at_start;
     steps *= 2;
     StageLog again = solve_in_steps(m, p, settings, steps, stage, yielded);
@@ -290,7 +293,8 @@ StageLog solve_stage(const Mechanics& m, ImplicitProblem& p, const NewtonSetting
   log.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!log.failure.empty() && !settings.keep_on_failure)
     fail("{}; more steps, or a softer load path, may help", log.failure);
-  // Kept: the state stays at the last converged step, and the caller solves no further stage.
+  // keep_on_failure: p stays at the last attempt's last converged step, and the caller solves no
+  // further stage.
   return log;
 }
 

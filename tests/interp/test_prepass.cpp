@@ -191,11 +191,13 @@ TEST(Prepass, AFailedStageIsSolvedAgainInTwiceTheSteps) {
     local retried = again.stages[2]
     assert(retried.restarts == 2, "restarts " .. retried.restarts)
     assert(again.failure:find("(40 load steps from the stage's start)", 1, true), again.failure)
-    assert(#retried.steps > #hole.steps and retried.cutbacks > hole.cutbacks, "every attempt's steps are kept")
+    assert(#retried.steps > #hole.steps and retried.cutbacks > hole.cutbacks,
+           "every attempt's steps are kept")
     assert(retried.iterations > hole.iterations)
     assert(retried.reached > 0.1 and retried.reached < 1, "reached " .. retried.reached)
   )lua");
-  EXPECT_TRUE(contains(error_of(interpreter, weak + "prepass{ stages = { \"hole\" }, restarts = -1 }"), "restarts"));
+  EXPECT_TRUE(contains(
+      error_of(interpreter, weak + "prepass{ stages = { \"hole\" }, restarts = -1 }"), "restarts"));
 }
 
 // crackseed{ auto }'s regions: by principal direction, whatever the mode (a lone zone marked as
