@@ -26,6 +26,15 @@ const char* kPlate = R"(
   boundary{ side = "top", stress = "insitu" }
 )";
 
+// The plate in rock too weak for the hole (c = 0.3 MPa, 10 deg, under 2 and 1 MPa): the continuum
+// has no static state once the hole is about half unloaded.
+std::string weak_plate() {
+  return std::string(kPlate) + R"(
+    zone{ edge = 1 }
+    material{ "rock", model = "mohr", young = 1e9, poisson = 0.25, cohesion = 0.3e6, friction = 10 }
+  )";
+}
+
 // Excavating the hole and then the slot: the prepass's displacements against the explicit
 // solver's at equilibrium (the same discrete problem, so they agree to the solver's tolerance).
 TEST(Prepass, StagesAgreeWithTheExplicitSolver) {
@@ -97,10 +106,7 @@ TEST(Prepass, YieldedZonesAreReported) {
 // on_failure = "keep" the prepass ends there and returns what it found up to the last converged
 // step: the stage's reached load factor, its yielded zones, no later stage, and the model as it was.
 TEST(Prepass, AStageWithNoStaticStateEndsThePrepassWhenKept) {
-  const std::string weak = std::string(kPlate) + R"(
-    zone{ edge = 1 }
-    material{ "rock", model = "mohr", young = 1e9, poisson = 0.25, cohesion = 0.3e6, friction = 10 }
-  )";
+  const std::string weak = weak_plate();
   {
     Interpreter interpreter;
     interpreter.context().quiet = true;
@@ -151,9 +157,7 @@ TEST(Prepass, AStageWithNoStaticStateEndsThePrepassWhenKept) {
 TEST(Prepass, AStuckLineSearchGivesUpAndTheStepIsCutBack) {
   Interpreter interpreter;
   interpreter.context().quiet = true;
-  expect_runs(interpreter, std::string(kPlate) + R"(
-    zone{ edge = 1 }
-    material{ "rock", model = "mohr", young = 1e9, poisson = 0.25, cohesion = 0.3e6, friction = 10 }
+  expect_runs(interpreter, weak_plate() + R"(
     local pre = prepass{ stages = { "hole" }, iterations = 30, restarts = 0, on_failure = "keep" }
     local hole = pre.stages[2]
     assert(hole.reached == 0.7015625, "reached " .. hole.reached)
@@ -176,10 +180,7 @@ TEST(Prepass, AStuckLineSearchGivesUpAndTheStepIsCutBack) {
 // and 40 steps; the message names the last attempt's, and the stage's log keeps every attempt's
 // steps. restarts = 0 makes one attempt; a negative count is refused before anything is solved.
 TEST(Prepass, AFailedStageIsSolvedAgainInTwiceTheSteps) {
-  const std::string weak = std::string(kPlate) + R"(
-    zone{ edge = 1 }
-    material{ "rock", model = "mohr", young = 1e9, poisson = 0.25, cohesion = 0.3e6, friction = 10 }
-  )";
+  const std::string weak = weak_plate();
   Interpreter interpreter;
   interpreter.context().quiet = true;
   expect_runs(interpreter, weak + R"lua(
@@ -204,9 +205,7 @@ TEST(Prepass, AFailedStageIsSolvedAgainInTwiceTheSteps) {
 // yielded in tension joins the shear region around it), or with by_mode = true by mode too (it
 // leaves that region).
 TEST(Prepass, AutoRegionsTakeTheModeOfMostOfTheirArea) {
-  const std::string scene = std::string(kPlate) + R"(
-    zone{ edge = 1 }
-    material{ "rock", model = "mohr", young = 1e9, poisson = 0.25, cohesion = 0.3e6, friction = 10 }
+  const std::string scene = weak_plate() + R"(
     local pre = prepass{ stages = { "hole", "slot" }, iterations = 8, on_failure = "keep" }
     -- The yielded zone with the most yielded zones within 1.5 m, marked as a tension zone.
     local marked, most = nil, -1
