@@ -514,6 +514,32 @@ print(("%s: %d steps, %d cracks (%d tension, %d shear; %d left, %d right), crown
   .. (points_fallen() ~= "" and ("; measuring points mucked out with their blocks (their last values kept): "
                                  .. points_fallen()) or ""))
 
+-- Where the cracks came from: the potential crack by distance from the outline, the length broken
+-- against the length placed (README, "The depth trend", session 47: near the wall nearly all of it
+-- breaks at every depth, and where it stops breaking hardly moves with depth).
+do
+  local broken = {}
+  for k in cracks() do broken[k.section] = true end
+  local bands = { { 0, 2 }, { 2, 5 }, { 5, 10 }, { 10, 20 }, { 20, math.huge } }
+  local placed, split = {}, {}
+  for i = 1, #bands do placed[i], split[i] = 0, 0 end
+  for sec in sections() do
+    local d = shapes.distance_to(c.outline, sec.x, sec.y)
+    for i, band in ipairs(bands) do
+      if d >= band[1] and d < band[2] then
+        placed[i] = placed[i] + sec.length
+        if broken[sec.id] then split[i] = split[i] + sec.length end
+      end
+    end
+  end
+  local parts = {}
+  for i, band in ipairs(bands) do
+    parts[i] = ("%s m %.0f / %.0f"):format(band[2] < math.huge and ("%g-%g"):format(band[1], band[2])
+                                            or ("beyond %g"):format(band[1]), split[i], placed[i])
+  end
+  print(("%s: potential crack broken / placed by distance from the outline [m]: %s"):format(
+    tag, table.concat(parts, ", ")))
+end
 
 plot{ file = tag .. "_cracks.png", show = { "blocks", "cracks", "bolts" }, window = { -50, 50, -40, 50 } }
 profile{ from = PROFILE_LINE.from, to = PROFILE_LINE.to, quantity = "uy", points = PROFILE_LINE.points,
