@@ -104,8 +104,8 @@ for _, depth in ipairs(DEPTHS) do
   local _, _, yielded = areas(pre, area)
   -- The in-situ stress at the cavern's centre (its crown 24 m above it).
   local sv = rock.density * 9.81 * (depth + 24)
-  rows[#rows + 1] = { depth = depth, sv = sv, dug = dug, radius = radius, shear = shear, deepest = deepest, tension = tension,
-                      yielded = yielded,
+  rows[#rows + 1] = { depth = depth, sv = sv, dug = dug, radius = radius, shear = shear, deepest = deepest,
+                      tension = tension, yielded = yielded,
                       kirsch = kirsch_shear_area(radius, sv), ring = salencon_ring_area(radius, 0.5 * (1 + K0) * sv) }
 end
 
