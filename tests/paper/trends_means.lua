@@ -40,6 +40,21 @@ expect(found, "The side the joints dip towards (right) moves more (Case 3)", "ho
 says(text, "right less left wall, 15 m behind the faces [m]: 0.15 ± 0.05 (t 5.20, 3 members, 95 % needs 2.92)")
 says(text, "5 of 11 trends hold.")
 
+-- The seed's other statements, in a table of their own, judged the same way.
+-- Case 1's right less left cracks 20, 22, 24: t = 22 / (2 / sqrt 3) = 19.05 on 2 (2.92).
+expect(found, "Case 1's new cracks gather on the right side, towards which the joints dip (§4.1)", "holds")
+says(text, "right less left cracks: 22 ± 2 (t 19.05, 3 members, 95 % needs 2.92)")
+-- Right less left 10 m above the crown: no bolts 0.10, 0.11, 0.12 (t 19.05), pattern 1 0.01,
+-- 0.02, 0.03 (t 3.46), pattern 2 -0.05, -0.06, -0.07 (t -10.39): one comparison fails.
+expect(found, "Above the roof the right side comes down more than the left (Case 3; §4.2, Figure 12)", "fails")
+says(text, "pattern 1, right less left half 10 m above the crown [m]: 0.02 ± 0.01 (t 3.46")
+-- Blocks fallen, no bolts 20, 22, 27, less pattern 1's 10, 12, 14: 10, 10, 13 (t 11.00); less
+-- pattern 2's 20, 22, 27: nothing (t 0): not resolved, although pattern 1 alone would hold.
+expect(found, "Bolts hold the blocks around the opening: fewer fall with either pattern (Case 3; §4.2, Figure 11)",
+       "not resolved")
+says(text, "blocks fallen, no bolts less pattern 1, member by member: 11 ± 1.7 (t 11.00")
+says(text, "1 of 3 other statements hold.")
+
 -- One member of each run cannot be judged on means.
 found, text = verdicts(here .. "trends_members_length.csv")
 expect(found, "Case 3 (denser joints) gives more new cracks than Case 2", "not shown")
