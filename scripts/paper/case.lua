@@ -542,6 +542,14 @@ do
 end
 
 plot{ file = tag .. "_cracks.png", show = { "blocks", "cracks", "bolts" }, window = { -50, 50, -40, 50 } }
-profile{ from = PROFILE_LINE.from, to = PROFILE_LINE.to, quantity = "uy", points = PROFILE_LINE.points,
-         file = tag .. "_profile.png", title = tag .. ": vertical displacement 10 m above the crown" }
+local final_profile = profile{ from = PROFILE_LINE.from, to = PROFILE_LINE.to, quantity = "uy",
+                               points = PROFILE_LINE.points, file = tag .. "_profile.png",
+                               title = tag .. ": vertical displacement 10 m above the crown" }
+-- The same as numbers, for figure12.lua's chart of the runs with and without bolts (study.sh).
+do
+  local f = assert(io.open(tag .. "_profile.csv", "w"))
+  f:write("x_m,uy_m\n")
+  for i, x in ipairs(final_profile.x) do f:write(("%.3f,%.6f\n"):format(x, final_profile.value[i])) end
+  f:close()
+end
 if setting("strict", false) == true and stopped ~= "" then error("stopped at " .. stopped, 0) end

@@ -50,8 +50,10 @@
 # writes its own row (OUT/TAG.csv, a row after each step in OUT/TAG_steps.csv) and pictures;
 # OUT/study.csv and OUT/steps.csv gather them; OUT/trends.md has the verdicts at the runs' ends, and
 # OUT/trends_common_step.md after the last step all runs reached; with more than one member of each,
-# OUT/trends_means.md the verdicts at the runs' ends on the members' means. Exit 1 when a run wrote no row
-# (a script error, not a stop: a stop is recorded in the row), or with --strict a trend fails.
+# OUT/trends_means.md the verdicts at the runs' ends on the members' means; OUT/figure12.png the seed's
+# Figure 12, Case 3 at 158 m without bolts and with both patterns on one chart (figure12.lua, from the
+# first members' profiles). Exit 1 when a run wrote no row (a script error, not a stop: a stop is
+# recorded in the row), or with --strict a trend fails.
 set -euo pipefail
 
 here=$(cd "$(dirname "$0")" && pwd)
@@ -203,4 +205,15 @@ if (( members > 1 || mirror == 1 || origins > 0 )); then  # the same rows judged
     run "$here/trends.lua" || trends=$?
 fi
 [[ $written == "${#runs[@]}" ]] || { echo "study: only $written of ${#runs[@]} runs wrote their row" >&2; exit 1; }
+# The seed's Figure 12 from the first members' profiles (case.lua's TAG_profile.csv).
+set_name=M
+for kv in "${extra[@]}"; do [[ $kv == set=* ]] && set_name=${kv#set=}; done
+profiles=("case3_${set_name}_h158_none_profile.csv" "case3_${set_name}_h158_pattern1_profile.csv"
+          "case3_${set_name}_h158_pattern2_profile.csv")
+if [[ -f ${profiles[0]} && -f ${profiles[1]} && -f ${profiles[2]} ]]; then
+  "$edem" --quiet --set none="${profiles[0]}" --set pattern1="${profiles[1]}" --set pattern2="${profiles[2]}" \
+    run "$here/figure12.lua"
+else  # rows kept by --resume from a case.lua before the profiles were written
+  echo "study: no figure12.png: a profile of Case 3 at 158 m is missing (${profiles[*]})"
+fi
 exit $trends
