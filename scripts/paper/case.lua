@@ -8,7 +8,8 @@
 --   depth     m from the ground to the crown [158]
 --   bolts     none, 1 (pattern 1: 5 m at 1.5 m on the walls each step exposes) or 2 (pattern 1
 --             and 15 m bolts between them in the two weak zones the seed names: the upper right
---             sidewall, A, y from 0 to the springline; the lower left sidewall, B, y below -8) [none]
+--             sidewall, A, y from 0 to the springline; the lower left sidewall, B, y below -8;
+--             mirrored with the model) [none]
 --   set       M or P: the parameter set (edem.seed; VERIFICATION.md S.3) [M]
 --   edge, far m: zone size near the cavern and far from it [1.5, 10]
 --   stages    how many of the 16 steps to excavate [16]
@@ -408,6 +409,21 @@ local function bolt_loads()
   end
   return broken, loaded
 end
+-- Pattern 2's weak zones, the seed's words for Figure 11: the upper right sidewall (A: y from 0
+-- to the springline) and the lower left sidewall (B: y below -8), the sidewalls only, not the
+-- arch or the floor (before session 48 A took in the arch's right half and B the floor's left
+-- half). Right is the side the joints dip towards, so the mirror image has them mirrored.
+local half_width, springline, floor = 0, -math.huge, math.huge
+for _, p in ipairs(c.outline) do half_width, floor = math.max(half_width, math.abs(p[1])), math.min(floor, p[2]) end
+for _, p in ipairs(c.outline) do
+  if math.abs(p[1]) >= half_width - 1e-6 then springline = math.max(springline, p[2]) end
+end
+local function weak(x, y)
+  if math.abs(x) < half_width - 1e-6 then return false end  -- not on a sidewall
+  local towards_dip = (MIRROR and -x or x) > 0
+  if towards_dip then return y >= 0 and y <= springline end
+  return y <= -8 and y > floor + 1e-6
+end
 local laid, skipped = 0, 0
 local function bolt_step(s)
   local surface = rockbolts.exposed(s, c.outline)
@@ -415,7 +431,6 @@ local function bolt_step(s)
                                               material = "bolt", missing = "skip" }
   laid, skipped = laid + count, skipped + missed
   if BOLTS == "2" then
-    local weak = function(x, y) return (x > 0 and y >= 0) or (x < 0 and y <= -8) end
     local _, more, missed2 = rockbolts.pattern{ surface = surface, spacing = 1.5, first = 1.5, length = 15,
                                                 segments = 20, material = "bolt", where = weak, missing = "skip" }
     laid, skipped = laid + more, skipped + missed2
