@@ -414,7 +414,9 @@ end
 -- arch or the floor (before session 48 A took in the arch's right half and B the floor's left
 -- half). Right is the side the joints dip towards, so the mirror image has them mirrored.
 local half_width, springline, floor = 0, -math.huge, math.huge
-for _, p in ipairs(c.outline) do half_width, floor = math.max(half_width, math.abs(p[1])), math.min(floor, p[2]) end
+for _, p in ipairs(c.outline) do
+  half_width, floor = math.max(half_width, math.abs(p[1])), math.min(floor, p[2])
+end
 for _, p in ipairs(c.outline) do
   if math.abs(p[1]) >= half_width - 1e-6 then springline = math.max(springline, p[2]) end
 end

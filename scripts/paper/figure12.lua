@@ -1,6 +1,7 @@
--- The seed's Figure 12 (issue 9): the vertical displacement 10 m above the crown of Case 3 at the end, without
--- bolts and with bolt patterns 1 and 2, on one chart, from the profiles scripts/paper/case.lua
--- writes (TAG_profile.csv). study.sh draws it in its output folder once the three runs are there.
+-- The seed's Figure 12 (issue 9): the vertical displacement 10 m above the crown of Case 3 at the
+-- end, without bolts and with bolt patterns 1 and 2, on one chart, from the profiles
+-- scripts/paper/case.lua writes (TAG_profile.csv). study.sh draws it in its output folder once the
+-- three runs are there.
 --
 --   edem --set none=A.csv --set pattern1=B.csv --set pattern2=C.csv run scripts/paper/figure12.lua
 --
@@ -15,7 +16,7 @@ local function setting(key, default)
   return tostring(v)
 end
 
--- A profile: its header must be case.lua's, then x and uy a line, x increasing.
+-- A profile: its header must be case.lua's, then x and uy a line, in the order drawn.
 local function read_profile(path)
   local f = io.open(path, "r")
   if not f then error(("figure12: cannot read the profile %s"):format(path), 0) end
