@@ -9,7 +9,7 @@
 --   none, pattern1, pattern2  the three runs' profiles [case3_M_h158_none_profile.csv,
 --             case3_M_h158_pattern1_profile.csv, case3_M_h158_pattern2_profile.csv]
 --   file      the chart to write (.png, .svg or .pdf) [figure12.png]
---   title     its title [Case 3, 158 m: settlement 10 m above the crown]
+--   title     its title [Case 3, 158 m: vertical displacement 10 m above the crown]
 local function setting(key, default)
   local v = arg and arg[key]
   if v == nil then return default end
@@ -52,6 +52,7 @@ for i, run in ipairs(runs) do
   series[i] = { name = run.name, x = x, y = uy }
 end
 local file = setting("file", "figure12.png")
-chart{ file = file, series = series, title = setting("title", "Case 3, 158 m: settlement 10 m above the crown"),
+local title = setting("title", "Case 3, 158 m: vertical displacement 10 m above the crown")
+chart{ file = file, series = series, title = title,
        x_label = "x [m] (the joints dip towards +x)", y_label = "vertical displacement uy [m]" }
 print(("figure12: %s written"):format(file))
