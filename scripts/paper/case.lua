@@ -87,7 +87,8 @@
 -- Writes: the result row (with the settlement 5 m above the crown, as far up as pattern 1's bolts
 -- reach, and the bolts broken or carrying half their yield), and pictures CASE_prepass.png (the
 -- seed's Figure 8), CASE_cracks.png (Figures 9 and 11) and CASE_profile.png (Figure 12, the
--- settlement 10 m above the crown).
+-- settlement 10 m above the crown), with that profile's numbers in CASE_profile.csv (x_m, uy_m:
+-- scripts/paper/figure12.lua draws three runs' together).
 local seed = require "edem.seed"
 local cavern = require "edem.cavern"
 local rockbolts = require "edem.bolts"
