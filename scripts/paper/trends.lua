@@ -238,10 +238,10 @@ end
 -- value(i, field, format, point, missing) gives need i's field in every member, separated by
 -- commas, with "at least" before those whose measuring point `point` fell. `points`: the measuring
 -- points (case.lua's names) the trend reads whose fall makes it "not shown". `means(got)`: the
--- trend's comparisons for judge = means (see welch), or nil and why they cannot be made. `list`:
+-- trend's comparisons for judge = means (see welch), or nil and why they cannot be made. `into`:
 -- where the verdict goes, acceptance 1's trends [results] or the seed's other statements (others).
 local results, others = {}, {}
-local function trend(statement, needs, holds, describe, points, means, list)
+local function trend(statement, needs, holds, describe, points, means, into)
   local got, why = {}, nil
   for i, n in ipairs(needs) do
     local list, missing = runs(n[1], n[2], n[3])
@@ -306,8 +306,8 @@ local function trend(statement, needs, holds, describe, points, means, list)
       verdict, numbers = "not shown", "the table lacks a column it needs"
     end
   end
-  list = list or results
-  list[#list + 1] = { statement = statement, verdict = verdict, numbers = numbers }
+  into = into or results
+  into[#into + 1] = { statement = statement, verdict = verdict, numbers = numbers }
 end
 
 -- The broken sections' total length after the count, where every row has it (case.lua since
@@ -343,14 +343,18 @@ trend("The crack count grows with depth, 158 < 212 < 262 m (Case 3)",
     return { { label = "cracks, 212 against 158 m", a = column(got[2], "cracks"), b = column(got[1], "cracks") },
              { label = "262 against 212 m", a = column(got[3], "cracks"), b = column(got[2], "cracks") } }
   end)
+-- Each member's field `a` less its field `b` (a paired comparison within one run).
+local function field_difference(rows_of_run, a, b)
+  local d = column(rows_of_run, a)
+  for i, value in ipairs(column(rows_of_run, b)) do d[i] = d[i] - value end
+  return d
+end
 for _, case in ipairs{ 1, 2, 3 } do
   trend(("Tension cracks are the majority without bolts (Case %d)"):format(case), { { case, D, "none" } },
     function(r) return r.tension > r.shear end,
     function(v) return ("%s tension, %s shear"):format(v(1, "tension"), v(1, "shear")) end, nil,
     function(got)
-      local d = column(got[1], "tension")
-      for i, shear in ipairs(column(got[1], "shear")) do d[i] = d[i] - shear end
-      return { { label = "tension less shear cracks", d = d } }
+      return { { label = "tension less shear cracks", d = field_difference(got[1], "tension", "shear") } }
     end)
 end
 trend("Case 2's cracks on the right side sit higher than Case 1's", { { 2, D, "none" }, { 1, D, "none" } },
@@ -363,11 +367,6 @@ trend("Case 2's cracks on the right side sit higher than Case 1's", { { 2, D, "n
     return { { label = "mean height of the right side's cracks [m], Case 2 against Case 1",
                a = column(got[1], "right_mean_y_m"), b = column(got[2], "right_mean_y_m") } }
   end)
--- judge = means: the bolted run's (need 1) count and crown settlement each below the other's
--- (need 2), named `other` and `bolted`, member by member: bolts are laid after the prepass and the
--- potential cracks, so a bolted run and the unbolted one of the same member (release, point the
--- cuts pass through, mirror) have the same mesh and the same cuts, and their difference is the
--- bolts' alone (a paired t over the members both have).
 -- Member by member, field of `a`'s rows less that of `b`'s, over the members both have.
 local function member_differences(a, b, field)
   local by_member, d = {}, {}
@@ -381,6 +380,11 @@ local function member_differences(a, b, field)
   end
   return d
 end
+-- judge = means: the bolted run's (need 1) count and crown settlement each below the other's
+-- (need 2), named `other` and `bolted`, member by member: bolts are laid after the prepass and the
+-- potential cracks, so a bolted run and the unbolted one of the same member (release, point the
+-- cuts pass through, mirror) have the same mesh and the same cuts, and their difference is the
+-- bolts' alone (a paired t over the members both have).
 local function bolts_lower(got, other, bolted)
   local comparisons = {}
   for _, field in ipairs{ "cracks", "crown_settlement_m" } do
@@ -453,16 +457,10 @@ end
 -- The seed's other statements that the rows can judge (§4.1, §4.2), judged as the trends are and
 -- reported apart: acceptance 1 does not list them. The rest (where the prepass yields, key blocks
 -- coming loose, a collapse) are judged in scripts/paper/README.md from the pictures and rows.
--- Each member's `right` field less its `left` one (a paired comparison within one run).
-local function right_less_left(rows_of_run, right, left)
-  local d = column(rows_of_run, right)
-  for i, value in ipairs(column(rows_of_run, left)) do d[i] = d[i] - value end
-  return d
-end
 trend("Case 1's new cracks gather on the right side, towards which the joints dip (§4.1)", { { 1, D, "none" } },
   function(r) return r.right > r.left end,
   function(v) return ("cracks right / left: %s / %s"):format(v(1, "right"), v(1, "left")) end, nil,
-  function(got) return { { label = "right less left cracks", d = right_less_left(got[1], "right", "left") } } end,
+  function(got) return { { label = "right less left cracks", d = field_difference(got[1], "right", "left") } } end,
   others)
 local BOLTS = { { 3, D, "none" }, { 3, D, "1" }, { 3, D, "2" } }
 local BOLTS_NAMED = { "no bolts", "pattern 1", "pattern 2" }
@@ -483,7 +481,7 @@ trend("Above the roof the right side comes down more than the left (Case 3; §4.
     local comparisons = {}
     for i, name in ipairs(BOLTS_NAMED) do
       comparisons[i] = { label = ("%s, right less left half 10 m above the crown [m]"):format(name),
-                         d = right_less_left(got[i], "profile_right_m", "profile_left_m") }
+                         d = field_difference(got[i], "profile_right_m", "profile_left_m") }
     end
     return comparisons
   end, others)
