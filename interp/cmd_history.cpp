@@ -103,7 +103,9 @@ const Command& history_command() {
           {
               {"quantity", Type::string, "", any_value, kOptional,
                "of the model: ratio, time, kinetic, cycle, contacts, slipping, open (counts of "
-               "contacts as last found), max_slip, cracks, shear_cracks, tension_cracks, stage; at a point: ux, uy, vx, vy (nearest "
+               "contacts as last found), max_slip, cracks, shear_cracks, tension_cracks, stage, energy.TERM "
+               "(a term of the energy balance, as energy() names it: energy.kinetic, energy.slip, energy.error, "
+               "...); at a point: ux, uy, vx, vy (nearest "
                "gridpoint), sxx, syy, sxy, szz, s1, s3 (zone containing it), joint_sn, "
                "joint_tau, joint_un, joint_us, joint_slip (the contact nearest to it when the "
                "history is made, followed by its gridpoint; 0 while that has no contact)",

@@ -1,5 +1,7 @@
-// Reading the model from a script: info(), gp_near(), zone_at() and the iterators blocks(),
-// zones() and gridpoints().
+// Reading the model from a script: info(), energy(), gp_near(), zone_at() and the iterators
+// blocks(), zones() and gridpoints().
+//
+// energy() reads the energy balance (solver/energy.hpp).
 //
 // Iterators hold only a position and look the model up at each step, so a script that changes
 // the model inside the loop sees the new model, never a dangling reference. Ids are 1-based.
@@ -47,6 +49,37 @@ int run_info(lua_State* L, Context& context, const Args&) {
   set_field(L, "contacts", solver.contacts);
   set_field(L, "late_contacts", static_cast<long long>(solver.late_contacts));
   set_field(L, "contact_searches", static_cast<long long>(solver.contact_searches));
+  return 1;
+}
+
+int run_energy(lua_State* L, Context& context, const Args& args) {
+  Model& model = context.model();
+  if (args.has("reset") && args.boolean("reset")) model.reset_energy();
+  const EnergyReport r = model.energy();
+  lua_createtable(L, 0, 24);
+  set_field(L, "kinetic", r.stored.kinetic);
+  set_field(L, "strain", r.stored.strain);
+  set_field(L, "contact", r.stored.contact());
+  set_field(L, "contact_normal", r.stored.normal);
+  set_field(L, "contact_shear", r.stored.shear);
+  set_field(L, "bolt", r.stored.bolt);
+  set_field(L, "gravity", r.gravity);
+  set_field(L, "boundary", r.boundary);
+  set_field(L, "release", r.release);
+  set_field(L, "prestress", r.prestress);
+  set_field(L, "commands", r.commands);
+  set_field(L, "excavated", r.excavated);
+  set_field(L, "plastic", r.plastic);
+  set_field(L, "slip", r.slip);
+  set_field(L, "bond", r.bond);
+  set_field(L, "damping", r.damping);
+  set_field(L, "bolt_plastic", r.bolt_plastic);
+  set_field(L, "error", r.error);
+  set_field(L, "largest", r.largest);
+  set_field(L, "relative_error", r.relative_error());
+  set_field(L, "zone_error", r.zone_error);
+  set_field(L, "contact_error", r.contact_error);
+  set_field(L, "bolt_error", r.bolt_error);
   return 1;
 }
 
@@ -317,6 +350,39 @@ const Command& info_command() {
           "(gridpoints whose contacts have been searched for since the blocks were zoned: the cost of "
           "detection, which searches again only near blocks that moved)",
       .usage = "print(info().blocks)",
+  };
+  return command;
+}
+
+const Command& energy_command() {
+  static const Command command{
+      .name = "energy",
+      .help =
+          "The energy balance since the first cycle (or the last reset), as PFC and 3DEC keep it, "
+          "per metre of thickness [J/m]: the work done on the model, what it stores (as changes "
+          "since the start), what it dissipated, and the balance's error, the energy the numerical "
+          "method made.",
+      .keys =
+          {
+              {"reset", Type::boolean, "", any_value, "false",
+               "start the balance again from the state now (not from a callback)"},
+          },
+      .run = run_energy,
+      .returns =
+          "a table [J/m]. Stored (change since the start): kinetic, strain (zones' elastic "
+          "energy), contact (= contact_normal + contact_shear: the joints' springs), bolt (segments "
+          "and grout). Work done on the model: gravity, boundary (boundary loads, moving held "
+          "gridpoints, bolt head drives), release (the loads excavate{ release } takes off), "
+          "prestress (stored in contacts made with a given stress: insitu{}'s, or a broken "
+          "section's traction), commands (stored energy changed by commands between cycles: "
+          "insitu{}, reset{}, new properties). Taken away: excavated (by excavate{}, dug or "
+          "mucked out). Dissipated: plastic (zones), slip (joints' Coulomb slip), bond (bonds that "
+          "soften or break, cohesive faces that part), damping, bolt_plastic (yield, breaks, grout "
+          "slip). error: stored + dissipated + excavated less the work done (positive: energy "
+          "made); largest: the largest term in magnitude; relative_error = error / largest; "
+          "zone_error, contact_error, bolt_error: where the error arises",
+      .usage = "local e = energy()\nprint(e.error, e.relative_error)\nenergy{ reset = true }",
+      .bare_call = true,
   };
   return command;
 }

@@ -44,6 +44,7 @@ const std::vector<const Command*>& commands() {
       &history_command(),        // cmd_history.cpp
       &history_write_command(),  //
       &info_command(),           // cmd_query.cpp
+      &energy_command(),         //
       &blocks_command(),         //
       &moved_blocks_command(),   //
       &zones_command(),          //

@@ -39,6 +39,7 @@ const Command& cancel_command();
 const Command& history_command();
 const Command& history_write_command();
 const Command& info_command();
+const Command& energy_command();
 const Command& blocks_command();
 const Command& moved_blocks_command();
 const Command& zones_command();

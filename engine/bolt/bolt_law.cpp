@@ -137,9 +137,10 @@ int add_bolt(BoltSet& set, const BoltLine& line) {
   return set.bolts() - 1;
 }
 
-void update_segments(BoltSet& set) {
+double update_segments(BoltSet& set) {
   const BoltNodes& n = set.nodes;
   BoltSegments& g = set.segments;
+  double dissipated = 0.0;
   for (size_t s = 0; s < g.size(); ++s) {
     // Its rock is gone and an end no longer moves: it keeps the direction it had when cut.
     if (g.state[s] == SegmentState::removed) continue;
@@ -152,13 +153,18 @@ void update_segments(BoltSet& set) {
       g.elongation[s] = elongation;
       continue;
     }
-    const SegmentUpdate up = segment_law(set.laws[index(g.material[s])], g.rest[s], g.force[s],
-                                         g.state[s], g.elongation[s], elongation);
+    const BoltLaw& law = set.laws[index(g.material[s])];
+    const SegmentUpdate up = segment_law(law, g.rest[s], g.force[s], g.state[s], g.elongation[s], elongation);
+    // Its mid-step work less the change of what it stores (elastic: nothing; broken: all it had).
+    if (up.state != SegmentState::elastic)
+      dissipated += 0.5 * (g.force[s] + up.force) * (elongation - g.elongation[s]) -
+                    (up.force * up.force - g.force[s] * g.force[s]) * g.rest[s] / (2.0 * law.ea);
     g.force[s] = up.force;
     g.state[s] = up.state;
     if (up.state == SegmentState::broken) g.broke[s] = 1;
     g.elongation[s] = elongation;
   }
+  return dissipated;
 }
 
 void update_axes(BoltSet& set) {
@@ -179,8 +185,9 @@ void update_axes(BoltSet& set) {
   for (size_t i = 0; i < n.size(); ++i) n.axis[i] = (1.0 / norm(n.axis[i])) * n.axis[i];
 }
 
-void update_grout(BoltSet& set, std::span<const Vec2> host_u) {
+double update_grout(BoltSet& set, std::span<const Vec2> host_u) {
   BoltNodes& n = set.nodes;
+  double dissipated = 0.0;
   if (host_u.size() != n.size())
     fail("bolt grout: {} host displacements for {} bolt nodes", host_u.size(), n.size());
   update_axes(set);
@@ -190,10 +197,14 @@ void update_grout(BoltSet& set, std::span<const Vec2> host_u) {
     n.grout_rel[i] = rel;
     const GroutUpdate up =
         grout_law(n.grout_stiffness[i], n.grout_strength[i], n.grout_force[i], n.grout_slip[i], ds);
+    if (up.slipping)  // its mid-step work less the change of what it stores
+      dissipated += 0.5 * (n.grout_force[i] + up.force) * ds -
+                    (up.force * up.force - n.grout_force[i] * n.grout_force[i]) / (2.0 * n.grout_stiffness[i]);
     n.grout_force[i] = up.force;
     n.grout_slip[i] = up.slip;
     n.slipping[i] = up.slipping ? 1 : 0;
   }
+  return dissipated;
 }
 
 void gather_node_forces(BoltSet& set) {
@@ -208,10 +219,22 @@ void gather_node_forces(BoltSet& set) {
   }
 }
 
-void bolt_forces(BoltSet& set, std::span<const Vec2> host_u) {
-  update_segments(set);
-  update_grout(set, host_u);
+double bolt_forces(BoltSet& set, std::span<const Vec2> host_u) {
+  const double dissipated = update_segments(set) + update_grout(set, host_u);
   gather_node_forces(set);
+  return dissipated;
+}
+
+double bolt_energy(const BoltSet& set) {
+  const BoltNodes& n = set.nodes;
+  const BoltSegments& g = set.segments;
+  double energy = 0.0;
+  for (size_t s = 0; s < g.size(); ++s)
+    if (carries(g.state[s]))
+      energy += g.force[s] * g.force[s] * g.rest[s] / (2.0 * set.laws[index(g.material[s])].ea);
+  for (size_t i = 0; i < n.size(); ++i)
+    if (n.grout_stiffness[i] > 0.0) energy += n.grout_force[i] * n.grout_force[i] / (2.0 * n.grout_stiffness[i]);
+  return energy;
 }
 
 std::vector<double> bolt_node_stiffness(const BoltSet& set) {

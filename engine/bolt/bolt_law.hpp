@@ -167,8 +167,9 @@ int add_bolt(BoltSet& set, const BoltLine& line);
 // --- One cycle's bolt stage --------------------------------------------------------------------
 
 // Segment directions, forces and states from the nodes' current positions (x + u); a removed
-// segment keeps the direction it had.
-void update_segments(BoltSet& set);
+// segment keeps the direction it had. Returns what the segments dissipated [J/m]: yielding's
+// plastic work, and the elastic energy of those that broke.
+double update_segments(BoltSet& set);
 
 // Node axes: the mean direction of each node's (one or two) segments not removed, as last updated;
 // a removed one's where it has no other.
@@ -176,14 +177,19 @@ void update_axes(BoltSet& set);
 
 // Node axes (update_axes) and grout forces from the nodes' displacements and the
 // rock's at each node (`host_u`: one per node, since the bolt's installation [m]; the grout force
-// grows as the node moves towards the bolt's end relative to the rock).
-void update_grout(BoltSet& set, std::span<const Vec2> host_u);
+// grows as the node moves towards the bolt's end relative to the rock). Returns the plastic work
+// of the grout that slipped [J/m].
+double update_grout(BoltSet& set, std::span<const Vec2> host_u);
 
 // Each node's force (set, not added to) from its segments and its grout, as last updated.
 void gather_node_forces(BoltSet& set);
 
-// The three above, in that order: the bolt stage of a cycle.
-void bolt_forces(BoltSet& set, std::span<const Vec2> host_u);
+// The three above, in that order: the bolt stage of a cycle. Returns what it dissipated [J/m].
+double bolt_forces(BoltSet& set, std::span<const Vec2> host_u);
+
+// The elastic energy the bolts store [J/m]: their segments' N^2 L / (2 EA) and their grout's
+// F^2 / (2 k).
+double bolt_energy(const BoltSet& set);
 
 // The force the grout of `node` puts on the rock [N/m] (equal and opposite to its pull on the
 // node): what the solver spreads over the host zone's gridpoints.

@@ -28,6 +28,15 @@ inline void elastic_update(const MaterialParams& m, Stress& s, double dexx, doub
   s.xy += m.shear * dgxy;
 }
 
+// a : C^-1 : b, C the isotropic elastic stiffness: the work one stress does on the elastic
+// strain of another [J/m^3]. Half of s : C^-1 : s is the elastic energy a zone stores at s.
+inline double compliance_product(const MaterialParams& m, const Stress& a, const Stress& b) {
+  const double ma = mean_stress(a), mb = mean_stress(b);
+  const double deviatoric = (a.xx - ma) * (b.xx - mb) + (a.yy - ma) * (b.yy - mb) + (a.zz - ma) * (b.zz - mb) +
+                            2.0 * a.xy * b.xy;
+  return ma * mb / m.bulk + deviatoric / (2.0 * m.shear);
+}
+
 // Returns the zone state bits of this step (kShearNow, kTensionNow, or 0 when elastic).
 std::uint8_t mohr_coulomb_update(const MaterialParams& m, Stress& s, double dexx, double deyy,
                                  double dgxy, double dezz = 0.0);

@@ -12,13 +12,20 @@
 
 namespace edem {
 
+// What a contact dissipated over a step [J/m]: by Coulomb slip (its shear spring's work less the
+// energy it keeps), and by its bond (a softening bond's work past the secant; the elastic energy
+// of a bond broken in tension, and a cohesive shear spring's when its faces part).
+struct ContactLoss {
+  double slip = 0.0, bond = 0.0;
+};
+
 // Updates `c` and its force on the gridpoint (c.fx, c.fy) from the node positions, origin + u,
 // and velocities `v`; returns the overlap, how far the
 // gridpoint is inside the edge's block [m] (negative: a gap). `edges`: all of them (the edge is
-// edges[c.edge]; past a corner its neighbour matters too).
+// edges[c.edge]; past a corner its neighbour matters too). Adds what it dissipates to `lost`.
 [[gnu::always_inline]] inline double contact_force(Contact& c, const ContactEdge* edges, const JointParams& p,
                                                    const double* origin, const double* u,
-                                                   const double* v, double dt) {
+                                                   const double* v, double dt, ContactLoss& lost) {
   const ContactEdge& e = edges[c.edge];
   const size_t n = static_cast<size_t>(c.node), a = static_cast<size_t>(e.a), b = static_cast<size_t>(e.b);
   const auto x = [&](size_t dof) { return origin[dof] + u[dof]; };
@@ -77,6 +84,10 @@ namespace edem {
   const double rvx = v[2 * n] - ((1.0 - t) * v[2 * a] + t * v[2 * b]);
   const double rvy = v[2 * n + 1] - ((1.0 - t) * v[2 * a + 1] + t * v[2 * b + 1]);
   const double dus = (rvx * sx + rvy * sy) * dt;
+  // The state the last step left, for what this one dissipates.
+  const double closure_before = c.closure, sn_before = c.sn, fs_before = c.fs;
+  const double length_before = c.share * carrying_length(c, last_overlap(c));
+  const bool open_before = c.state == ContactState::open, intact_before = c.intact;
   c.t = t;
   c.share = share;
   c.us += dus;
@@ -99,6 +110,8 @@ namespace edem {
     } else if (c.closure < 0.0) {  // towards zero opening from the largest (secant)
       const double largest = std::max(c.opened, p.tension / p.kn_zero);
       sn = largest > 0.0 ? p.tension * left * c.closure / largest : 0.0;
+      // The normal spring's mid-step work less the change of its (secant) energy.
+      lost.bond += 0.5 * length * (sn_before * c.closure - sn * closure_before);
     }
   } else if (!open && c.intact && sn < -p.tension && opening) {  // fails in tension: gone
     c.intact = false;
@@ -107,6 +120,11 @@ namespace edem {
     open = true;
   }
   if (open) {
+    if (!open_before && length_before > 0.0) {
+      // Faces that part keep nothing: a bond's tension and a cohesive shear spring's energy go.
+      lost.bond += fs_before * fs_before / (2.0 * p.ks * length_before);
+      if (intact_before && closure_before < 0.0) lost.bond += 0.5 * sn_before * closure_before * length_before;
+    }
     c.sn = 0.0;
     c.fs = 0.0;
     c.state = ContactState::open;
@@ -124,6 +142,8 @@ namespace edem {
   if (std::fabs(trial) > limit) {
     const double plastic = (std::fabs(trial) - limit) / ks;
     c.fs = std::copysign(limit, trial);
+    // The shear spring's mid-step work, less what it keeps.
+    lost.slip += -0.5 * (fs_before + c.fs) * dus - (c.fs * c.fs - fs_before * fs_before) / (2.0 * ks);
     c.slip += plastic;
     if (sn > 0.0) c.dilation += p.tan_dilation * plastic;
     c.intact = c.intact && p.softens && bond_left(p, c.opened, c.slip) > 0.0;
@@ -137,6 +157,49 @@ namespace edem {
   c.fx = fn * nx + c.fs * sx;
   c.fy = fn * ny + c.fs * sy;
   return -gap;
+}
+
+// The elastic energy a contact stores as its last cycle left it [J/m]: its normal spring's, the
+// integral of its normal force over its overlap from where it touched (a tip's length grows with
+// the overlap), and its shear spring's, fs^2 / (2 ks length).
+struct ContactEnergy {
+  double normal = 0.0, shear = 0.0;
+};
+inline ContactEnergy contact_energy(const Contact& c, const JointParams& p) {
+  if (c.state == ContactState::open) return {};
+  const double overlap = last_overlap(c);
+  const double length = c.share * carrying_length(c, overlap);
+  if (!(length > 0.0)) return {};
+  ContactEnergy e;
+  e.shear = c.fs * c.fs / (2.0 * p.ks * length);
+  if (c.closure < 0.0) {  // a bond in tension, linear or on its secant
+    e.normal = 0.5 * c.sn * c.closure * length;
+    return e;
+  }
+  const double grows_from = c.wedge > 0.0 ? c.length / c.wedge : INFINITY;  // overlap where a tip's length passes its own
+  if (!(overlap > grows_from)) {
+    e.normal = length * normal_energy(p, c.closure);
+    return e;
+  }
+  // A tip pressed past it: its own length up to there, then wedge x overlap up to the limit, then
+  // the limit's; the middle part by Simpson's rule (exact for the linear law).
+  const double offset = c.closure0 + c.dilation;  // closure = offset + overlap
+  const double from = std::max(grows_from, -offset), to = std::min(overlap, c.limit);
+  double energy = c.length * normal_energy(p, offset + from);
+  if (to > from) {
+    constexpr int kIntervals = 16;
+    const double h = (to - from) / kIntervals;
+    double sum = 0.0;
+    for (int i = 0; i <= kIntervals; ++i) {
+      const double x = from + i * h;
+      const double weight = i == 0 || i == kIntervals ? 1.0 : (i % 2 == 1 ? 4.0 : 2.0);
+      sum += weight * normal_stress(p, offset + x) * c.wedge * x;
+    }
+    energy += sum * h / 3.0;
+  }
+  if (overlap > c.limit) energy += c.wedge * c.limit * (normal_energy(p, c.closure) - normal_energy(p, offset + c.limit));
+  e.normal = c.share * energy;
+  return e;
 }
 
 }  // namespace edem

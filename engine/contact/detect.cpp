@@ -9,6 +9,7 @@
 #include <limits>
 #include <optional>
 
+#include "contact/contact_force.hpp"
 #include "contact/edge_choice.hpp"
 #include "core/error.hpp"
 #include "geom/polygon.hpp"
@@ -631,6 +632,14 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
         c.closure0 = closure_at(p, c.sn) + gap;
         c.closure = c.closure0 - gap;
         c.dilation = c.us = c.slip = c.opened = 0.0;
+        if (c.state == ContactState::open && c.sn != 0.0) c.state = c.intact ? ContactState::bonded : ContactState::elastic;
+        // What the given stress stores in it is the stress's, not the method's: booked as such.
+        const ContactEnergy now = contact_energy(c, p), had = kept ? contact_energy(*old, p) : ContactEnergy{};
+        m.energy.prestress += now.normal + now.shear - had.normal - had.shear;
+        if (m.energy.last_current) {  // not for commands to book again
+          m.energy.last.normal += now.normal - had.normal;
+          m.energy.last.shear += now.shear - had.shear;
+        }
       }
       list.push_back(c);
     }

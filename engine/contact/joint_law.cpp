@@ -41,6 +41,20 @@ double cubic_stress(double closure) {
   return cubic(v1) * kMPa + kThirdStage * (v - v1) * kMm;
 }
 
+// The integral of cubic_stress from 0 to `closure` [J/m^2].
+double cubic_energy(double closure) {
+  const auto antiderivative = [](double v_mm) {  // of cubic() [MPa mm]
+    return ((0.25 * kA * v_mm + kB / 3.0) * v_mm + 0.5 * kC) * v_mm * v_mm;
+  };
+  const double v0 = start_mm(), v1 = straight_from_mm();
+  const double v = closure / kMm + v0;
+  constexpr double kMPaMm = kMPa * kMm;  // [J/m^2]
+  if (v <= v1) return (antiderivative(v) - antiderivative(v0)) * kMPaMm;
+  const double past = (v - v1) * kMm;  // [m]
+  return (antiderivative(v1) - antiderivative(v0)) * kMPaMm + cubic(v1) * kMPa * past +
+         0.5 * kThirdStage * past * past;
+}
+
 void check_finite_ge0(double value, const char* key) {
   if (!std::isfinite(value) || value < 0.0) fail("{} must be a finite number >= 0, got {}", key, value);
 }
@@ -160,6 +174,27 @@ double normal_stress(const JointParams& p, double closure) {
     }
     case NormalLaw::seed_cubic:
       return cubic_stress(closure);
+  }
+  return 0.0;
+}
+
+double normal_energy(const JointParams& p, double closure) {
+  if (closure <= 0.0) return 0.5 * p.kn_zero * closure * closure;
+  switch (p.law) {
+    case NormalLaw::linear:
+      return 0.5 * p.kn * closure * closure;
+    case NormalLaw::table: {
+      double energy = 0.0;
+      for (size_t i = 0; i < p.stage_closure.size(); ++i) {
+        const double from = p.stage_closure[i];
+        const double to = i + 1 < p.stage_closure.size() ? std::min(closure, p.stage_closure[i + 1]) : closure;
+        if (!(to > from)) break;
+        energy += (p.stage_stress[i] + 0.5 * p.stage_kn[i] * (to - from)) * (to - from);
+      }
+      return energy;
+    }
+    case NormalLaw::seed_cubic:
+      return cubic_energy(closure);
   }
   return 0.0;
 }

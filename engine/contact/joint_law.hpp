@@ -50,6 +50,10 @@ JointParams joint_params(const JointMaterialDef& def);
 // kn_zero * closure (the caller limits it).
 double normal_stress(const JointParams& p, double closure);
 
+// The energy a unit length of joint stores pressed to `closure` [J/m^2]: the integral of
+// normal_stress from zero closure (for closure < 0, the bonded tension's, kn_zero closure^2 / 2).
+double normal_energy(const JointParams& p, double closure);
+
 // The closure at which the law gives `stress` (its inverse; negative stress: opening).
 double closure_at(const JointParams& p, double stress);
 

@@ -198,6 +198,16 @@ template <class Ar> void fields(Ar& ar, SolverInfo& i) {
 template <class Ar> void fields(Ar& ar, AdaptiveDamping& a) {
   ar("c", a.c); ar("u_start", a.u_start); ar("r_start", a.r_start); ar("have_r_start", a.have_r_start);
 }
+template <class Ar> void fields(Ar& ar, StoredEnergy& e) {
+  ar("kinetic", e.kinetic); ar("strain", e.strain); ar("normal", e.normal); ar("shear", e.shear); ar("bolt", e.bolt);
+}
+template <class Ar> void fields(Ar& ar, EnergyLedger& e) {
+  ar("started", e.started); ar("start", e.start); ar("last", e.last); ar("last_current", e.last_current);
+  ar("gravity", e.gravity); ar("boundary", e.boundary); ar("release", e.release); ar("prestress", e.prestress);
+  ar("commands", e.commands); ar("excavated", e.excavated); ar("plastic", e.plastic); ar("slip", e.slip);
+  ar("bond", e.bond); ar("damping", e.damping); ar("bolt_plastic", e.bolt_plastic); ar("by_contacts", e.by_contacts);
+  ar("by_bolts", e.by_bolts);
+}
 template <class Ar> void fields(Ar& ar, History& h) {
   ar("name", h.name); ar("every", h.every); ar("unit", h.unit); ar("quantity", h.quantity); ar("at", h.at);
   ar("cycles", h.cycles); ar("values", h.values);
@@ -251,6 +261,8 @@ template <class Ar> void fields(Ar& ar, Mechanics& m) {
   ar("histories", m.histories);
   optional_member(ar, "judge_most", m.judge.most, 0L);  // files older than judge{ most } have none
   optional_member(ar, "judge_radius", m.judge.radius, 0.0);  // nor older than judge{ radius }
+  // Nor older than the energy balance: theirs starts again at the next cycle.
+  optional_member(ar, "energy", m.energy, EnergyLedger{});
 }
 
 // ---- The blocks and the mesh hold vectors of vectors per block: stored flat, with offsets, so

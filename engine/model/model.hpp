@@ -20,6 +20,7 @@
 #include "model/defs.hpp"
 #include "model/physics_defs.hpp"
 #include "prepass/prepass.hpp"
+#include "solver/energy.hpp"
 
 namespace edem {
 
@@ -116,6 +117,9 @@ class Model {
   // The last prepass{} result on the present zones (kept, and saved in checkpoints), if any.
   const std::optional<PrepassResult>& last_prepass() const { return last_prepass_; }
   SolverInfo solver_info() const;
+  // The energy balance since the first cycle or the last reset_energy() (solver/energy.hpp).
+  EnergyReport energy() const;
+  void reset_energy();  // the balance starts again from the state now
   bool cycling_started() const;
   bool cycling_now() const;  // inside cycle() or solve(), e.g. while a callback runs
 

@@ -398,7 +398,7 @@ void bolt_cycle(Mechanics& m, const Motion& motion, bool record_start, bool meas
     if (h.zone[i] >= 0) h.host_u[i] = host_point_u(m, h.zone[i], h.weight[i]) - h.u0[i];
     n.u[i] = h.host_u[i] + h.slide[i] * h.dir[i];
   }
-  bolt_forces(set, h.host_u);
+  m.energy.bolt_plastic += bolt_forces(set, h.host_u);
 
   double unbalanced = 0.0, applied = 0.0, kinetic = 0.0, num = 0.0, den = 0.0;
   bool finite = true;
@@ -408,6 +408,7 @@ void bolt_cycle(Mechanics& m, const Motion& motion, bool record_start, bool meas
     for (int node = head; node < set.bolt_first_node[at(b) + 1]; ++node) {
       const size_t i = at(node);
       const double force = axial_force(m, b, node);
+      const double internal = dot(n.force[i], h.dir[i]);  // the segments' and the grout's; the rest a head's pull
       if (node == head)
         h.head_force[at(b)] = h.drive[at(b)] == HeadDrive::velocity ? force
                               : h.drive[at(b)] == HeadDrive::force
@@ -416,14 +417,21 @@ void bolt_cycle(Mechanics& m, const Motion& motion, bool record_start, bool meas
       double& rate = h.rate[i];
       if (driven(m, b, node)) {
         rate = -h.drive_value[at(b)];
+        m.energy.by_bolts += internal * rate * motion.dt;
+        m.energy.boundary -= internal * rate * motion.dt;  // the jack holds it against them
       } else if (h.mass[i] > 0.0) {
         if (record_start) h.r_start[i] = force;
+        const double before = rate;
         if (motion.local) {
           const double damped = force - motion.alpha * std::fabs(force) * (rate > 0.0 ? 1.0 : rate < 0.0 ? -1.0 : 0.0);
           rate += motion.dt * damped / h.mass[i];
         } else {
           rate = motion.keep * rate + motion.push * force / h.mass[i];
         }
+        const double step = 0.5 * (before + rate) * motion.dt;
+        m.energy.by_bolts += internal * step;
+        m.energy.boundary += (force - internal) * step;
+        if (motion.damped) m.energy.damping += force * step - 0.5 * h.mass[i] * (rate * rate - before * before);
         if (measure) {
           unbalanced += std::fabs(force);
           const double ds = h.slide[i] - h.slide_start[i];  // where `force` was found
@@ -487,6 +495,8 @@ bool rehost_bolts(Mechanics& m) {
     if (hit.zone < 0) {
       // Pulled out of the hole: nothing to grip. Across the axis it still follows its last
       // host point, the rock at the hole's mouth.
+      if (n.grout_stiffness[i] > 0.0)  // what its grout held is lost with it
+        m.energy.bolt_plastic += n.grout_force[i] * n.grout_force[i] / (2.0 * n.grout_stiffness[i]);
       n.grout_stiffness[i] = n.grout_strength[i] = n.grout_force[i] = 0.0;
       continue;
     }

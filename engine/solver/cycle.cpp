@@ -41,21 +41,57 @@
 namespace edem {
 namespace {
 
+// Work on a chunk of nodes summed every step [J/m]: the contacts' and the bolts' forces, the
+// supports of moving held gridpoints, and the damping's (the force's work less the kinetic
+// energy it gave). Weight and boundary loads are constant over a batch: their work is taken from
+// the batch's displacement (external_work).
+struct NodeWork {
+  double contacts = 0.0, bolts = 0.0, supports = 0.0, damping = 0.0;
+  NodeWork& operator+=(const NodeWork& o) {
+    contacts += o.contacts, bolts += o.bolts, supports += o.supports, damping += o.damping;
+    return *this;
+  }
+};
+
+// Sums per chunk of zones, contacts or nodes (kChunk of them), added in chunk order so that the
+// totals are the same bits for any thread count. The energy sums run over every cycle of a batch,
+// the others over its last (measuring) cycle.
 struct Partials {
   std::vector<double> zone_applied;  // per zone chunk
   std::vector<int> zone_inverted;
+  std::vector<double> plastic;       // per zone chunk [J/m]
   std::vector<double> contact_applied;  // per contact chunk
   std::vector<int> contact_overlapping;
+  std::vector<ContactLoss> contact_loss;  // per contact chunk [J/m]
   std::vector<double> unbalanced, kinetic, num, den, speed;  // per node chunk
   std::vector<int> fastest;
   std::vector<char> finite;
+  std::vector<NodeWork> work;  // per node chunk [J/m]
 };
+
+// Mohr-Coulomb update of zone z by a strain increment; a zone that yields adds its plastic work
+// of the step to `*plastic` [J/m]: the mid-step stress on the plastic strain, C^-1 (trial -
+// returned). Out of line, so that the elastic zones' path stays short.
+[[gnu::noinline]] void plastic_zone_update(Mechanics& m, size_t z, const MaterialParams& p, double dxx, double dyy,
+                                           double dxy, double dzz, double* plastic) {
+  Stress& s = m.stress[z];
+  const Stress before = s;
+  const std::uint8_t now = mohr_coulomb_update(p, s, dxx, dyy, dxy, dzz);
+  m.zone_state[z] = static_cast<std::uint8_t>((m.zone_state[z] & (kShearPast | kTensionPast)) | now | (now << 2));
+  if (now == 0) return;
+  Stress trial = before;
+  elastic_update(p, trial, dxx, dyy, dxy, dzz);
+  const Stress mid{0.5 * (before.xx + s.xx), 0.5 * (before.yy + s.yy), 0.5 * (before.xy + s.xy), 0.5 * (before.zz + s.zz)};
+  const Stress returned{trial.xx - s.xx, trial.yy - s.yy, trial.xy - s.xy, trial.zz - s.zz};
+  *plastic += m.geometry[z].area * compliance_product(p, mid, returned);
+}
 
 // Constitutive update of mesh zone z over one step; `iso` is the isotropic strain rate the
 // mixed discretisation adds, on all three axes (kIso false: none, and no flops spent on it;
-// with them the plain cycle was 10 % slower).
+// with them the plain cycle was 10 % slower). Plastic work goes to `*plastic`.
 template <bool kIso>
-[[gnu::always_inline]] inline void update_zone(Mechanics& m, size_t z, const ZoneStrain& r, double iso, double dt) {
+[[gnu::always_inline]] inline void update_zone(Mechanics& m, size_t z, const ZoneStrain& r, double iso, double dt,
+                                               double* plastic) {
   const MaterialParams& p = m.params[static_cast<size_t>(m.zone_material[z])];
   Stress& s = m.stress[z];
   const double dxx = (kIso ? r.xx + iso : r.xx) * dt, dyy = (kIso ? r.yy + iso : r.yy) * dt;
@@ -66,8 +102,7 @@ template <bool kIso>
     else
       elastic_update(p, s, dxx, dyy, r.xy * dt);
   } else {
-    const std::uint8_t now = mohr_coulomb_update(p, s, dxx, dyy, r.xy * dt, dzz);
-    m.zone_state[z] = static_cast<std::uint8_t>((m.zone_state[z] & (kShearPast | kTensionPast)) | now | (now << 2));
+    plastic_zone_update(m, z, p, dxx, dyy, r.xy * dt, dzz, plastic);
   }
 }
 
@@ -120,204 +155,282 @@ double member_shift(const Mechanics& m, size_t z, double group_change) {
 
 // Strain rate, constitutive update and nodal forces of every zone; a group of the mixed
 // discretisation is done whole by the thread of its first member, so that no other thread
-// needs its members' rates or stresses.
+// needs its members' rates or stresses. `begin` starts a chunk.
 template <bool kMeasure, bool kGrouped>
 void zone_force_pass(Mechanics& m, int begin, int end, Partials& partials) {
   const double* v = m.v.data();
   const double dt = m.step;
-  double applied = 0.0;
-  int inverted_zone = -1;
-  for (int k = begin; k < end; ++k) {
-    const std::array<int, 2> others = kGrouped ? m.mates[static_cast<size_t>(k)] : std::array<int, 2>{-1, -1};
-    if (others[0] < 0) {
-      const size_t z = static_cast<size_t>(m.active[static_cast<size_t>(k)]);
-      const ZoneGeometry& g = m.geometry[z];
-      const auto& dest = m.partition.dest[static_cast<size_t>(k)];
-      const Stress& s = m.stress[z];
-      update_zone<false>(m, z, zone_strain(v, g), 0.0, dt);
-      const double f = add_zone_forces<kMeasure>(m, g, dest, s, 0.0);
-      if constexpr (kMeasure) {
-        applied += f;
-        if (inverted_zone < 0 && inverted(m, g)) inverted_zone = static_cast<int>(z);
-      }
-    } else if (others[0] > k && (others[1] < 0 || others[1] > k)) {
-      const int members[3] = {k, others[0], others[1]};
-      const int count = others[1] < 0 ? 2 : 3;
-      ZoneStrain rate[3];
-      double area = 0.0, volume = 0.0;
-      for (int i = 0; i < count; ++i) {
-        const ZoneGeometry& g = m.geometry[static_cast<size_t>(m.active[static_cast<size_t>(members[i])])];
-        rate[i] = zone_strain(v, g);
-        area += g.area;
-        volume += g.area * (rate[i].xx + rate[i].yy);
-      }
-      // The group's volumetric strain rate replaces each member's own as an isotropic strain,
-      // a third on each axis, the out-of-plane one included (B-bar in plane strain).
-      const double mean_rate = volume / area;
-      for (int i = 0; i < count; ++i) {
-        const size_t z = static_cast<size_t>(m.active[static_cast<size_t>(members[i])]);
-        update_zone<true>(m, z, rate[i], (mean_rate - (rate[i].xx + rate[i].yy)) * (1.0 / 3.0), dt);
-      }
-      const double group_change = group_mean_stress_change(m, members, count);
-      for (int i = 0; i < count; ++i) {
-        const size_t z = static_cast<size_t>(m.active[static_cast<size_t>(members[i])]);
+  for (int first = begin; first < end; first += kChunk) {
+    const int last = std::min(end, first + kChunk);
+    double applied = 0.0;
+    double* plastic = &partials.plastic[static_cast<size_t>(first / kChunk)];
+    int inverted_zone = -1;
+    for (int k = first; k < last; ++k) {
+      const std::array<int, 2> others = kGrouped ? m.mates[static_cast<size_t>(k)] : std::array<int, 2>{-1, -1};
+      if (others[0] < 0) {
+        const size_t z = static_cast<size_t>(m.active[static_cast<size_t>(k)]);
         const ZoneGeometry& g = m.geometry[z];
-        const double f = add_zone_forces<kMeasure>(m, g, m.partition.dest[static_cast<size_t>(members[i])], m.stress[z],
-                                                   member_shift(m, z, group_change));
+        const auto& dest = m.partition.dest[static_cast<size_t>(k)];
+        const Stress& s = m.stress[z];
+        update_zone<false>(m, z, zone_strain(v, g), 0.0, dt, plastic);
+        const double f = add_zone_forces<kMeasure>(m, g, dest, s, 0.0);
         if constexpr (kMeasure) {
           applied += f;
           if (inverted_zone < 0 && inverted(m, g)) inverted_zone = static_cast<int>(z);
         }
+      } else if (others[0] > k && (others[1] < 0 || others[1] > k)) {
+        const int members[3] = {k, others[0], others[1]};
+        const int count = others[1] < 0 ? 2 : 3;
+        ZoneStrain rate[3];
+        double area = 0.0, volume = 0.0;
+        for (int i = 0; i < count; ++i) {
+          const ZoneGeometry& g = m.geometry[static_cast<size_t>(m.active[static_cast<size_t>(members[i])])];
+          rate[i] = zone_strain(v, g);
+          area += g.area;
+          volume += g.area * (rate[i].xx + rate[i].yy);
+        }
+        // The group's volumetric strain rate replaces each member's own as an isotropic strain,
+        // a third on each axis, the out-of-plane one included (B-bar in plane strain).
+        const double mean_rate = volume / area;
+        for (int i = 0; i < count; ++i) {
+          const size_t z = static_cast<size_t>(m.active[static_cast<size_t>(members[i])]);
+          update_zone<true>(m, z, rate[i], (mean_rate - (rate[i].xx + rate[i].yy)) * (1.0 / 3.0), dt, plastic);
+        }
+        const double group_change = group_mean_stress_change(m, members, count);
+        for (int i = 0; i < count; ++i) {
+          const size_t z = static_cast<size_t>(m.active[static_cast<size_t>(members[i])]);
+          const ZoneGeometry& g = m.geometry[z];
+          const double f = add_zone_forces<kMeasure>(m, g, m.partition.dest[static_cast<size_t>(members[i])], m.stress[z],
+                                                     member_shift(m, z, group_change));
+          if constexpr (kMeasure) {
+            applied += f;
+            if (inverted_zone < 0 && inverted(m, g)) inverted_zone = static_cast<int>(z);
+          }
+        }
       }
     }
+    const size_t chunk = static_cast<size_t>(first / kChunk);
     if constexpr (kMeasure) {
-      if ((k + 1) % kChunk == 0 || k + 1 == end) {
-        partials.zone_applied[static_cast<size_t>(k / kChunk)] = applied;
-        partials.zone_inverted[static_cast<size_t>(k / kChunk)] = inverted_zone;
-        applied = 0.0;
-        inverted_zone = -1;
-      }
+      partials.zone_applied[chunk] = applied;
+      partials.zone_inverted[chunk] = inverted_zone;
     }
   }
 }
 
-// Forces of contacts [begin, end); the nodes gather them in their own pass.
+// Forces of contacts [begin, end), `begin` starting a chunk; the nodes gather them in their own
+// pass.
 template <bool kMeasure>
 void contact_pass(Mechanics& m, int begin, int end, Partials& partials) {
   Contact* list = m.contacts.list.data();
   double* push = m.contacts.push.data();
   const ContactEdge* edges = m.faces.edges.data();
   const JointParams* params = m.joint_params.data();
-  double applied = 0.0;
-  int overlapping = -1;
-  for (int i = begin; i < end; ++i) {
-    Contact& c = list[i];
-    const double overlap = contact_force(c, edges, params[c.material], m.origin.data(), m.u.data(), m.v.data(),
-                                         m.step);
-    // The gridpoint takes the force, the edge's ends the reaction split by where it projects.
-    double* p = push + 6 * static_cast<size_t>(i);
-    const double wa = -(1.0 - c.t), wb = -c.t;
-    p[0] = c.fx;
-    p[1] = c.fy;
-    p[2] = wa * c.fx;
-    p[3] = wa * c.fy;
-    p[4] = wb * c.fx;
-    p[5] = wb * c.fy;
-    if constexpr (kMeasure) {
-      applied += 2.0 * std::sqrt(c.fx * c.fx + c.fy * c.fy);
-      if (overlapping < 0 && overlap > c.limit) overlapping = i;
-      if ((i + 1) % kChunk == 0 || i + 1 == end) {
-        partials.contact_applied[static_cast<size_t>(i / kChunk)] = applied;
-        partials.contact_overlapping[static_cast<size_t>(i / kChunk)] = overlapping;
-        applied = 0.0;
-        overlapping = -1;
+  for (int first = begin; first < end; first += kChunk) {
+    const int last = std::min(end, first + kChunk);
+    double applied = 0.0;
+    int overlapping = -1;
+    ContactLoss lost;
+    for (int i = first; i < last; ++i) {
+      Contact& c = list[i];
+      const double overlap = contact_force(c, edges, params[c.material], m.origin.data(), m.u.data(), m.v.data(),
+                                           m.step, lost);
+      // The gridpoint takes the force, the edge's ends the reaction split by where it projects.
+      double* p = push + 6 * static_cast<size_t>(i);
+      const double wa = -(1.0 - c.t), wb = -c.t;
+      p[0] = c.fx;
+      p[1] = c.fy;
+      p[2] = wa * c.fx;
+      p[3] = wa * c.fy;
+      p[4] = wb * c.fx;
+      p[5] = wb * c.fy;
+      if constexpr (kMeasure) {
+        applied += 2.0 * std::sqrt(c.fx * c.fx + c.fy * c.fy);
+        if (overlapping < 0 && overlap > c.limit) overlapping = i;
       }
+    }
+    const size_t chunk = static_cast<size_t>(first / kChunk);
+    partials.contact_loss[chunk].slip += lost.slip;
+    partials.contact_loss[chunk].bond += lost.bond;
+    if constexpr (kMeasure) {
+      partials.contact_applied[chunk] = applied;
+      partials.contact_overlapping[chunk] = overlapping;
     }
   }
 }
 
-template <bool kMeasure>
+// Unbalanced force, damping and integration of nodes [begin, end), `begin` starting a chunk. The
+// work of a force over the step is F . (v_old + v_new) / 2 dt, the distance the scheme moves the
+// node by between the midpoints of the last step and this one; damping takes the difference of
+// the force's impulse and the momentum it gave, at that speed. kDamped: the damping takes energy
+// out; kCoupled: contacts or bolts act on the nodes (their forces' work is summed apart).
+template <bool kMeasure, bool kDamped, bool kCoupled>
 void node_motion_pass(Mechanics& m, int begin, int end, const Motion& motion, bool record_start,
                       Partials& partials) {
   double* acc = m.acc_force.data();
-  const int* first = m.partition.gather_first.data();
+  const int* first_slot = m.partition.gather_first.data();
   const int* gather = m.partition.gather.data();
   const bool with_contacts = !m.contacts.list.empty();
   const int* contact_first = m.contacts.gather_first.data();
   const int* contact_gather = m.contacts.gather.data();
   const double* push = m.contacts.push.data();
   const bool with_bolts = !m.bolt_hosts.gather.empty();
-  double unbalanced = 0.0, kinetic = 0.0, num = 0.0, den = 0.0, speed = -1.0;
-  int fastest = -1;
-  bool finite = true;
-  for (int n = begin; n < end; ++n) {
-    const size_t nn = static_cast<size_t>(n);
-    double f[2];
-    if (first[n] == first[n + 1]) {
-      f[0] = acc[2 * nn];
-      f[1] = acc[2 * nn + 1];
-      acc[2 * nn] = 0.0;
-      acc[2 * nn + 1] = 0.0;
-    } else {
-      f[0] = f[1] = 0.0;
-      for (int s = first[n]; s < first[n + 1]; ++s) {
-        const size_t d = static_cast<size_t>(gather[s]);
-        f[0] += acc[2 * d];
-        f[1] += acc[2 * d + 1];
-        acc[2 * d] = 0.0;
-        acc[2 * d + 1] = 0.0;
+  const double half_dt = 0.5 * motion.dt;
+  for (int first = begin; first < end; first += kChunk) {
+    const int last = std::min(end, first + kChunk);
+    double unbalanced = 0.0, kinetic = 0.0, num = 0.0, den = 0.0, speed = -1.0;
+    int fastest = -1;
+    bool finite = true;
+    NodeWork work;
+    for (int n = first; n < last; ++n) {
+      const size_t nn = static_cast<size_t>(n);
+      double f[2];
+      if (first_slot[n] == first_slot[n + 1]) {
+        f[0] = acc[2 * nn];
+        f[1] = acc[2 * nn + 1];
+        acc[2 * nn] = 0.0;
+        acc[2 * nn + 1] = 0.0;
+      } else {
+        f[0] = f[1] = 0.0;
+        for (int s = first_slot[n]; s < first_slot[n + 1]; ++s) {
+          const size_t d = static_cast<size_t>(gather[s]);
+          f[0] += acc[2 * d];
+          f[1] += acc[2 * d + 1];
+          acc[2 * d] = 0.0;
+          acc[2 * d + 1] = 0.0;
+        }
       }
-    }
-    if (with_contacts) {
-      for (int s = contact_first[n]; s < contact_first[n + 1]; ++s) {
-        const double* p = push + 2 * static_cast<size_t>(contact_gather[s]);
-        f[0] += p[0];
-        f[1] += p[1];
+      // The contacts' and the bolts' shares, for the work each does.
+      double fc[2] = {0.0, 0.0}, fb[2] = {0.0, 0.0};
+      if constexpr (kCoupled) {
+        const double own[2] = {f[0], f[1]};
+        if (with_contacts) {
+          for (int s = contact_first[n]; s < contact_first[n + 1]; ++s) {
+            const double* p = push + 2 * static_cast<size_t>(contact_gather[s]);
+            f[0] += p[0];
+            f[1] += p[1];
+          }
+        }
+        fc[0] = f[0] - own[0], fc[1] = f[1] - own[1];
+        if (with_bolts) add_grout_forces(m, nn, f);
+        fb[0] = f[0] - own[0] - fc[0], fb[1] = f[1] - own[1] - fc[1];
       }
-    }
-    if (with_bolts) add_grout_forces(m, nn, f);
-    const double mass = m.mass[nn];
-    if (mass > 0.0) {
-      const double inv_mass = 1.0 / mass;
-      for (int c = 0; c < 2; ++c) {
-        const size_t dof = 2 * nn + static_cast<size_t>(c);
-        const double force = f[c] + m.weight[dof] + m.load[dof];
-        m.force[dof] = force;
-        const bool held = (m.fix[nn] >> c) & 1;
-        if (!held) {
-          if (record_start) m.adaptive.r_start[dof] = force;
+      const double mass = m.mass[nn];
+      if (mass > 0.0) {
+        const double inv_mass = 1.0 / mass;
+        for (int c = 0; c < 2; ++c) {
+          const size_t dof = 2 * nn + static_cast<size_t>(c);
+          const double force = f[c] + m.weight[dof] + m.load[dof];
+          m.force[dof] = force;
+          const bool held = (m.fix[nn] >> c) & 1;
           double& vel = m.v[dof];
-          if (motion.local) {
-            const double damped = force - motion.alpha * std::fabs(force) * (vel > 0.0 ? 1.0 : vel < 0.0 ? -1.0 : 0.0);
-            vel += motion.dt * damped * inv_mass;
-          } else {
-            vel = motion.keep * vel + motion.push * force * inv_mass;
+          if (!held) {
+            if (record_start) m.adaptive.r_start[dof] = force;
+            const double before = vel;
+            double impulse_lost;  // the force's impulse less the momentum it gave [N s/m]
+            if (motion.local) {
+              const double damped = force - motion.alpha * std::fabs(force) * (vel > 0.0 ? 1.0 : vel < 0.0 ? -1.0 : 0.0);
+              vel += motion.dt * damped * inv_mass;
+              impulse_lost = (force - damped) * motion.dt;
+            } else {
+              vel = motion.keep * vel + motion.push * force * inv_mass;
+              impulse_lost = force * motion.dt - mass * (vel - before);
+            }
+            if constexpr (kDamped) work.damping += impulse_lost * (before + vel) * 0.5;
+            if constexpr (kCoupled) {
+              const double step = (before + vel) * half_dt;
+              work.contacts += fc[c] * step;
+              work.bolts += fb[c] * step;
+            }
+            if constexpr (kMeasure) {
+              unbalanced += std::fabs(force);
+              const double du = m.u[dof] - m.adaptive.u_start[dof];  // where `force` was found
+              num += du * (m.adaptive.r_start[dof] - force);
+              den += mass * du * du;
+            }
+          } else if (vel != 0.0) {  // moved as told: its support does the work the forces do not
+            const double step = motion.dt * vel;
+            work.supports -= force * step;
+            work.contacts += fc[c] * step;
+            work.bolts += fb[c] * step;
           }
-          if constexpr (kMeasure) {
-            unbalanced += std::fabs(force);
-            const double du = m.u[dof] - m.adaptive.u_start[dof];  // where `force` was found
-            num += du * (m.adaptive.r_start[dof] - force);
-            den += mass * du * du;
-          }
+          m.u[dof] += motion.dt * vel;
         }
-        m.u[dof] += motion.dt * m.v[dof];
+      } else {
+        // No stiffness to move against: held components still follow their velocity.
+        for (int c = 0; c < 2; ++c) {
+          const size_t dof = 2 * nn + static_cast<size_t>(c);
+          const double force = f[c] + m.weight[dof] + m.load[dof];
+          m.force[dof] = force;
+          if (!((m.fix[nn] >> c) & 1)) continue;
+          const double step = motion.dt * m.v[dof];
+          m.u[dof] += step;
+          work.supports -= force * step;
+          work.contacts += fc[c] * step;
+          work.bolts += fb[c] * step;
+        }
       }
-    } else {
-      // No stiffness to move against: held components still follow their velocity.
-      for (int c = 0; c < 2; ++c) {
-        const size_t dof = 2 * nn + static_cast<size_t>(c);
-        m.force[dof] = f[c] + m.weight[dof] + m.load[dof];
-        if ((m.fix[nn] >> c) & 1) m.u[dof] += motion.dt * m.v[dof];
-      }
-    }
-    if (mass > 0.0) {
       if constexpr (kMeasure) {
-        const double v2 = m.v[2 * nn] * m.v[2 * nn] + m.v[2 * nn + 1] * m.v[2 * nn + 1];
-        kinetic += 0.5 * mass * v2;
-        if (!(std::isfinite(v2) && std::isfinite(f[0]) && std::isfinite(f[1]))) finite = false;
-        if (v2 > speed) {
-          speed = v2;
-          fastest = n;
+        if (mass > 0.0) {
+          const double v2 = m.v[2 * nn] * m.v[2 * nn] + m.v[2 * nn + 1] * m.v[2 * nn + 1];
+          kinetic += 0.5 * mass * v2;
+          if (!(std::isfinite(v2) && std::isfinite(f[0]) && std::isfinite(f[1]))) finite = false;
+          if (v2 > speed) {
+            speed = v2;
+            fastest = n;
+          }
         }
       }
     }
+    const size_t chunk = static_cast<size_t>(first / kChunk);
+    partials.work[chunk] += work;
     if constexpr (kMeasure) {
-      if ((n + 1) % kChunk == 0 || n + 1 == end) {
-        const size_t chunk = static_cast<size_t>(n / kChunk);
-        partials.unbalanced[chunk] = unbalanced;
-        partials.kinetic[chunk] = kinetic;
-        partials.num[chunk] = num;
-        partials.den[chunk] = den;
-        partials.speed[chunk] = speed;
-        partials.fastest[chunk] = fastest;
-        partials.finite[chunk] = finite;
-        unbalanced = kinetic = num = den = 0.0;
-        speed = -1.0;
-        fastest = -1;
-        finite = true;
-      }
+      partials.unbalanced[chunk] = unbalanced;
+      partials.kinetic[chunk] = kinetic;
+      partials.num[chunk] = num;
+      partials.den[chunk] = den;
+      partials.speed[chunk] = speed;
+      partials.fastest[chunk] = fastest;
+      partials.finite[chunk] = finite;
     }
   }
+}
+
+// One node pass, its kind chosen once a pass.
+void node_motion(Mechanics& m, int begin, int end, const Motion& motion, bool record_start, bool measure,
+                 bool coupled, Partials& partials) {
+  const auto run = [&]<bool kMeasure, bool kDamped>() {
+    if (coupled)
+      node_motion_pass<kMeasure, kDamped, true>(m, begin, end, motion, record_start, partials);
+    else
+      node_motion_pass<kMeasure, kDamped, false>(m, begin, end, motion, record_start, partials);
+  };
+  if (measure)
+    motion.damped ? run.template operator()<true, true>() : run.template operator()<true, false>();
+  else
+    motion.damped ? run.template operator()<false, true>() : run.template operator()<false, false>();
+}
+
+// Where a node was midway through the last step, u - v dt / 2 [m]: the node pass's work over a
+// step, F . (v_old + v_new) dt / 2, is F times the change of this.
+double midstep(const Mechanics& m, size_t dof) { return m.u[dof] - 0.5 * m.step * m.v[dof]; }
+
+// The work of the weight and of the boundary's own loads (the loads less a release's share, which
+// release_work counts) over a batch, from the nodes' midstep positions at its start, `start`:
+// both are constant while it runs.
+void external_work(Mechanics& m, const std::vector<double>& start) {
+  double gravity = 0.0, boundary = 0.0;
+  for (size_t dof = 0; dof < m.u.size(); ++dof) {
+    const double du = midstep(m, dof) - start[dof];
+    gravity += m.weight[dof] * du;
+    boundary += m.load[dof] * du;
+  }
+  const ReleaseLoad& r = m.release;
+  for (size_t i = 0; i < r.dof.size(); ++i) {
+    const size_t dof = static_cast<size_t>(r.dof[i]);
+    boundary -= r.factor * r.force[i] * (midstep(m, dof) - start[dof]);
+  }
+  m.energy.gravity += gravity;
+  m.energy.boundary += boundary;
 }
 
 Motion motion_of(const Mechanics& m) {
@@ -333,6 +446,7 @@ Motion motion_of(const Mechanics& m) {
     motion.keep = (2.0 - c) / (2.0 + c);
     motion.push = 2.0 * m.step / (2.0 + c);
   }
+  motion.damped = motion.local || motion.keep != 1.0;
   return motion;
 }
 
@@ -346,6 +460,8 @@ Measure run_cycles(Mechanics& m, int count) {
   Partials partials;
   partials.zone_applied.assign(zone_chunks, 0.0);
   partials.zone_inverted.assign(zone_chunks, -1);
+  partials.plastic.assign(zone_chunks, 0.0);
+  partials.work.assign(node_chunks, NodeWork{});
   for (auto* sums : {&partials.unbalanced, &partials.kinetic, &partials.num, &partials.den})
     sums->assign(node_chunks, 0.0);
   partials.speed.assign(node_chunks, -1.0);
@@ -356,6 +472,7 @@ Measure run_cycles(Mechanics& m, int count) {
   const size_t contact_chunks = (static_cast<size_t>(contact_count) + kChunk - 1) / kChunk;
   partials.contact_applied.assign(contact_chunks, 0.0);
   partials.contact_overlapping.assign(contact_chunks, -1);
+  partials.contact_loss.assign(contact_chunks, ContactLoss{});
   std::vector<int> contact_begin(static_cast<size_t>(ranges) + 1);
   {
     const int chunks = static_cast<int>(contact_chunks);
@@ -369,8 +486,11 @@ Measure run_cycles(Mechanics& m, int count) {
     m.adaptive.have_r_start = false;
   }
   const Motion motion = motion_of(m);
+  m.u_batch_start.resize(m.u.size());
+  for (size_t dof = 0; dof < m.u.size(); ++dof) m.u_batch_start[dof] = midstep(m, dof);
   const bool record = !m.adaptive.have_r_start;
   const bool grouped = !m.mates.empty();
+  const bool coupled = !m.contacts.list.empty() || !m.bolt_hosts.gather.empty();
   Measure bolt_measure;
 
 #pragma omp parallel num_threads(ranges)
@@ -395,16 +515,27 @@ Measure run_cycles(Mechanics& m, int count) {
 #pragma omp barrier
       for (int r = me; r < ranges; r += team) {
         const int b = part.node_begin[static_cast<size_t>(r)], e = part.node_begin[static_cast<size_t>(r) + 1];
-        const bool rec = record && cycle == 0;
-        if (measure)
-          node_motion_pass<true>(m, b, e, motion, rec, partials);
-        else
-          node_motion_pass<false>(m, b, e, motion, rec, partials);
+        node_motion(m, b, e, motion, record && cycle == 0, measure, coupled, partials);
       }
 #pragma omp barrier
     }
   }
   m.adaptive.have_r_start = true;
+  release_work(m);
+
+  EnergyLedger& energy = m.energy;
+  for (const double plastic : partials.plastic) energy.plastic += plastic;
+  for (const ContactLoss& lost : partials.contact_loss) {
+    energy.slip += lost.slip;
+    energy.bond += lost.bond;
+  }
+  for (const NodeWork& work : partials.work) {
+    energy.by_contacts += work.contacts;
+    energy.by_bolts += work.bolts;
+    energy.boundary += work.supports;
+    energy.damping += work.damping;
+  }
+  external_work(m, m.u_batch_start);
 
   Measure out;
   out.applied = m.applied_magnitude;
@@ -477,7 +608,9 @@ Measure measure_state(const Mechanics& m) {
   for (const Contact& c : m.contacts.list) {
     Contact now = c;
     const ContactEdge& e = m.faces.edges[static_cast<size_t>(c.edge)];
-    contact_force(now, m.faces.edges.data(), m.joint_params[static_cast<size_t>(c.material)], m.origin.data(), m.u.data(), m.v.data(), 0.0);
+    ContactLoss ignored;
+    contact_force(now, m.faces.edges.data(), m.joint_params[static_cast<size_t>(c.material)], m.origin.data(),
+                  m.u.data(), m.v.data(), 0.0, ignored);
     const size_t n = static_cast<size_t>(c.node), a = static_cast<size_t>(e.a), b = static_cast<size_t>(e.b);
     f[2 * n] += now.fx;
     f[2 * n + 1] += now.fy;

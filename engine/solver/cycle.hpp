@@ -13,6 +13,7 @@ struct Motion {
   double alpha = 0.0;   // its coefficient
   double keep = 1.0;    // viscous: v' = keep v + push F / m
   double push = 1.0;
+  bool damped = false;  // takes energy out (local, or viscous with keep < 1)
 };
 
 // What the last cycle of a batch measured.

@@ -159,6 +159,7 @@ void Model::excavate(const ExcavateDef& def) {
   for (const int z : zones)
     if (m.zone_material[static_cast<size_t>(z)] < 0)
       fail("{} has zones without material: assign{{}} the rock before excavating it", label);
+  const StoredEnergy before = stored_energy(m);
   if (def.release > 0) {
     prepare(m, mesh_);  // the zone geometry and the active list of now
     hold_release(m, zones, def.release);
@@ -179,6 +180,7 @@ void Model::excavate(const ExcavateDef& def) {
     lump_boundary_loads(m);
   }
   m.dirty = true;
+  book_excavation(m, before);  // the rock's energy goes with it
 }
 
 void Model::fill(const FillDef& def) {
@@ -205,14 +207,30 @@ long release_cycles_left(const Mechanics& m) {
   return m.release.dof.empty() ? 0 : std::max(0L, m.release.cycles - m.release.done);
 }
 
+void release_work(Mechanics& m) {
+  ReleaseLoad& r = m.release;
+  if (!r.pending) return;
+  r.pending = false;
+  double work = 0.0;
+  for (size_t i = 0; i < r.dof.size(); ++i) {
+    const size_t dof = static_cast<size_t>(r.dof[i]);
+    work += r.factor * r.force[i] * 0.5 * (r.v_before[i] + m.v[dof]) * m.step;
+  }
+  m.energy.release += work;
+}
+
 void step_release(Mechanics& m) {
   ReleaseLoad& r = m.release;
+  release_work(m);
   if (r.dof.empty() || r.done >= r.cycles) return;
   r.done += 1;
   const double next = r.done >= r.cycles ? 0.0 : 1.0 - static_cast<double>(r.done) / static_cast<double>(r.cycles);
   for (size_t i = 0; i < r.dof.size(); ++i)
     m.load[static_cast<size_t>(r.dof[i])] += (next - r.factor) * r.force[i];
   r.factor = next;
+  r.v_before.resize(r.dof.size());
+  for (size_t i = 0; i < r.dof.size(); ++i) r.v_before[i] = m.v[static_cast<size_t>(r.dof[i])];
+  r.pending = true;
 }
 
 void end_release(Mechanics& m) {

@@ -13,6 +13,10 @@ long release_cycles_left(const Mechanics& m);
 // may call it while the zones' forces are summed.
 void step_release(Mechanics& m);
 
+// Books the work the release's loads did over the last cycle stepped (once its nodes have moved)
+// as the excavation's.
+void release_work(Mechanics& m);
+
 // The release's last step: it ends, and the boundary gets its own loads back exactly (the steps
 // summed would leave rounding behind on the new surface).
 void end_release(Mechanics& m);

@@ -266,6 +266,13 @@ SolverInfo Model::solver_info() const {
   return info;
 }
 
+EnergyReport Model::energy() const { return energy_report(*mechanics_); }
+
+void Model::reset_energy() {
+  if (mechanics_->cycling_now) fail("energy{{ reset = true }} cannot be given while cycling (from a callback)");
+  start_energy(*mechanics_);
+}
+
 SolveResult Model::run(long max_cycles, double target_ratio) {
   return run_solver(*mechanics_, mesh_, max_cycles, target_ratio);
 }
@@ -329,9 +336,13 @@ const std::vector<std::string>& Model::history_point_quantities() {
 }
 
 const std::vector<std::string>& Model::history_model_quantities() {
-  static const std::vector<std::string> names{"ratio", "time",    "kinetic",  "cycle",
-                                              "contacts", "slipping", "open", "max_slip",
-                                              "cracks", "shear_cracks", "tension_cracks", "stage"};
+  static const std::vector<std::string> names{
+      "ratio",           "time",           "kinetic",          "cycle",           "contacts",
+      "slipping",        "open",           "max_slip",         "cracks",          "shear_cracks",
+      "tension_cracks",  "stage",          "energy.kinetic",   "energy.strain",   "energy.contact",
+      "energy.bolt",     "energy.gravity", "energy.boundary",  "energy.release",  "energy.prestress",
+      "energy.commands", "energy.excavated", "energy.plastic", "energy.slip",     "energy.bond",
+      "energy.damping",  "energy.bolt_plastic", "energy.error"};
   return names;
 }
 
@@ -340,7 +351,7 @@ std::string Model::history_unit(std::string_view quantity) {
       quantity == "slipping" || quantity == "open" || quantity.ends_with("cracks") || quantity == "stage")
     return "-";
   if (quantity == "time") return "s";
-  if (quantity == "kinetic") return "J/m";
+  if (quantity == "kinetic" || quantity.starts_with("energy.")) return "J/m";
   if (quantity == "ux" || quantity == "uy" || quantity == "max_slip" || quantity == "joint_un" ||
       quantity == "joint_us" || quantity == "joint_slip")
     return "m";
@@ -378,6 +389,27 @@ double joint_quantity(const Mechanics& m, int node, std::string_view quantity) {
   return c->slip;
 }
 
+// One term of the energy balance by its name (energy.hpp, EnergyReport).
+double energy_term(const Mechanics& m, std::string_view term) {
+  const EnergyReport r = energy_report(m);
+  if (term == "kinetic") return r.stored.kinetic;
+  if (term == "strain") return r.stored.strain;
+  if (term == "contact") return r.stored.contact();
+  if (term == "bolt") return r.stored.bolt;
+  if (term == "gravity") return r.gravity;
+  if (term == "boundary") return r.boundary;
+  if (term == "release") return r.release;
+  if (term == "prestress") return r.prestress;
+  if (term == "commands") return r.commands;
+  if (term == "excavated") return r.excavated;
+  if (term == "plastic") return r.plastic;
+  if (term == "slip") return r.slip;
+  if (term == "bond") return r.bond;
+  if (term == "damping") return r.damping;
+  if (term == "bolt_plastic") return r.bolt_plastic;
+  return r.error;
+}
+
 }  // namespace
 
 std::function<double()> Model::history_sampler(std::string_view quantity,
@@ -398,6 +430,7 @@ std::function<double()> Model::history_sampler(std::string_view quantity,
     if (quantity == "kinetic") return [m] { return m->info.kinetic; };
     if (quantity == "cycle") return [m] { return static_cast<double>(m->info.cycle); };
     if (quantity == "stage") return [m] { return static_cast<double>(m->stage); };
+    if (quantity.starts_with("energy.")) return [m, q = std::string(quantity.substr(7))] { return energy_term(*m, q); };
     if (quantity.ends_with("cracks")) {
       const CrackMode mode = quantity == "shear_cracks"     ? CrackMode::shear
                              : quantity == "tension_cracks" ? CrackMode::tension

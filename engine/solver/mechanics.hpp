@@ -24,6 +24,7 @@
 #include "crack/sections.hpp"
 #include "geom/mesh.hpp"
 #include "model/physics_defs.hpp"
+#include "solver/energy.hpp"
 
 namespace edem {
 
@@ -99,6 +100,10 @@ struct ReleaseLoad {
   long cycles = 0;             // over how many cycles it goes
   long done = 0;               // cycles run since
   double factor = 0.0;         // the fraction of `force` in Mechanics::load now
+  // The work of the last cycle's share is summed once its nodes have moved (release_work):
+  // with the velocities before it [m/s], while one is pending.
+  std::vector<double> v_before;
+  bool pending = false;
 };
 
 // How a bolt's head is held (bolt_head{}).
@@ -225,6 +230,7 @@ struct Mechanics {
   double applied_magnitude = 0.0;      // sum of |weight| + |load| over nodes [N/m]
   Partition partition;
   std::vector<double> acc_force;       // accumulators, 2 per entry
+  std::vector<double> u_batch_start;   // u - v dt / 2 when the running batch began (scratch) [m]
 
   // ---- solver progress
   SolverInfo info;
@@ -238,6 +244,7 @@ struct Mechanics {
   std::function<void(const RunProgress&)> progress;  // reports a long run (Model::set_progress)
   double progress_every = 0.0;                       // [s] between reports; 0: none
   std::vector<History> histories;
+  EnergyLedger energy;  // the energy balance (solver/energy.hpp)
 };
 
 }  // namespace edem

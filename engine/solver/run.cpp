@@ -13,6 +13,7 @@
 #include "crack/judge.hpp"
 #include "solver/bolt_coupling.hpp"
 #include "solver/cycle.hpp"
+#include "solver/energy.hpp"
 #include "solver/excavation.hpp"
 #include "solver/prepare.hpp"
 
@@ -134,8 +135,9 @@ long next_due(const Mechanics& m, long cycle) {
 }
 
 // Judgment first, so that histories and callbacks of this cycle see its cracks. Returns whether
-// sections broke.
-bool run_due(Mechanics& m, const Mesh& mesh, long cycle) {
+// sections broke; `commands_pending` is set when callbacks ran (what they changed is booked as
+// commands' once the model is prepared again).
+bool run_due(Mechanics& m, const Mesh& mesh, long cycle, bool& commands_pending) {
   const bool broke = judging(m) && cycle % m.judge.every == 0 && judge_sections(m, mesh) > 0;
   for (History& h : m.histories)
     if (cycle % h.every == 0) {
@@ -147,6 +149,11 @@ bool run_due(Mechanics& m, const Mesh& mesh, long cycle) {
   std::vector<std::pair<int, long>> due;
   for (const Callback& c : m.callbacks)
     if (cycle % c.every == 0) due.push_back({c.handle, c.every});
+  if (!due.empty() && !commands_pending) {
+    m.energy.last = stored_energy(m);
+    m.energy.last_current = true;
+    commands_pending = true;
+  }
   for (const auto& [handle, every] : due) {
     const auto it = std::find_if(m.callbacks.begin(), m.callbacks.end(),
                                  [&](const Callback& c) { return c.handle == handle; });
@@ -180,6 +187,34 @@ void check_functions_given(const Mechanics& m) {
          "restore (or judge{{}} for the built-in criteria)");
 }
 
+// Masses and the time step again (contacts or bolts changed): in static mode the scaled masses
+// change the kinetic energy, which goes with the damping's (the fictitious dynamics of static mode).
+void update_masses_booked(Mechanics& m) {
+  const bool scaled = m.settings.mode == SolverMode::static_;
+  const double before = scaled ? kinetic_energy(m) : 0.0;
+  update_masses(m);
+  if (scaled) m.energy.damping += before - kinetic_energy(m);
+}
+
+// Whatever way cycling ends, the energy balance's last state is the state then (what callbacks
+// changed since they ran booked as commands').
+struct EnergyAtExit {
+  EnergyAtExit(Mechanics& m, const bool& commands_pending) : m_(m), pending_(commands_pending) {}
+  ~EnergyAtExit() {
+    if (!m_.energy.started) return;
+    if (pending_) {
+      book_commands(m_);
+    } else {
+      m_.energy.last = stored_energy(m_);
+      m_.energy.last_current = true;
+    }
+  }
+  EnergyAtExit(const EnergyAtExit&) = delete;
+  EnergyAtExit& operator=(const EnergyAtExit&) = delete;
+  Mechanics& m_;
+  const bool& pending_;
+};
+
 }  // namespace
 
 SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double target_ratio) {
@@ -187,7 +222,14 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
   check_functions_given(m);
   prepare(m, mesh);  // a changed model; else the thread count may have changed
   if (m.restart_damping) start_adaptive(m);
-  if (refresh_contacts(m, 0.0)) update_masses(m);
+  // The energy balance starts with the first cycle; after that, what commands changed is theirs.
+  if (!m.energy.started)
+    start_energy(m);
+  else
+    book_commands(m);
+  bool commands_pending = false;
+  EnergyAtExit energy_at_exit(m, commands_pending);
+  if (refresh_contacts(m, 0.0)) update_masses_booked(m);
   // Past its critical step a bolt's segments chatter between their yield forces: bounded, so the
   // watchdog would not see it grow, and the answer would be garbage. Refused up front.
   if (m.settings.mode == SolverMode::dynamic && m.settings.step > 0.0 && m.settings.step >= m.bolt_hosts.critical_step)
@@ -210,7 +252,15 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
     }
   }
   while (result.cycles < max_cycles) {
-    if (m.dirty) prepare(m, mesh);  // a callback changed the model
+    if (m.dirty) {  // a callback or a judgment changed the model
+      const double kinetic = kinetic_energy(m);
+      prepare(m, mesh);
+      if (!commands_pending) m.energy.damping += kinetic - kinetic_energy(m);  // masses split at a crack
+    }
+    if (commands_pending) {
+      book_commands(m);
+      commands_pending = false;
+    }
     if (m.restart_damping) start_adaptive(m);
     const long cycle = m.info.cycle;
     // An excavation's loads come off a step every cycle while its release runs (run_cycles takes
@@ -229,12 +279,13 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
     const bool measuring = cycle % kMeasureInterval == 0;
     // Contacts are found again where things have moved far enough (allowing for their speed
     // until the next measuring cycle), and everywhere at once when the list is no longer current.
-    if ((measuring || !m.contacts.detected) && refresh_contacts(m, kMeasureInterval)) update_masses(m);
+    if ((measuring || !m.contacts.detected) && refresh_contacts(m, kMeasureInterval)) update_masses_booked(m);
     // Bolt nodes that slid out of their zone take the one they are in now.
     if (measuring && !m.bolts.nodes.x.empty() && rehost_bolts(m)) {
       tie_bolts(m);
-      update_masses(m);
+      update_masses_booked(m);
     }
+    m.energy.last_current = false;
     const Measure measure = run_cycles(m, static_cast<int>(batch));
     result.cycles += batch;
     m.cycles_run += batch;
@@ -245,7 +296,7 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
     watch(m, mesh, measure, static_cast<int>(batch));
     if (m.settings.damping == Damping::adaptive && m.info.cycle % kMeasureInterval == 0) adapt_damping(m, measure);
     // A model that has just cracked is not in equilibrium, whatever the ratio said before.
-    const bool cracked = run_due(m, mesh, m.info.cycle);
+    const bool cracked = run_due(m, mesh, m.info.cycle, commands_pending);
     // Nor is one whose excavation loads are still coming off.
     if (target_ratio > 0.0 && m.info.ratio <= target_ratio && !cracked && !releasing) {
       result.converged = true;

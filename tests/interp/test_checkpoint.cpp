@@ -74,6 +74,18 @@ const char* kDump = R"(
   for _ in cracks() do broken = broken + 1 end
 )";
 
+// The energy balance's terms, in hexadecimal floating point. (Summed over the batches a run is
+// cut into, they may differ by round-off where a callback cuts it differently.)
+const char* kEnergyDump = R"(
+  local terms = {}
+  local e = energy()
+  for _, k in ipairs({"kinetic", "strain", "contact", "bolt", "gravity", "boundary", "release", "prestress", "commands",
+                      "excavated", "plastic", "slip", "bond", "damping", "bolt_plastic", "error"}) do
+    terms[#terms + 1] = ("%a"):format(e[k])
+  end
+  energy_dump = table.concat(terms, " ")
+)";
+
 class Checkpoint : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -105,9 +117,10 @@ class Checkpoint : public ::testing::Test {
 TEST_F(Checkpoint, RestoredRunGoesOnBitForBitMidStage) {
   // Uninterrupted: 150 cycles into the release, then 450 more.
   Interpreter whole({.quiet = true, .threads = 1, .stdlib_dirs = {}});
-  expect_runs(whole, std::string(kScene) + kFunctions + "cycle(150)\ncycle(450)\n" + kDump +
+  expect_runs(whole, std::string(kScene) + kFunctions + "cycle(150)\ncycle(450)\n" + kDump + kEnergyDump +
                          "history_write('" + file("whole.csv") + "')");
   const std::string expected = global(whole, "dump");
+  EXPECT_FALSE(global(whole, "energy_dump").empty());
   ASSERT_FALSE(expected.empty());
   // The scene must exercise what a checkpoint has to carry.
   EXPECT_GT(std::stoi(global(whole, "slipping")), 0) << "no contact has slipped";
@@ -125,8 +138,9 @@ TEST_F(Checkpoint, RestoredRunGoesOnBitForBitMidStage) {
     const std::string csv = file("restored" + std::to_string(threads) + ".csv");
     expect_runs(second, "restore('" + file("mid.h5") + "')\n" + kFunctions +
                             "calls = 3  -- the callback ran at cycles 50, 100, 150 before the save\n" +
-                            "cycle(450)\n" + kDump + "history_write('" + csv + "')");
+                            "cycle(450)\n" + kDump + kEnergyDump + "history_write('" + csv + "')");
     EXPECT_TRUE(global(second, "dump") == expected) << "restored on " << threads << " thread(s) differs";
+    EXPECT_EQ(global(second, "energy_dump"), global(whole, "energy_dump")) << "energy balance, " << threads;
     EXPECT_EQ(slurp(csv), slurp(file("whole.csv"))) << "histories differ";
   }
 }

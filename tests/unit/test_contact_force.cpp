@@ -41,7 +41,8 @@ struct Corner {
   double force_at(double x, double y) {
     origin[6] = x;
     origin[7] = y;
-    contact_force(contact, edges.data(), joint, origin.data(), u.data(), v.data(), 1e-4);
+    ContactLoss lost;
+    contact_force(contact, edges.data(), joint, origin.data(), u.data(), v.data(), 1e-4, lost);
     return contact.fy;
   }
 };
@@ -87,6 +88,28 @@ TEST(ContactForce, ATipPressedInCarriesOverALengthGrowingWithItsDepth) {
   c.contact.length = 0.0;  // a tip and nothing more: carries nothing until pressed in
   EXPECT_EQ(c.force_at(0.5, 1e-3), 0.0);
   EXPECT_EQ(c.contact.state, ContactState::open);
+}
+
+// A tip's energy is the work of pressing it in slowly (its force growing as its depth squared
+// past its own length, and only linearly again past the limit); with a prestress (closure at
+// zero gap) the work starts from the prestress's energy.
+TEST(ContactForce, ATipStoresTheWorkOfPressingItIn) {
+  for (const double prestress : {0.0, 2e-3}) {
+    Corner c;
+    c.contact.length = 0.001;
+    c.contact.wedge = 0.25;
+    c.contact.limit = 0.1;
+    c.contact.closure0 = prestress;
+    double work = 0.0, before = c.force_at(0.5, 0.0);
+    const double start = contact_energy(c.contact, c.joint).normal;
+    constexpr int kSteps = 40000;
+    for (int i = 1; i <= kSteps; ++i) {  // to 0.15 m deep, past the limit
+      const double now = c.force_at(0.5, -0.15 * i / kSteps);
+      work += 0.5 * (before + now) * 0.15 / kSteps;
+      before = now;
+    }
+    EXPECT_NEAR(contact_energy(c.contact, c.joint).normal - start, work, 1e-4 * work) << prestress;
+  }
 }
 
 TEST(ContactForce, BesideAThinTipWithinTheEdgeNoDeepLinePressesItIn) {

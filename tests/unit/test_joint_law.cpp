@@ -338,6 +338,23 @@ TEST(JointLaw, RejectsTableKnNotPositive) {
   expect_rejected(def, {"kn_table stage 1", "kn", "got -2"});
 }
 
+// normal_energy is the integral of normal_stress from zero closure (Simpson's rule on a fine
+// grid, through the stages and the seed curve's straight part), on both sides of zero.
+TEST(JointLaw, NormalEnergyIsTheIntegralOfTheStressForEveryLaw) {
+  for (const JointMaterialDef& def : {linear_def(), table_def(), seed_def()}) {
+    const JointParams p = joint_params(def);
+    for (const double closure : {-2e-5, 5e-5, 2e-4, 4e-4, 1.5 * kMm, 3.0 * kMm}) {
+      constexpr int kIntervals = 20000;
+      const double h = closure / kIntervals;
+      double sum = 0.0;
+      for (int i = 0; i <= kIntervals; ++i)
+        sum += (i == 0 || i == kIntervals ? 1.0 : (i % 2 == 1 ? 4.0 : 2.0)) * normal_stress(p, i * h);
+      const double integral = sum * h / 3.0;
+      EXPECT_NEAR(normal_energy(p, closure), integral, 1e-6 * std::fabs(integral)) << def.kn << " " << closure;
+    }
+  }
+}
+
 TEST(JointLaw, RejectsEmptyName) {
   JointMaterialDef def = linear_def();
   def.name.clear();

@@ -37,6 +37,7 @@ struct Face {
   std::vector<ContactEdge> edges = std::vector<ContactEdge>(1);
   JointParams joint;
   Contact contact;
+  ContactLoss lost;  // what it dissipated, all steps
 
   explicit Face(const JointMaterialDef& def) : joint(joint_params(def)) {
     edges[0].a = 0;
@@ -53,7 +54,7 @@ struct Face {
     const double fx0 = contact.fx, fy0 = contact.fy;
     v[4] = dx, v[5] = dy;
     u[4] += dx, u[5] += dy;
-    contact_force(contact, edges.data(), joint, origin.data(), u.data(), v.data(), 1.0);
+    contact_force(contact, edges.data(), joint, origin.data(), u.data(), v.data(), 1.0, lost);
     return -0.5 * ((fx0 + contact.fx) * dx + (fy0 + contact.fy) * dy);  // against its force
   }
 };
@@ -71,6 +72,25 @@ TEST(SofteningBond, OpeningTakesTheFractureEnergyTimesTheLength) {
   EXPECT_FALSE(f.contact.intact);
   EXPECT_EQ(f.contact.fy, 0.0);
   EXPECT_EQ(f.contact.state, ContactState::open);
+}
+
+// The work done on the contact is what it stores (its energy as it stands) plus what it
+// dissipated, at every step of opening to half its strength, closing half-way and opening again.
+TEST(SofteningBond, TheWorkDoneOnItIsWhatItStoresPlusWhatItDissipated) {
+  Face f(bonded(50.0, 0.0));
+  double work = 0.0;
+  const auto balance = [&] {
+    const ContactEnergy e = contact_energy(f.contact, f.joint);
+    return work - (e.normal + e.shear + f.lost.slip + f.lost.bond);
+  };
+  for (int i = 0; i < 5500; ++i) work += f.move(0.0, 1e-7);
+  EXPECT_NEAR(balance(), 0.0, 1e-4 * 50.0 * kLength);
+  EXPECT_GT(f.lost.bond, 0.0);
+  for (int i = 0; i < 2750; ++i) work += f.move(0.0, -1e-7);
+  EXPECT_NEAR(balance(), 0.0, 1e-4 * 50.0 * kLength);
+  for (int i = 0; i < 8000; ++i) work += f.move(0.0, 1e-7);  // on past the loss: all dissipated
+  EXPECT_NEAR(balance(), 0.0, 1e-4 * 50.0 * kLength);
+  EXPECT_NEAR(f.lost.bond, 50.0 * kLength, 1e-3 * 50.0 * kLength);
 }
 
 TEST(SofteningBond, HalfWayItUnloadsTowardsZeroOpeningAndReloadsAlongTheSameLine) {
@@ -95,6 +115,16 @@ TEST(SofteningBond, SlipTakesTheShearFractureEnergyTimesTheLength) {
   EXPECT_NEAR(work, energy * kLength, 1e-3 * energy * kLength);
   EXPECT_FALSE(f.contact.intact);
   EXPECT_NEAR(f.contact.fs, 0.0, 1e-9);  // no normal stress, no residual cohesion
+}
+
+// Pressed and slipping, the shear spring's work less what it stores is the slip's dissipation.
+TEST(SofteningBond, SlippingTheWorkDoneOnItIsWhatItStoresPlusWhatItDissipated) {
+  Face f(bonded(0.0, 500.0));
+  double work = f.move(0.0, -1e-4);  // pressed: 0.1 MPa
+  for (int i = 0; i < 9000; ++i) work += f.move(-1e-6, 0.0);
+  const ContactEnergy e = contact_energy(f.contact, f.joint);
+  EXPECT_NEAR(work, e.normal + e.shear + f.lost.slip + f.lost.bond, 1e-4 * std::fabs(work));
+  EXPECT_GT(f.lost.slip, 0.0);
 }
 
 TEST(SofteningBond, PressedItsFrictionHoldsAtThePeakWhileTheCohesionGoesThenTheResidual) {

@@ -15,12 +15,21 @@
 --     cohesion kept after slip (residual_cohesion = cohesion), 1.05 c_crit is stable, 0.95 c_crit
 --     slides, 0.5 c_crit slides at the closed-form rate within 1 %; with the default brittle
 --     cohesion (residual zero), 0.95 c_crit fails and slides as with no cohesion, within 1 %.
--- The slow cases use a rigid-like block: flat (2 m x 0.02 m, density raised to keep the mass)
--- on joints 100 x softer (kn = ks = 0.1 GPa/m). A tall elastic block on stiff joints that slides
--- slowly rocks, and with no damping the rocking does not die out: it reverses the slip at the
--- heel and the toe now and then and the block slides too fast (steady sliding of elastic bodies
--- with Coulomb friction is unstable; measured: phi = 29.9 with the tall block slides 0.3 m in
--- 2 s instead of 0.04 m, with any time step). The fast cases slide faster than the rocking.
+--   * threshold for any shape and joint stiffness (issue 60, acceptance 2): blocks 2 m wide and
+--     0.04, 0.2 and 2 m high (height / width 0.02 to 1) on joints of 0.1, 1 and 10 GPa/m, with
+--     phi = 30.1 on the 30 deg slope, settled at that friction: each stays put (displacement
+--     over 2 s below 10 x the elastic shear-spring value).
+-- The slow sliding cases use a rigid-like block: flat (2 m x 0.02 m, density raised to keep the
+-- mass) on joints 100 x softer (kn = ks = 0.1 GPa/m). An elastic block that slides slowly with
+-- no damping slides too fast: phi = 29.9 with the 2 m x 1 m block slides about 0.38 m in 2 s
+-- instead of 0.04 m (printed here), 0.35 m with half the time step, 1.3 m with zones of an
+-- eighth of the size. Its energy balance closes (energy_balance.lua): gravity pays. Sliding with
+-- Coulomb friction couples the block's normal and tangential vibrations (the friction force
+-- follows the normal force), which grow while it slides; a block whose normal force swings by
+-- more than the friction's small margin over the slope slips while it is low and sticks while it
+-- is high. Undamped sliding of elastic bodies on Coulomb friction is unstable, the more so the
+-- finer the mesh (Martins, Oden and Simoes 1990; Adams 1995). The fast cases slide faster than
+-- the vibration grows.
 local check = require "edem.check"
 
 local g, rho, kn, ks = 9.81, 2650, 1e10, 1e10
@@ -116,6 +125,18 @@ end
 local flat, soft = 0.02, 1e8
 local samples = run_case{ theta = 30, phi = 30.1, seconds = 2.0 }
 check.report("theta = 30, phi = 30.1: stable (1 = yes)", stable(samples), 1, 0, { absolute = true })
+-- At the threshold, whatever the shape and the joint stiffness, settled at its own friction.
+for _, height in ipairs({ 0.04, 0.2, 2.0 }) do
+  for _, stiffness in ipairs({ 1e8, 1e9, 1e10 }) do
+    samples = run_case{ theta = 30, phi = 30.1, height = height, kn = stiffness, seconds = 2.0 }
+    check.report(("theta = 30, phi = 30.1, %g m high, kn = %g GPa/m: stable (1 = yes)"):format(
+      height, stiffness / 1e9), stable(samples, stiffness), 1, 0, { absolute = true })
+  end
+end
+-- The 2 m x 1 m elastic block sliding slowly (see the header): printed, not checked.
+samples = run_case{ theta = 30, phi = 29.9, settle_friction = 30.1, seconds = 2.0 }
+print(("  the 2 m x 1 m block at phi = 29.9 (settled at 30.1) slid %.4g m by 2 s; a rigid block %.4g m"):format(
+  moved(samples, 2.0), acceleration(30, 29.9) * 2.0))
 samples = run_case{ theta = 30, phi = 29.9, settle_friction = 89, height = flat, kn = soft, seconds = 2.0 }
 print(("  slid %.4g m by 2 s, a t^2 / 2 = %.4g m"):format(moved(samples, 2.0), acceleration(30, 29.9) * 2.0))
 check.report("theta = 30, phi = 29.9: acceleration [m/s2]", fit_acceleration(samples, 0.2, 2.0),

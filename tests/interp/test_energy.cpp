@@ -1,0 +1,103 @@
+// energy(): the energy balance from a script; its terms as histories; what commands between
+// cycles change (reset{}, excavate{}) booked as theirs; the same bits on any thread count.
+#include <lua.hpp>
+
+#include "interp_test.hpp"
+
+namespace edem::test {
+namespace {
+
+// Two blocks on a fixed base, the upper one falling onto it under gravity, in dynamic mode.
+const char* kDrop = R"(
+  block{ x = {0, 1}, y = {0, 1} }
+  block{ x = {0, 1}, y = {1.05, 2.05} }
+  zone{ edge = 0.25 }
+  material{ "rock", density = 2600, young = 10e9, poisson = 0.25 }
+  assign{ material = "rock" }
+  joint_material{ "j", kn = 1e10, ks = 1e10, friction = 30 }
+  jassign{ material = "j" }
+  boundary{ side = "bottom", fix = "xy" }
+  gravity{ 0, -9.81 }
+  set{ mode = "dynamic", damping = "none" }
+)";
+
+TEST(Energy, BeforeAnyCycleEveryTermIsZero) {
+  Interpreter interpreter({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+  expect_runs(interpreter, std::string(kDrop) + R"(
+    local e = energy()
+    for k, v in pairs(e) do assert(v == 0, k .. " = " .. v) end
+  )");
+}
+
+TEST(Energy, AFallingBlockBalancesAndItsTermsAreHistories) {
+  Interpreter interpreter({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+  expect_runs(interpreter, std::string(kDrop) + R"(
+    history{ "energy.kinetic", every = 10 }
+    history{ "energy.gravity", every = 10 }
+    history{ "energy.error", every = 10 }
+    while info().time < 0.15 do cycle(100) end  -- landed at 0.1 s, bouncing back up
+    local e = energy()
+    assert(e.largest > 300, "largest term " .. e.largest .. " J/m")
+    assert(math.abs(e.relative_error) < 1e-2, "error " .. e.relative_error)
+    assert(e.largest >= e.gravity and math.abs(e.contact_error + e.zone_error + e.bolt_error - e.error) < 1e-9 * e.largest)
+    local csv = os.tmpname()
+    history_write(csv)
+    local header, last
+    for line in io.lines(csv) do header = header or line; last = line end
+    os.remove(csv)
+    assert(header == "cycle,energy.kinetic [J/m],energy.gravity [J/m],energy.error [J/m]", header)
+    local v = {}
+    for field in last:gmatch("[^,]+") do v[#v + 1] = tonumber(field) end
+    assert(v[1] == info().cycle and v[2] == e.kinetic and v[3] == e.gravity and v[4] == e.error, last)
+  )");
+}
+
+TEST(Energy, ResetVelocityIsACommandsChangeAndExcavationTakesTheRockAway) {
+  Interpreter interpreter({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+  expect_runs(interpreter, std::string(kDrop) + R"(
+    cycle(400)
+    local moving = energy()
+    assert(moving.kinetic > 0)
+    reset{ "velocity" }
+    local e = energy()
+    -- the kinetic energy the reset took is the commands', not an error
+    assert(math.abs(e.commands + moving.kinetic) < 1e-9 * moving.kinetic, e.commands .. " " .. moving.kinetic)
+    assert(math.abs(e.error - moving.error) < 1e-9 * moving.largest, e.error .. " " .. moving.error)
+    cycle(100)
+    local before = energy()
+    excavate{ block = 2 }  -- mucked out
+    local dug = energy()
+    assert(dug.excavated > 0, "excavated " .. dug.excavated)
+    assert(math.abs(dug.error - before.error) < 1e-9 * before.largest, dug.error .. " " .. before.error)
+    cycle(100)
+    assert(math.abs(energy().relative_error) < 1e-2)
+  )");
+}
+
+TEST(Energy, ResetFromACallbackIsRefused) {
+  Interpreter interpreter({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+  const std::string error = error_of(interpreter, std::string(kDrop) + R"(
+    every(10, function() energy{ reset = true } end)
+    cycle(20)
+  )");
+  EXPECT_TRUE(contains(error, "energy{ reset = true } cannot be given while cycling"));
+}
+
+TEST(Energy, TheSameBitsOnAnyThreadCount) {
+  std::string dumps[2];
+  for (int threads : {1, 2}) {
+    Interpreter interpreter({.quiet = true, .threads = threads, .stdlib_dirs = {}});
+    expect_runs(interpreter, std::string(kDrop) + R"(
+      cycle(3000)
+      local e, out = energy(), {}
+      for _, k in ipairs({"kinetic", "strain", "contact", "gravity", "slip", "error"}) do out[#out + 1] = ("%a"):format(e[k]) end
+      dump = table.concat(out, " ")
+    )");
+    lua_getglobal(interpreter.state(), "dump");
+    dumps[threads - 1] = lua_tostring(interpreter.state(), -1);
+  }
+  EXPECT_EQ(dumps[0], dumps[1]);
+}
+
+}  // namespace
+}  // namespace edem::test
