@@ -80,6 +80,7 @@ int run_zone(lua_State*, Context& context, const Args& args) {
   def.growth = args.number("growth");
   if (args.has("near")) def.near = args.get<std::vector<RegionRef>>("near");
   if (args.has("region")) def.region = args.get<RegionRef>("region");
+  def.sliver = args.number("sliver");
   context.model().zone(def);
   return 0;
 }
@@ -196,6 +197,10 @@ const Command& zone_command() {
                "where zones are finest: region names or polygons", "uniform size"},
               {"region", Type::region, "", any_value, kOptional,
                "zone only the blocks in this region", "all blocks"},
+              {"sliver", Type::number, "-", between(0, 0.5), "0.1",
+               "no block edge shorter than this fraction of the zone edge there: cuts that would make one "
+               "are bent together (info().snapped counts them, info().shortest_edge measures what is left); "
+               "0: only model{ tolerance }"},
           },
       .run = run_zone,
       .usage = R"(zone{ edge = 1.5, far = 10, near = "stage1" })",

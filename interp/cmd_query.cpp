@@ -32,6 +32,9 @@ int run_info(lua_State* L, Context& context, const Args&) {
   set_field(L, "dropped_cuts", info.dropped_cuts);
   set_field(L, "cuts_left_out", info.cuts_left_out);
   set_field(L, "cuts_cut_back", info.cuts_cut_back);
+  set_field(L, "snapped", info.snapped);
+  set_field(L, "slivers_kept", info.slivers_kept);
+  set_field(L, "shortest_edge", info.shortest_edge);
   set_field(L, "regions", info.regions);
   set_field(L, "joint_sets", info.joint_sets);
   set_field(L, "crack_seeds", info.crack_seeds);
@@ -222,6 +225,7 @@ void push_contact(lua_State* L, const Model& model, size_t index) {
   set_field(L, "sn", c.length > 0.0 ? c.fn / c.length : 0.0);
   set_field(L, "tau", c.length > 0.0 ? c.fs / c.length : 0.0);
   set_field(L, "un", c.un);
+  set_field(L, "overlap", c.overlap);
   set_field(L, "us", c.us);
   set_field(L, "slip", c.slip);
   set_field(L, "state", c.state);
@@ -247,6 +251,19 @@ int next_moved_block(lua_State* L) {
   };
   const auto count = [](const Model& m) { return m.blocks().blocks.size(); };
   return iterator_step(L, "moved_blocks", count, moved, push_block);
+}
+
+// loose_blocks(): upvalue 2 is a table whose keys are the ids (1-based) of the blocks found loose
+// when the iterator was made.
+int next_loose_block(lua_State* L) {
+  const auto loose = [](lua_State* state, const Model&, size_t block) {
+    lua_rawgeti(state, lua_upvalueindex(2), static_cast<lua_Integer>(block + 1));
+    const bool found = lua_toboolean(state, -1);
+    lua_pop(state, 1);
+    return found;
+  };
+  const auto count = [](const Model& m) { return m.blocks().blocks.size(); };
+  return iterator_step(L, "loose_blocks", count, loose, push_block);
 }
 
 int next_zone(lua_State* L) {
@@ -322,6 +339,18 @@ int run_moved_blocks(lua_State* L, Context&, const Args& args) {
   return 1;
 }
 
+int run_loose_blocks(lua_State* L, Context& context, const Args& args) {
+  const std::vector<int> loose = context.model().loose_blocks(args.has("speed") ? args.number("speed") : 0.0);
+  lua_pushinteger(L, 0);
+  lua_createtable(L, 0, static_cast<int>(loose.size()));
+  for (const int block : loose) {
+    lua_pushboolean(L, 1);
+    lua_rawseti(L, -2, static_cast<lua_Integer>(block + 1));
+  }
+  lua_pushcclosure(L, next_loose_block, 2);
+  return 1;
+}
+
 int run_zones(lua_State* L, Context&, const Args&) {
   lua_pushinteger(L, 0);
   lua_pushcclosure(L, next_zone, 1);
@@ -340,7 +369,11 @@ const Command& info_command() {
           "a table: blocks, zones, gridpoints, joint_edges, dropped_cuts, cuts_left_out (pieces of "
           "crackseed{ auto }'s cuts, or of its groups' outlines where no cut was left to give way, left "
           "out where no bending of the cuts kept them the model's tolerance apart, or near where "
-          "joints they had bent kept coming closer), cuts_cut_back (its cuts cut back from a corner sharper than its min_angle), regions, "
+          "joints they had bent kept coming closer), cuts_cut_back (its cuts cut back from a corner sharper than its min_angle), "
+          "snapped (features smaller than the tolerance, zone{ sliver } of the zones there, that cuts were bent "
+          "together to remove), slivers_kept (spots where required cuts crossing at a shallow angle "
+          "could not be bent clear of it: their slivers kept), shortest_edge (the shortest block edge over the "
+          "zone edge there), regions, "
           "joint_sets, crack_seeds, sections (potential-crack sections), intact_sections, "
           "cracks, shear_cracks, tension_cracks, stage (excavations so far), title, cycle (cycles run so far), time (model time [s]; static mode: "
           "the cycle count), step (time step [s]), ratio (last unbalanced-force ratio), "
@@ -420,6 +453,27 @@ const Command& moved_blocks_command() {
       .returns = "an iterator over the blocks not excavated whose max_displacement is greater than "
                  "the distance, in id order; each block a table as `blocks()` gives",
       .usage = "for b in moved_blocks(1.0) do excavate{ block = b.id } end",
+  };
+  return command;
+}
+
+const Command& loose_blocks_command() {
+  static const Command command{
+      .name = "loose_blocks",
+      .help = "Iterates over the blocks that have come loose: still in place, but (with the blocks glued "
+              "to them) neither held by a boundary nor pressed against another block by any contact, "
+              "or moving faster than `speed`: what mucking out takes. Under soft joints rock still in "
+              "place can move a metre; this asks whether it is held.",
+      .keys =
+          {
+              {"speed", Type::number, "m/s", ge(0), kOptional,
+               "also loose: a block whose gridpoints' mean speed is above this (static mode: m per cycle)",
+               "none: only blocks held by nothing"},
+          },
+      .run = run_loose_blocks,
+      .returns = "an iterator over those blocks, in id order; each block a table as `blocks()` gives",
+      .usage = "for b in loose_blocks{ speed = 1e-4 } do excavate{ block = b.id } end",
+      .bare_call = true,
   };
   return command;
 }
@@ -510,7 +564,9 @@ const Command& contacts_command() {
           "of the other block), fn, fs (normal force, compression negative, and shear force "
           "[N/m]), sn, "
           "tau (the same per length [Pa]), un (normal displacement, opening positive, "
-          "including the closure the in-situ stress gives and the dilation [m]), us (shear displacement since it "
+          "including the closure the in-situ stress gives and the dilation [m]), overlap (how far the "
+          "gridpoint is inside the edge's block, what the overlap watchdog measures: its closure less "
+          "a given prestress's [m]), us (shear displacement since it "
           "formed [m]), slip (plastic shear, accumulated [m]), state (\"bonded\", "
           "\"elastic\", \"slip\", \"open\"), kind (\"joint\", \"crack\"), material, "
           "block and other (the gridpoint's and the edge's block ids)",

@@ -41,7 +41,7 @@ Damping damping_of(const std::string& name) {
 
 int run_set(lua_State*, Context& context, const Args& args) {
   if (args.values.empty())
-    fail("nothing to set: give mode, damping, local_damping, step, fraction or mixed");
+    fail("nothing to set: give mode, damping, local_damping, step, fraction, mixed or overlap");
   Model& model = context.model();
   SolverSettings settings = model.solver_settings();
   if (args.has("mode")) {
@@ -55,6 +55,7 @@ int run_set(lua_State*, Context& context, const Args& args) {
   if (args.has("step")) settings.step = args.number("step");
   if (args.has("fraction")) settings.step_fraction = args.number("fraction");
   if (args.has("mixed")) settings.mixed = args.boolean("mixed");
+  if (args.has("overlap")) settings.overlap = args.number("overlap");
   model.set_solver(settings);
   return 0;
 }
@@ -168,6 +169,11 @@ const Command& set_command() {
                "plain triangles stay nearer the closed form for non-associated rock "
                "(Salencon, psi = 0), measured in engine/solver/cycle.cpp",
                "unchanged (initially false)"},
+              {"overlap", Type::number, "m", ge(0), kOptional,
+               "the overlap watchdog's limit: a gridpoint further than this inside another block (beyond "
+               "its contact's prestress) stops the run; 0: half the median length of the blocks' "
+               "touchable edges, UDEC's rounding of a kind",
+               "unchanged (initially 0)"},
           },
       .run = run_set,
       .usage = "set{ mode = \"dynamic\" }\nset{ damping = \"local\", local_damping = 0.8 }",

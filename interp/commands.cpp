@@ -47,6 +47,7 @@ const std::vector<const Command*>& commands() {
       &energy_command(),         //
       &blocks_command(),         //
       &moved_blocks_command(),   //
+      &loose_blocks_command(),   //
       &zones_command(),          //
       &gridpoints_command(),     //
       &gp_near_command(),        //

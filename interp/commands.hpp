@@ -42,6 +42,7 @@ const Command& info_command();
 const Command& energy_command();
 const Command& blocks_command();
 const Command& moved_blocks_command();
+const Command& loose_blocks_command();
 const Command& zones_command();
 const Command& gridpoints_command();
 const Command& gp_near_command();

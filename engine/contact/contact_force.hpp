@@ -132,7 +132,11 @@ struct ContactLoss {
     return share > 0.0 ? -gap : 0.0;
   }
   const double ks = p.ks * length;
-  const double trial = c.fs - ks * dus;
+  // Its length changes past a corner or as a tip sinks: it keeps its shear stress, as its normal
+  // stress keeps to its closure (the energy the change gives or takes is the method's, and the
+  // energy balance shows it).
+  const double fs_start = length_before > 0.0 ? fs_before * (length / length_before) : 0.0;
+  const double trial = fs_start - ks * dus;
   const double cohesion =
       p.softens ? p.residual_cohesion + (p.cohesion - p.residual_cohesion) * left : p.cohesion;
   const double limit =
@@ -143,7 +147,7 @@ struct ContactLoss {
     const double plastic = (std::fabs(trial) - limit) / ks;
     c.fs = std::copysign(limit, trial);
     // The shear spring's mid-step work, less what it keeps.
-    lost.slip += -0.5 * (fs_before + c.fs) * dus - (c.fs * c.fs - fs_before * fs_before) / (2.0 * ks);
+    lost.slip += -0.5 * (fs_start + c.fs) * dus - (c.fs * c.fs - fs_start * fs_start) / (2.0 * ks);
     c.slip += plastic;
     if (sn > 0.0) c.dilation += p.tan_dilation * plastic;
     c.intact = c.intact && p.softens && bond_left(p, c.opened, c.slip) > 0.0;

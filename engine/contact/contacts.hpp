@@ -25,7 +25,12 @@
 // of them when most of the model is due, or the list is no longer current. Right after a full
 // search nothing is due until some block has moved a quarter of it, as when only full searches
 // were done: a region that moves as a whole is not searched twice as often. The state of a
-// contact that persists is carried over, by its gridpoint and the other block. Finding only
+// contact that persists is carried over, by its gridpoint and the other block, as stresses: its
+// length found again, its closure is kept and its shear force scaled with the length (within its
+// strength). A contact made where the same two blocks already press together nearby, along the
+// same joint, takes their faces' state: their closure at zero gap and their shear traction
+// (detect.cpp, LoadedFaces); a gridpoint sliding past a joint crossing onto the next block, or a
+// face sliding onto more of its neighbour, carries the joint's stress at once. Finding only
 // where things move keeps a few falling blocks from costing a search of the whole model every
 // few cycles. Between rebuilds the edge of a contact is fixed; a gridpoint
 // that slides past the edge's end is held at the end, at most an eighth of an edge away. At a
@@ -68,6 +73,7 @@ struct ContactBoundary {
   std::vector<int> block_first, node_blocks;
   std::vector<double> reach;  // per node: half its shortest touchable edge [m]
   double min_reach = 0.0;     // [m]
+  double median_edge = 0.0;   // the median length of the touchable edges [m]
   int touchable_blocks = 0;   // blocks with a touchable edge: below two, no contacts ever
 };
 
@@ -81,7 +87,7 @@ struct Contact {
   int material = -1;   // joint material
   double length = 0.0; // [m]
   double wedge = 0.0;  // a tip's length per unit overlap (0: not a tip) [-]
-  double limit = 0.0;  // overlap beyond which the watchdog stops the run: the gridpoint's reach [m]
+  double limit = 0.0;  // the gridpoint's reach: how deep a tip's length grows, where its corners fade [m]
   double t = 0.0;      // where the gridpoint projects on the edge, 0 at a, 1 at b
   double share = 1.0;  // of `length` still over the edge's block (near or past a corner: less) [-]
   double closure0 = 0.0;  // closure at zero gap: the in-situ prestress [m]

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <unordered_map>
 
 #include "contact/contact_force.hpp"
 #include "contact/edge_choice.hpp"
@@ -123,23 +124,23 @@ struct Found {
   bool cracked = false;  // the traction is a fresh crack's (its section broke since the last)
 };
 
-// The nearest touchable edge of `block` within `reach` of node k's gridpoint, or nothing:
+// The nearest touchable edge of `block` within `search` of node k's gridpoint, or nothing:
 // among the edges about as near as the nearest (within a tenth of the reach), the one that
 // EdgeChoice picks (edge_choice.hpp), given `held`, the edge the gridpoint's contact with this
 // block had (-1: none). Matching gridpoints on the two faces of a joint (zoning.hpp) sit
 // exactly at each other's corners.
 std::optional<Found> nearest_edge(const Mechanics& m, int node, Vec2 p, Vec2 own_normal, int block,
-                                  double reach, int held) {
+                                  double reach, double search, int held) {
   const ContactBoundary& cb = m.faces;
   const int first = cb.block_first_edge[static_cast<size_t>(block)];
   const int last = cb.block_first_edge[static_cast<size_t>(block) + 1];
-  double nearest = reach;
+  double nearest = search;
   for (int e = first; e < last; ++e) {
     const ContactEdge& edge = cb.edges[static_cast<size_t>(e)];
     if (!edge.touchable || edge.a == node || edge.b == node) continue;
     nearest = std::min(nearest, distance_to_segment(p, at(m, edge.a), at(m, edge.b)));
   }
-  const double about = std::min(reach, nearest + 0.1 * reach);
+  const double about = std::min(search, nearest + 0.1 * reach);
   EdgeChoice choice{.held = held, .own_size = norm(own_normal)};
   for (int e = first; e < last; ++e) {
     const ContactEdge& edge = cb.edges[static_cast<size_t>(e)];
@@ -337,6 +338,8 @@ std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t
   const int node = cb.nodes[k];
   const Vec2 p = at(m, node);
   const double reach = cb.reach[k];
+  // Found as deep as the watchdog lets a gridpoint sink, whatever the length of its own edges.
+  const double search = std::max(reach, overlap_limit(m));
   const int* own_first = cb.node_blocks.data() + cb.block_first[k];
   const int* own_last = cb.node_blocks.data() + cb.block_first[k + 1];
   Vec2 own_normal;
@@ -351,23 +354,34 @@ std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t
   if (!alive) return found;
   for (const int block : grid.near(p)) {
     if (std::find(own_first, own_last, block) != own_last) continue;
-    if (!grid.boxes[static_cast<size_t>(block)].contains(p, reach)) continue;
+    if (!grid.boxes[static_cast<size_t>(block)].contains(p, search)) continue;
     const int held = held_edge(m.contacts, node, block);
-    if (auto f = nearest_edge(m, node, p, own_normal, block, reach, held)) found.push_back(*f);
+    if (auto f = nearest_edge(m, node, p, own_normal, block, reach, search, held)) found.push_back(*f);
   }
   if (found.empty()) return found;
-  // Each half of an adjacent edge goes to the block its quarter point is nearest to.
+  // Each half of an adjacent edge goes to the block its quarter point is nearest to: to the
+  // found edge or those beside it along its block's outline. (A gridpoint where a joint ends on
+  // another block's face is as near to the face's piece on either side of it; either may have
+  // been found, and its half-edge lying over the other piece is that block's all the same.)
+  const auto near_face = [&](Vec2 q, const Found& f) {
+    const ContactEdge& target = cb.edges[static_cast<size_t>(f.edge)];
+    double d = distance_to_segment(q, at(m, target.a), at(m, target.b));
+    for (const int beside : {target.prev, target.next}) {
+      const ContactEdge& b = cb.edges[static_cast<size_t>(beside)];
+      if (b.touchable) d = std::min(d, distance_to_segment(q, at(m, b.a), at(m, b.b)));
+    }
+    return d;
+  };
   for (int i = cb.edge_first[k]; i < cb.edge_first[k + 1]; ++i) {
     const ContactEdge& e = cb.edges[static_cast<size_t>(cb.node_edges[static_cast<size_t>(i)])];
     if (!m.block_live[static_cast<size_t>(e.block)]) continue;
     const Vec2 far_end = at(m, e.a == node ? e.b : e.a);
     const double half = 0.5 * norm(far_end - p);
     const Vec2 quarter = p + 0.25 * (far_end - p);
-    double best = reach + 0.5 * half;
+    double best = search + 0.5 * half;
     Found* to = nullptr;
     for (Found& f : found) {
-      const ContactEdge& target = cb.edges[static_cast<size_t>(f.edge)];
-      const double d = distance_to_segment(quarter, at(m, target.a), at(m, target.b));
+      const double d = near_face(quarter, f);
       if (d < best) best = d, to = &f;
     }
     if (!to) continue;
@@ -396,14 +410,15 @@ std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t
   return found;
 }
 
+}  // namespace
+
 std::string describe(const ContactEdge& e) {
   if (e.origin.kind == EdgeKind::joint) return fmt::format("a joint of set {}", e.origin.set + 1);
   if (e.origin.kind == EdgeKind::crack) return "a crack";
+  if (e.origin.kind == EdgeKind::potential) return "a potential crack";
   if (e.origin.kind == EdgeKind::boundary) return "the outline of a block{}";
   return "a region outline";
 }
-
-}  // namespace
 
 std::string_view to_string(ContactState state) {
   switch (state) {
@@ -485,6 +500,7 @@ ContactBoundary contact_boundary(const Mesh& mesh, const std::vector<char>& edge
     cb.min_reach = std::min(cb.min_reach, 0.5 * shortest);
   }
   if (cb.nodes.empty()) cb.min_reach = 0.0;
+  cb.median_edge = median_edge_length(cb, position);
   for (size_t block = 0; block + 1 < cb.block_first_edge.size(); ++block)
     for (int e = cb.block_first_edge[block]; e < cb.block_first_edge[block + 1]; ++e)
       if (cb.edges[static_cast<size_t>(e)].touchable) {
@@ -522,9 +538,94 @@ void assign_joint_materials(Mechanics& m) {
 
 namespace {
 
-double largest_reach(const ContactBoundary& cb) {
-  double largest = 0.0;
-  for (const double r : cb.reach) largest = std::max(largest, r);
+// How far a pressed contact between the same two blocks may be from a new one's gridpoint, in
+// the new one's reaches, to lend it the faces' state (LoadedFaces).
+constexpr double kLendingReaches = 4.0;
+// Faces along the same joint: their edges' normals within 20 degrees, parallel or opposed.
+const double kSameJoint = std::cos(20.0 * M_PI / 180.0);
+
+// The contacts pressed together before a detection, by the pair of blocks they join: a contact
+// made between two blocks where the same two already press on each other nearby takes their
+// faces' state instead of starting from nothing (inherit_faces). A gridpoint that slides past a
+// joint crossing onto the next block's face, or a face that slides onto more of its neighbour,
+// then carries the joint's load at once; made with no prestress it would carry nothing until it
+// had sunk in by the joint's closure (centimetres under soft joints), and the gridpoints around
+// would carry its share meanwhile.
+class LoadedFaces {
+ public:
+  explicit LoadedFaces(const std::vector<Contact>& list) : list_(list) {}
+
+  // The pressed contact between blocks `a` and `b` (either way round) whose gridpoint is nearest
+  // to `p` within `within`, along the same joint as the edge with outward normal `n`, or nullptr.
+  const Contact* nearest(const Mechanics& m, int a, int b, Vec2 p, Vec2 n, double within) {
+    if (!built_) build();
+    const auto found = by_pair_.find(key(a, b));
+    if (found == by_pair_.end()) return nullptr;
+    const Contact* best = nullptr;
+    double best_distance = within;
+    for (const int i : found->second) {
+      const Contact& c = list_[static_cast<size_t>(i)];
+      const double d = norm(at(m, c.node) - p);
+      if (!(d < best_distance)) continue;
+      const ContactEdge& e = m.faces.edges[static_cast<size_t>(c.edge)];
+      if (!(std::fabs(dot(outward(at(m, e.a), at(m, e.b)), n)) > kSameJoint)) continue;
+      best = &c;
+      best_distance = d;
+    }
+    return best;
+  }
+
+ private:
+  static std::uint64_t key(int a, int b) {
+    const auto lo = static_cast<std::uint64_t>(std::min(a, b)), hi = static_cast<std::uint64_t>(std::max(a, b));
+    return lo << 32 | hi;
+  }
+  void build() {
+    built_ = true;
+    for (size_t i = 0; i < list_.size(); ++i) {
+      const Contact& c = list_[i];
+      if (c.state != ContactState::open && c.sn > 0.0) by_pair_[key(c.block, c.other)].push_back(static_cast<int>(i));
+    }
+  }
+  const std::vector<Contact>& list_;
+  bool built_ = false;
+  std::unordered_map<std::uint64_t, std::vector<int>> by_pair_;
+};
+
+// What a contact's shear force can be at most over `length` [N/m]: Coulomb's limit at its closure
+// (a force carried over from a contact of another length, as a stress, keeps within it).
+double shear_strength(const Contact& c, const JointParams& p, double length) {
+  const double sn = c.closure > 0.0 ? normal_stress(p, c.closure) : 0.0;
+  const double strength = c.intact ? p.cohesion + p.tan_friction * sn : p.residual_cohesion + p.tan_residual_friction * sn;
+  return std::max(0.0, strength * length);
+}
+
+// A new contact `c` (its gridpoint at `gap` from its edge, whose direction is `s`) takes the
+// state of the faces `from` presses together: their closure at zero gap (the prestress they carry
+// beyond their real overlap: the new contact's own real overlap adds to it) and their shear
+// traction, turned round if `from` is seen from the other block.
+void inherit_faces(const Mechanics& m, Contact& c, const JointParams& p, const Contact& from, double gap, Vec2 s) {
+  const ContactEdge& e = m.faces.edges[static_cast<size_t>(from.edge)];
+  const Vec2 from_s = (1.0 / norm(at(m, e.b) - at(m, e.a))) * (at(m, e.b) - at(m, e.a));
+  const double from_length = from.share * carrying_length(from, last_overlap(from));
+  const double length = carrying_length(c, -gap);
+  if (!(from_length > 0.0) || !(length > 0.0)) return;
+  const double side = from.other == c.other ? 1.0 : -1.0;  // the same block's faces, or the other's
+  const Vec2 traction = (side * from.fs / from_length) * from_s;
+  c.closure0 = from.closure0 + from.dilation;
+  c.closure = c.closure0 - gap;
+  c.dilation = c.us = c.slip = c.opened = 0.0;
+  const bool pressed = c.closure > 0.0;
+  const double strength = shear_strength(c, p, length);
+  c.sn = pressed ? normal_stress(p, c.closure) : 0.0;
+  c.fs = pressed ? std::clamp(dot(traction, s) * length, -strength, strength) : 0.0;
+  c.state = pressed ? ContactState::elastic : ContactState::open;
+}
+
+// How far from a gridpoint its contacts are looked for, at most [m].
+double largest_reach(const Mechanics& m) {
+  double largest = overlap_limit(m);
+  for (const double r : m.faces.reach) largest = std::max(largest, r);
   return largest;
 }
 
@@ -553,6 +654,7 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
   std::vector<Contact> list;
   list.reserve(set.list.size());
   long late = 0;
+  LoadedFaces loaded(set.list);
   auto kept_from = set.list.cbegin();
   for (size_t k = 0; k < cb.nodes.size(); ++k) {
     if (!all && !redo[k]) {
@@ -579,6 +681,7 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
       if (c.material < 0)  // the gridpoint's own side may have one
         for (int i = cb.edge_first[k]; i < cb.edge_first[k + 1] && c.material < 0; ++i)
           c.material = cb.edges[static_cast<size_t>(cb.node_edges[static_cast<size_t>(i)])].material;
+      if (c.material < 0 && f.gap > 0.0) continue;  // within reach but apart: nothing to carry yet
       if (c.material < 0) {
         const Vec2 p = at(m, c.node);
         fail("blocks {} and {} touch at ({:.6g}, {:.6g}) along {}, which has no joint material: "
@@ -595,12 +698,17 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
         c.dilation = old->dilation;
         c.closure = old->closure;
         c.sn = old->sn;
-        c.fs = old->fs;
         c.us = old->us;
         c.slip = old->slip;
         c.state = old->state;
         c.intact = old->intact;
         c.opened = old->opened;
+        c.share = old->share;  // what its next cycle finds the length it had by
+        // Its length is found again from where its gridpoint's half-edges lie now: it keeps its
+        // stresses, the normal one by its closure, the shear one by scaling its force.
+        const double was = carrying_length(*old, last_overlap(*old)), now = carrying_length(c, -f.gap);
+        const double strength = shear_strength(c, p, now);
+        c.fs = was > 0.0 ? std::clamp(old->fs * (now / was), -strength, strength) : 0.0;
       } else {
         // Already pressed in, and nothing held this gridpoint back before: it went into the other
         // block unseen. (At a junction a gridpoint held by one block may turn to its neighbour:
@@ -621,7 +729,22 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
       // carries no tension; a cohesive one, bonded, takes it whole), on new contacts only: one
       // that was there keeps its own force for the part it had. insitu{} sets every contact's.
       // (A tip not yet pressed in, with none of its own length, has nothing to take it by.)
-      if (f.insitu && (with_insitu || !kept) && carrying_length(c, -f.gap) > 0.0) {
+      const bool given = f.insitu && (with_insitu || !kept) && carrying_length(c, -f.gap) > 0.0;
+      if (!kept && !given && !first) {
+        const Vec2 a = at(m, edge.a), b = at(m, edge.b);
+        const double within = kLendingReaches * cb.reach[k];
+        if (const Contact* from = loaded.nearest(m, c.block, c.other, at(m, c.node), f.normal, within)) {
+          inherit_faces(m, c, p, *from, f.gap, (1.0 / norm(b - a)) * (b - a));
+          // What it carries is the joint's, not made by the method: booked as given.
+          const ContactEnergy now = contact_energy(c, p);
+          m.energy.prestress += now.normal + now.shear;
+          if (m.energy.last_current) {
+            m.energy.last.normal += now.normal;
+            m.energy.last.shear += now.shear;
+          }
+        }
+      }
+      if (given) {
         const Vec2 a = at(m, edge.a), b = at(m, edge.b);
         const Vec2 s = (1.0 / norm(b - a)) * (b - a);
         const double gap = f.gap;
@@ -738,8 +861,23 @@ void mark_positions(Mechanics& m, const std::vector<char>& moved_block) {
 
 }  // namespace
 
+double median_edge_length(const ContactBoundary& cb, const std::vector<double>& position) {
+  std::vector<double> lengths;
+  for (const ContactEdge& e : cb.edges)
+    if (e.touchable)
+      lengths.push_back(std::hypot(position[2 * static_cast<size_t>(e.b)] - position[2 * static_cast<size_t>(e.a)],
+                                   position[2 * static_cast<size_t>(e.b) + 1] - position[2 * static_cast<size_t>(e.a) + 1]));
+  if (lengths.empty()) return 0.0;
+  std::nth_element(lengths.begin(), lengths.begin() + static_cast<long>(lengths.size() / 2), lengths.end());
+  return lengths[lengths.size() / 2];
+}
+
+double overlap_limit(const Mechanics& m) {
+  return m.settings.overlap > 0.0 ? m.settings.overlap : 0.5 * m.faces.median_edge;
+}
+
 void detect_contacts(Mechanics& m) {
-  find_contacts(m, block_grid(m, largest_reach(m.faces)), {});
+  find_contacts(m, block_grid(m, largest_reach(m)), {});
   mark_positions(m, {});
   m.contacts.partial = false;
 }
@@ -765,7 +903,7 @@ bool refresh_contacts(Mechanics& m, double ahead) {
     if (m.block_live[b] && moved[b] > limit) stale[b] = 1;
   // A node kept may have lain within its reach of a block that has moved since, by up to four
   // limits relatively: the blocks that near are found again too.
-  const double max_reach = largest_reach(cb);
+  const double max_reach = largest_reach(m);
   const BlockGrid grid = block_grid(m, max_reach);
   if (grid.cells.empty()) return false;
   std::vector<char> redo_block(moved.size(), 0);

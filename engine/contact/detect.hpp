@@ -18,6 +18,17 @@ ContactBoundary contact_boundary(const Mesh& mesh, const std::vector<char>& edge
 bool jassign_selects(const JassignDef& rule, const Polygon& region, const ContactEdge& e,
                      const std::vector<double>& position);
 
+// What made an edge, for messages: "a joint of set 2", "a crack", "a region outline", ...
+std::string describe(const ContactEdge& e);
+
+// The median length of the touchable edges, at the nodes' positions `position` [m] (0: none).
+double median_edge_length(const ContactBoundary& cb, const std::vector<double>& position);
+
+// The overlap watchdog's limit [m]: set{ overlap }, or half the median touchable edge.
+// Contacts are looked for at least this far from a gridpoint, so that one pressed in this deep
+// is still found.
+double overlap_limit(const Mechanics& m);
+
 // Gives every edge the joint material of the last jassign{} that selects it.
 void assign_joint_materials(Mechanics& m);
 

@@ -121,6 +121,7 @@ ContactView contact_view(const Mechanics& m, const ContactSet& set, int id) {
   view.fn = open ? 0.0 : -c.sn * view.length;
   view.fs = c.fs;
   view.un = c.dilation - c.closure;  // the faces' opening: dilation opens them at a given stress
+  view.overlap = last_overlap(c);
   view.us = c.us;
   view.slip = c.slip;
   view.state = std::string(to_string(c.state));

@@ -47,6 +47,8 @@ struct BlockSet {
   int dropped_cuts = 0;      // cut pieces that crossed no block and were dropped (as UDEC does)
   int joint_edges = 0;       // arrangement edges made by joints between two blocks
   int snapped_vertices = 0;  // cut vertices moved by at most the tolerance to avoid slivers
+  // Spots where required cuts could not be bent clear of a zone-size tolerance: slivers kept there.
+  int slivers_kept = 0;
   int cuts_left_out = 0;     // optional and last-resort cut pieces left out: no bending kept them the
                              // tolerance apart
   int cuts_cut_back = 0;     // optional cut pieces cut back from a corner sharper than their min_angle

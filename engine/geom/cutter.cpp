@@ -54,6 +54,7 @@ constexpr int kMaxSnapRounds = 12;
 constexpr int kMaxLeftOut = 200;  // optional pieces left out of one base before it fails all the same
 constexpr int kMaxRestarts = 4;   // fresh starts of one base with the optional cuts near a spot left out
 constexpr double kFirstRestartRadius = 8.0;  // [tolerances] the first restart's radius
+constexpr int kMaxKeptSpots = 100;  // spots of one base where slivers below the zone-size tolerance are kept
 
 // A polyline that goes into the arrangement: a base outline, a region outline (both
 // closed) or one (clipped) cut.
@@ -118,13 +119,19 @@ std::vector<std::pair<Point, Point>> clip_segment(const Point& a, const Point& b
   return inside;
 }
 
-// Lower kinds take precedence; a joint along a glued outline is a joint.
+// Lower kinds take precedence; a joint along a glued outline is a joint, and so is a potential
+// crack (a glued outline is intact rock, which the crack's bond stands for until it breaks; cuts
+// bent onto an outline to avoid a sliver keep their section).
 EdgeOrigin edge_origin(const Halfedge& h, const std::vector<Piece>& pieces) {
+  auto rank = [](const EdgeOrigin& o) {
+    if (o.kind == EdgeKind::region && o.glued) return static_cast<int>(EdgeKind::potential) + 1;
+    return static_cast<int>(o.kind);
+  };
   EdgeOrigin best;
   bool first = true;
   for (int id : h->curve().data()) {
     const EdgeOrigin& o = pieces[id].origin;
-    if (first || o.kind < best.kind || (o.kind == best.kind && o.source < best.source)) best = o;
+    if (first || rank(o) < rank(best) || (rank(o) == rank(best) && o.source < best.source)) best = o;
     first = false;
   }
   return best;
@@ -154,9 +161,8 @@ struct FaceRings {
 class BaseCutter {
  public:
   BaseCutter(const Polygon& base, int base_index, std::vector<Piece> cut_pieces,
-             const std::vector<Polygon>& regions, double tolerance)
-      : base_index_(base_index), regions_(regions), tolerance2_(tolerance * tolerance),
-        tolerance_(tolerance) {
+             const std::vector<Polygon>& regions, double tolerance, const std::function<double(Vec2)>& local)
+      : base_index_(base_index), regions_(regions), tolerance_(tolerance), local_(local) {
     Piece outline;
     for (Vec2 p : base) outline.points.push_back(to_point(p));
     outline.origin = {EdgeKind::boundary, -1, base_index, false};
@@ -211,8 +217,15 @@ class BaseCutter {
     fail("cannot resolve geometry features smaller than the tolerance ({:.3g} m) in block {}: "
          "near ({:.4g}, {:.4g}) {} keep coming closer than that after being bent together "
          "(cuts crossing at a shallow angle?); move the cuts apart or change "
-         "model{{tolerance=}}",
-         tolerance_, base_index_ + 1, last_fix_.x, last_fix_.y, describe_pieces(last_bent_));
+         "model{{tolerance=}} or zone{{ sliver = }}",
+         tolerance_at(last_fix_), base_index_ + 1, last_fix_.x, last_fix_.y, describe_pieces(last_bent_));
+  }
+
+  // The tolerance at p [m], and its square as an exact number.
+  double tolerance_at(Vec2 p) const { return local_ ? std::max(tolerance_, local_(p)) : tolerance_; }
+  Kernel::FT tolerance2_at(const Point& p) const {
+    const double t = tolerance_at(to_vec(p));
+    return Kernel::FT(t * t);
   }
 
  private:
@@ -367,7 +380,7 @@ class BaseCutter {
       if (CGAL::compare_distance_to_point(q, pts[i], pts[nearest_vertex]) == CGAL::SMALLER)
         nearest_vertex = i;
     if (pts[nearest_vertex] == q) return false;
-    if (CGAL::compare(CGAL::squared_distance(q, pts[nearest_vertex]), Kernel::FT(tolerance2_)) ==
+    if (CGAL::compare(CGAL::squared_distance(q, pts[nearest_vertex]), tolerance2_at(q)) ==
         CGAL::SMALLER) {
       pts[nearest_vertex] = q;
     } else {
@@ -395,7 +408,7 @@ class BaseCutter {
     // A nearby end of e: bring v's cuts to it (the two vertices become one).
     for (Vertex w : {e->source(), e->target()}) {
       if (!v_fixed && CGAL::compare(CGAL::squared_distance(p, w->point()),
-                                    Kernel::FT(tolerance2_)) == CGAL::SMALLER) {
+                                    tolerance2_at(p)) == CGAL::SMALLER) {
         bool changed = false;
         for (int id : cut_pieces_at(v)) changed |= bend(id, w->point());
         return changed;
@@ -445,10 +458,9 @@ class BaseCutter {
   // tolerance, and the last round checks everything afresh). One fix a round ran out of rounds
   // where a crackseed{} lays its cuts across the joints.
   int snap_small_features() {
-    const double slack = 4.0 * tolerance_;
     std::vector<Vec2> fixed_at;
     bent_in_round_.clear();
-    auto near_a_fix = [&](Vec2 p) {
+    auto near_a_fix = [&](Vec2 p, double slack) {
       return std::any_of(fixed_at.begin(), fixed_at.end(), [&](Vec2 q) {
         return std::abs(p.x - q.x) < 2.0 * slack && std::abs(p.y - q.y) < 2.0 * slack;
       });
@@ -459,7 +471,9 @@ class BaseCutter {
       for (const Halfedge& hv : edges) {
         const Vertex v = hv->source();
         const Vec2 pv = to_vec(v->point());
-        if (near_a_fix(pv)) continue;
+        const double tolerance = tolerance_at(pv), slack = 4.0 * tolerance;
+        const Kernel::FT tolerance2(tolerance * tolerance);
+        if (near_a_fix(pv, slack)) continue;
         for (const Halfedge& he : edges) {
           if (he->source() == v || he->target() == v) continue;
           // Cheap double-precision filter first.
@@ -468,7 +482,7 @@ class BaseCutter {
               pv.y < std::min(a.y, b.y) - slack || pv.y > std::max(a.y, b.y) + slack)
             continue;
           const Segment s(he->source()->point(), he->target()->point());
-          if (CGAL::compare(CGAL::squared_distance(v->point(), s), Kernel::FT(tolerance2_)) !=
+          if (CGAL::compare(CGAL::squared_distance(v->point(), s), tolerance2) !=
               CGAL::SMALLER)
             continue;
           std::vector<int> ids = cut_pieces_at(v);
@@ -671,8 +685,8 @@ class BaseCutter {
 
   int base_index_;
   const std::vector<Polygon>& regions_;
-  double tolerance2_;
   double tolerance_;
+  const std::function<double(Vec2)>& local_;
   Vec2 last_fix_{};             // where the last small feature was, for the error message
   std::vector<int> last_bent_;  // the pieces its fix bent
   std::vector<std::pair<int, Vec2>> bent_in_round_;  // the pieces the last round's fixes bent, and where
@@ -750,7 +764,7 @@ BlockSet cut_blocks(const CutInput& input) {
   for (size_t i = 0; i < input.bases.size(); ++i) {
     const Polygon base = counter_clockwise(input.bases[i]);
     Box box = bounding_box(base);
-    const double margin = 2.0 * input.tolerance;
+    const double margin = 2.0 * std::max(input.tolerance, input.largest_tolerance);
     box = {box.x0 - margin, box.x1 + margin, box.y0 - margin, box.y1 + margin};
     std::vector<Piece> near;
     for (size_t k = 0; k < pieces.size(); ++k)
@@ -758,14 +772,31 @@ BlockSet cut_blocks(const CutInput& input) {
     // Stuck with nothing left to give way, the required cuts there may be bent by optional ones
     // that were left out since: start again from the cuts as given, less the optional and
     // last-resort ones passing within a radius of the spot that grows with each try.
-    double radius = kFirstRestartRadius * input.tolerance;
+    // Where the cuts cannot be bent clear of a zone-size tolerance (required cuts crossing at a
+    // shallow angle), the model's own tolerance holds within a spot around it, and the slivers
+    // there are kept and counted.
+    std::vector<std::pair<Vec2, double>> kept_spots;
+    const std::function<double(Vec2)> local = !input.local_tolerance ? input.local_tolerance : [&](Vec2 p) {
+      for (const auto& [spot, r] : kept_spots)
+        if (norm(p - spot) <= r) return 0.0;
+      return input.local_tolerance(p);
+    };
+    double radius = 0.0;
     for (int restart = 0;; ++restart) {
-      BaseCutter cutter(base, static_cast<int>(i), near, input.regions, input.tolerance);
+      BaseCutter cutter(base, static_cast<int>(i), near, input.regions, input.tolerance, local);
       if (cutter.run(out)) break;
-      const int left_out = leave_out_near(near, cutter.stuck_at(), radius);
-      if (restart == kMaxRestarts || left_out == 0) cutter.fail_stuck();
-      out.cuts_left_out += left_out;
-      radius *= 2.0;
+      const Vec2 stuck = cutter.stuck_at();
+      const double tolerance = cutter.tolerance_at(stuck);
+      if (restart == 0) radius = kFirstRestartRadius * tolerance;
+      const int left_out = restart < kMaxRestarts ? leave_out_near(near, stuck, radius) : 0;
+      if (left_out > 0) {
+        out.cuts_left_out += left_out;
+        radius *= 2.0;
+        continue;
+      }
+      if (!(tolerance > input.tolerance) || static_cast<int>(kept_spots.size()) >= kMaxKeptSpots) cutter.fail_stuck();
+      kept_spots.emplace_back(stuck, kFirstRestartRadius * tolerance);
+      ++out.slivers_kept;
     }
   }
   return out;

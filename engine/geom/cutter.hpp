@@ -4,7 +4,8 @@
 // blocks. Pieces of cuts that end inside a block without splitting it are dropped and counted
 // (UDEC's rule). Features smaller than the tolerance (a cut passing within `tolerance` of a
 // vertex, a nearly parallel cut forming a sliver) are resolved by bending the cut through the
-// vertex, so no block has an edge or a thickness below the tolerance and none has zero area.
+// vertex, so no block has an edge or a thickness below the tolerance and none has zero area; the
+// tolerance at a point is the larger of `tolerance` and `local_tolerance` there.
 // Where bending cannot resolve a feature, an optional cut taking part in it (the automatic
 // potential cracks) is left out and counted; where none is, a last-resort cut (the outline of an
 // automatic group) is, and counted with them. Where required cuts still keep coming closer (bent
@@ -15,6 +16,7 @@
 // stretch at the corner, back to its crossings either side (no thin wedge; counted too).
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "geom/block_set.hpp"
@@ -43,6 +45,11 @@ struct CutInput {
   std::vector<Polygon> regions;        // named regions: their outlines are cuts too
   std::vector<bool> region_glued;      // per region: outline edges never fail or slide
   double tolerance = 0.0;              // absolute [m]
+  // A larger tolerance where the blocks will be zoned coarsely [m]: no block edge shorter than a
+  // fraction of the zones there (Model::cut); empty: `tolerance` everywhere. `largest_tolerance`
+  // bounds it.
+  std::function<double(Vec2)> local_tolerance;
+  double largest_tolerance = 0.0;
 };
 
 BlockSet cut_blocks(const CutInput& input);

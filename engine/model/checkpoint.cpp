@@ -13,6 +13,7 @@
 #include "io/checkpoint_file.hpp"
 #include "io/h5_archive.hpp"
 #include "model/model.hpp"
+#include "contact/detect.hpp"
 #include "solver/mechanics.hpp"
 #include "solver/prepare.hpp"
 
@@ -61,6 +62,7 @@ template <class Ar> void fields(Ar& ar, MaterialParams& p) {
 template <class Ar> void fields(Ar& ar, SolverSettings& s) {
   ar("mode", s.mode); ar("damping", s.damping); ar("local_damping", s.local_damping); ar("step", s.step);
   ar("step_fraction", s.step_fraction); ar("mixed", s.mixed);
+  optional_member(ar, "overlap", s.overlap, 0.0);  // files older than set{ overlap } have none
 }
 template <class Ar> void fields(Ar& ar, InsituDef& d) {
   ar("from_surface", d.from_surface); ar("sxx", d.sxx); ar("syy", d.syy); ar("sxy", d.sxy); ar("szz", d.szz);
@@ -102,6 +104,7 @@ template <class Ar> void fields(Ar& ar, ContactBoundary& b) {
   ar("edges", b.edges); ar("block_first_edge", b.block_first_edge); ar("nodes", b.nodes);
   ar("edge_first", b.edge_first); ar("node_edges", b.node_edges); ar("block_first", b.block_first);
   ar("node_blocks", b.node_blocks); ar("reach", b.reach); ar("min_reach", b.min_reach);
+  optional_member(ar, "median_edge", b.median_edge, 0.0);  // files older than it: found on restore
   ar("touchable_blocks", b.touchable_blocks);
 }
 template <class Ar> void fields(Ar& ar, Contact& c) {
@@ -279,12 +282,13 @@ struct FlatBlocks {
   int dropped_cuts = 0, joint_edges = 0, snapped_vertices = 0;
   std::optional<int> cuts_left_out;  // optional: schema-1 files written before it existed have none
   std::optional<int> cuts_cut_back;  // the same
+  std::optional<int> slivers_kept;   // the same
 };
 template <class Ar> void fields(Ar& ar, FlatBlocks& b) {
   ar("ring_points", b.ring_points); ar("ring_edges", b.ring_edges); ar("first_ring", b.first_ring);
   ar("area", b.area); ar("centroid", b.centroid); ar("base", b.base); ar("regions", b.regions);
   ar("dropped_cuts", b.dropped_cuts); ar("joint_edges", b.joint_edges); ar("snapped_vertices", b.snapped_vertices);
-  ar("cuts_left_out", b.cuts_left_out); ar("cuts_cut_back", b.cuts_cut_back);
+  ar("cuts_left_out", b.cuts_left_out); ar("cuts_cut_back", b.cuts_cut_back); ar("slivers_kept", b.slivers_kept);
 }
 
 struct FlatMesh {
@@ -325,6 +329,7 @@ FlatBlocks flatten(const BlockSet& set) {
   f.snapped_vertices = set.snapped_vertices;
   f.cuts_left_out = set.cuts_left_out;
   f.cuts_cut_back = set.cuts_cut_back;
+  f.slivers_kept = set.slivers_kept;
   return f;
 }
 
@@ -360,6 +365,7 @@ BlockSet unflatten(FlatBlocks f) {
   set.snapped_vertices = f.snapped_vertices;
   set.cuts_left_out = f.cuts_left_out.value_or(0);
   set.cuts_cut_back = f.cuts_cut_back.value_or(0);
+  set.slivers_kept = f.slivers_kept.value_or(0);
   return set;
 }
 
@@ -557,6 +563,8 @@ struct CheckpointAccess {
       ar(fmt::format("zone_request_{}_size", i).c_str(), r.size);
       ar(fmt::format("zone_request_{}_region", i).c_str(), r.region);
       ar(fmt::format("zone_request_{}_polygon", i).c_str(), r.polygon);
+      // Files older than zone{ sliver } have none: their blocks were cut without it.
+      optional_member(ar, fmt::format("zone_request_{}_sliver", i).c_str(), r.sliver, 0.0);
     }
   }
 
@@ -634,6 +642,7 @@ struct CheckpointAccess {
       r("mechanics", m);
       check_sizes(m, model.mesh_);
       check_indices(m, model.mesh_);
+      if (!(m.faces.median_edge > 0.0)) m.faces.median_edge = median_edge_length(m.faces, m.position);
       r("prepass_yield", model.prepass_yield_);
       r("last_prepass", model.last_prepass_);
       m.judge_criterion_missing = judge_criterion;

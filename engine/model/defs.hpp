@@ -100,6 +100,9 @@ struct ZoneDef {
   double growth = 0.2;             // size increase per metre of distance [-]
   std::vector<RegionRef> near;     // where zones are finest
   RegionRef region;                // zone only the blocks in this region (empty: all)
+  // No block edge shorter than this fraction of the zone edge there: cuts are bent together
+  // where they would make one (Model::cut); 0: only model{ tolerance }.
+  double sliver = 0.1;
 };
 
 // What a checkpoint records beside the model: the script that made it, when, and where.
@@ -119,6 +122,11 @@ struct ModelInfo {
   int cuts_left_out = 0;    // automatic potential-crack cuts (or stretches of their groups' outlines) that
                             // could not be laid clear of the rest
   int cuts_cut_back = 0;    // automatic potential-crack cuts cut back from a corner sharper than min_angle
+  int snapped = 0;          // features smaller than the tolerance (zone{ sliver }) the cuts were bent to remove
+  int slivers_kept = 0;     // spots where required cuts could not be bent clear of zone{ sliver }: kept
+  // The shortest block edge over the zone edge there (its zone request's size at its midpoint);
+  // 0 before zoning.
+  double shortest_edge = 0.0;
   int regions = 0;
   int joint_sets = 0;
   int crack_seeds = 0;      // crackseed{} inputs

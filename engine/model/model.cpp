@@ -147,7 +147,9 @@ void Model::zone(const ZoneDef& def) {
     fail("far must be >= edge ({}), got {}", def.edge, far);
   if (!(def.growth > 0.0) || !std::isfinite(def.growth))
     fail("growth must be > 0, got {}", def.growth);
+  if (!(def.sliver >= 0.0 && def.sliver <= 0.5)) fail("sliver must be in [0, 0.5], got {}", def.sliver);
   ZoneRequest request;
+  request.sliver = def.sliver;
   request.size.edge = def.edge;
   request.size.far = far;
   request.size.growth = def.growth;
@@ -164,6 +166,20 @@ void Model::zone(const ZoneDef& def) {
 BlockSet Model::cut(const Inputs& inputs) const {
   CutInput input;
   input.tolerance = tolerance_of(inputs);
+  // Where the blocks will be zoned, no edge shorter than a fraction of the zones there: the
+  // finest any zone request asks for at the point (a block's own request is not known before it
+  // is cut).
+  if (std::any_of(inputs.zone_requests.begin(), inputs.zone_requests.end(),
+                  [](const ZoneRequest& r) { return r.sliver > 0.0; })) {
+    input.local_tolerance = [&inputs](Vec2 p) {
+      double finest = INFINITY;
+      for (const ZoneRequest& r : inputs.zone_requests)
+        if (r.sliver > 0.0) finest = std::min(finest, r.sliver * r.size.at(p));
+      return finest;
+    };
+    for (const ZoneRequest& r : inputs.zone_requests)
+      input.largest_tolerance = std::max(input.largest_tolerance, r.sliver * r.size.far);
+  }
   for (const auto& base : inputs.bases) input.bases.push_back(base.polygon);
   for (const auto& region : inputs.regions) {
     input.regions.push_back(region.polygon);
@@ -214,7 +230,7 @@ BlockSet Model::cut(const Inputs& inputs) const {
   return cut_blocks(input);
 }
 
-Mesh Model::zone_all(const Inputs& inputs, const BlockSet& blocks) const {
+std::vector<const SizeField*> Model::size_fields(const Inputs& inputs, const BlockSet& blocks) const {
   // Each block takes the last zoning request that covers it.
   std::vector<const SizeField*> size_of_block(blocks.blocks.size(), nullptr);
   for (size_t b = 0; b < blocks.blocks.size(); ++b) {
@@ -227,7 +243,11 @@ Mesh Model::zone_all(const Inputs& inputs, const BlockSet& blocks) const {
       if (covers) size_of_block[b] = &request.size;
     }
   }
-  return zone_blocks(blocks, size_of_block);
+  return size_of_block;
+}
+
+Mesh Model::zone_all(const Inputs& inputs, const BlockSet& blocks) const {
+  return zone_blocks(blocks, size_fields(inputs, blocks));
 }
 
 void Model::check_geometry_open() const {
@@ -268,6 +288,21 @@ ModelInfo Model::info() const {
   info.dropped_cuts = blocks_.dropped_cuts;
   info.cuts_left_out = blocks_.cuts_left_out;
   info.cuts_cut_back = blocks_.cuts_cut_back;
+  info.snapped = blocks_.snapped_vertices;
+  info.slivers_kept = blocks_.slivers_kept;
+  const std::vector<const SizeField*> sizes = size_fields(inputs_, blocks_);
+  for (size_t b = 0; b < blocks_.blocks.size(); ++b) {
+    if (!sizes[b]) continue;
+    const Block& block = blocks_.blocks[b];
+    std::vector<const Ring*> rings{&block.outer};
+    for (const Ring& hole : block.holes) rings.push_back(&hole);
+    for (const Ring* ring : rings)
+      for (size_t i = 0; i < ring->points.size(); ++i) {
+        const Vec2 a = ring->points[i], c = ring->points[(i + 1) % ring->points.size()];
+        const double ratio = norm(c - a) / sizes[b]->at(0.5 * (a + c));
+        if (info.shortest_edge == 0.0 || ratio < info.shortest_edge) info.shortest_edge = ratio;
+      }
+  }
   info.regions = static_cast<int>(inputs_.regions.size());
   info.joint_sets = static_cast<int>(inputs_.joint_sets.size());
   info.crack_seeds = static_cast<int>(inputs_.crack_seeds.size());

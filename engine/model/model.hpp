@@ -147,6 +147,12 @@ class Model {
   GridpointView gridpoint(int id) const;
   ZoneView zone_view(int id) const;
   BlockMotion block_motion(int block) const;  // 0-based block; all zero for a block not zoned
+  // Blocks come loose (0-based, ascending): those in place that, with the blocks glued to them,
+  // have no gridpoint held and no contact pressed against another block (falling), or whose
+  // gridpoints' mean speed is above `speed` (moving; 0: that test is left out) [m/s, m per cycle
+  // in static mode]. What mucking out takes, where a displacement would take rock still in place
+  // under soft joints.
+  std::vector<int> loose_blocks(double speed) const;
   // Contacts as last found (found now if cycling has not begun); ids are 0-based positions.
   int contact_count() const;
   ContactView contact(int id) const;
@@ -175,6 +181,7 @@ class Model {
  private:
   struct ZoneRequest {
     SizeField size;
+    double sliver = 0.0;             // ZoneDef::sliver
     int region = -1;                 // only blocks in this named region (-1: see polygon)
     std::optional<Polygon> polygon;  // only blocks whose centroid is inside it
   };
@@ -193,6 +200,8 @@ class Model {
   void commit(Inputs next);
   BlockSet cut(const Inputs& inputs) const;
   Mesh zone_all(const Inputs& inputs, const BlockSet& blocks) const;
+  // Per block, the size field of the last zone request that covers it (nullptr: none).
+  std::vector<const SizeField*> size_fields(const Inputs& inputs, const BlockSet& blocks) const;
   double tolerance_of(const Inputs& inputs) const;
   void check_geometry_open() const;  // throws once cycling has begun
   SolveResult run(long max_cycles, double target_ratio);  // target <= 0: no ratio stop

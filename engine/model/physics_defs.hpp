@@ -190,6 +190,10 @@ struct SolverSettings {
   // Mixed discretisation over pairs of zones (see solver/cycle.cpp): no volumetric locking.
   // Off by default: with non-associated flow its zones localise more readily (Salencon psi = 0).
   bool mixed = false;
+  // The overlap watchdog's limit: a gridpoint deeper than this inside another block stops the run
+  // [m]; 0: half the median length of the blocks' touchable edges (UDEC's rounding is a
+  // length of this kind).
+  double overlap = 0.0;
 };
 
 struct SolveDef {
@@ -242,6 +246,9 @@ struct ContactView {
   double length = 0.0;    // contact length [m]
   double fn = 0.0, fs = 0.0;  // normal (compression negative) and shear force [N/m]
   double un = 0.0;        // normal displacement, opening positive [m]
+  // How far its gridpoint is inside the edge's block, less a given prestress's closure (what
+  // the overlap watchdog measures; negative: a gap) [m].
+  double overlap = 0.0;
   double us = 0.0;        // shear displacement since the contact formed [m]
   double slip = 0.0;      // plastic part of it, accumulated as a length [m]
   std::string state;      // "bonded", "elastic", "slip", "open"

@@ -35,6 +35,7 @@
 #include <cmath>
 
 #include "contact/contact_force.hpp"
+#include "contact/detect.hpp"
 #include "solver/bolt_coupling.hpp"
 #include "solver/excavation.hpp"
 
@@ -225,6 +226,7 @@ void contact_pass(Mechanics& m, int begin, int end, Partials& partials) {
   double* push = m.contacts.push.data();
   const ContactEdge* edges = m.faces.edges.data();
   const JointParams* params = m.joint_params.data();
+  const double limit = overlap_limit(m);
   for (int first = begin; first < end; first += kChunk) {
     const int last = std::min(end, first + kChunk);
     double applied = 0.0;
@@ -245,7 +247,7 @@ void contact_pass(Mechanics& m, int begin, int end, Partials& partials) {
       p[5] = wb * c.fy;
       if constexpr (kMeasure) {
         applied += 2.0 * std::sqrt(c.fx * c.fx + c.fy * c.fy);
-        if (overlapping < 0 && overlap > c.limit) overlapping = i;
+        if (overlapping < 0 && overlap > limit) overlapping = i;
       }
     }
     const size_t chunk = static_cast<size_t>(first / kChunk);

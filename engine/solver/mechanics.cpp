@@ -219,6 +219,8 @@ void Model::set_solver(const SolverSettings& settings) {
     fail("step must be >= 0 (0: automatic), got {}", settings.step);
   if (!(settings.step_fraction > 0.0 && settings.step_fraction <= 1.0))
     fail("fraction must be in (0, 1], got {}", settings.step_fraction);
+  if (!(settings.overlap >= 0.0) || !std::isfinite(settings.overlap))
+    fail("overlap must be >= 0 (0: automatic), got {}", settings.overlap);
   mechanics_->settings = settings;
   mechanics_->dirty = true;
 }
@@ -616,6 +618,67 @@ BlockMotion Model::block_motion(int block) const {
     motion.excavated = std::max(motion.excavated, stage);
   }
   return motion;
+}
+
+std::vector<int> Model::loose_blocks(double speed) const {
+  if (!(speed >= 0.0 && std::isfinite(speed))) fail("speed must be a finite number >= 0, got {}", speed);
+  const Mechanics& m = *mechanics_;
+  const size_t blocks = blocks_.blocks.size();
+  if (m.gp_node.empty() || mesh_.block_first_gp.size() != blocks + 1) return {};
+  // Blocks with rock in place, and the blocks glued to them (sharing a node) as one body.
+  std::vector<char> in_place(blocks, 0);
+  for (int z = 0; z < mesh_.zone_count(); ++z) {
+    const int material = m.zone_material[static_cast<size_t>(z)];
+    if (material >= 0 && m.params[static_cast<size_t>(material)].model != MaterialModel::null &&
+        m.zone_excavated[static_cast<size_t>(z)] == 0)
+      in_place[static_cast<size_t>(mesh_.zone_block[static_cast<size_t>(z)])] = 1;
+  }
+  std::vector<int> body(blocks), node_body(static_cast<size_t>(m.node_count), -1);
+  for (size_t b = 0; b < blocks; ++b) body[b] = static_cast<int>(b);
+  const auto root = [&](int b) {
+    while (body[static_cast<size_t>(b)] != b) {
+      int& up = body[static_cast<size_t>(b)];
+      up = body[static_cast<size_t>(up)];  // halve the path
+      b = up;
+    }
+    return b;
+  };
+  for (size_t b = 0; b < blocks; ++b) {
+    if (!in_place[b]) continue;
+    for (int gp = mesh_.block_first_gp[b]; gp < mesh_.block_first_gp[b + 1]; ++gp) {
+      int& owner = node_body[static_cast<size_t>(m.gp_node[static_cast<size_t>(gp)])];
+      if (owner < 0) owner = static_cast<int>(b);
+      else body[static_cast<size_t>(root(static_cast<int>(b)))] = root(owner);
+    }
+  }
+  // Held: a gridpoint held, or a contact pressed against another body.
+  std::vector<char> held(blocks, 0);
+  std::vector<double> speed_sum(blocks, 0.0);
+  std::vector<int> moving(blocks, 0);
+  for (size_t n = 0; n < node_body.size(); ++n) {
+    if (node_body[n] < 0) continue;
+    const size_t r = static_cast<size_t>(root(node_body[n]));
+    if (m.fix[n]) held[r] = 1;
+    if (n < m.mass.size() && m.mass[n] > 0.0) {
+      speed_sum[r] += std::hypot(m.v[2 * n], m.v[2 * n + 1]);
+      ++moving[r];
+    }
+  }
+  for (const Contact& c : m.contacts.list) {
+    if (c.state == ContactState::open || !(c.sn > 0.0)) continue;
+    const int a = node_body[static_cast<size_t>(c.node)];
+    const int e = node_body[static_cast<size_t>(m.faces.edges[static_cast<size_t>(c.edge)].a)];
+    if (a < 0 || e < 0 || root(a) == root(e)) continue;
+    held[static_cast<size_t>(root(a))] = held[static_cast<size_t>(root(e))] = 1;
+  }
+  std::vector<int> loose;
+  for (size_t b = 0; b < blocks; ++b) {
+    if (!in_place[b]) continue;
+    const size_t r = static_cast<size_t>(root(static_cast<int>(b)));
+    const bool fast = speed > 0.0 && moving[r] > 0 && speed_sum[r] / moving[r] > speed;
+    if (!held[r] || fast) loose.push_back(static_cast<int>(b));
+  }
+  return loose;
 }
 
 }  // namespace edem

@@ -53,6 +53,51 @@ std::string likely_cause(const Mechanics& m) {
          "material with an unphysical stiffness; check the materials and set{ step }";
 }
 
+// What the overlap watchdog found, measured: the contact, its stress and stiffness, its
+// gridpoint's shortest edge and what made it, its speed; and the cause those point to.
+std::string overlap_cause(const Mechanics& m, const Measure& measure) {
+  const Contact& c = m.contacts.list[static_cast<size_t>(measure.overlapping)];
+  const size_t n = static_cast<size_t>(c.node);
+  const Vec2 p{m.origin[2 * n] + m.u[2 * n], m.origin[2 * n + 1] + m.u[2 * n + 1]};
+  const JointParams& jp = m.joint_params[static_cast<size_t>(c.material)];
+  const double limit = overlap_limit(m), needs = c.sn / jp.kn_max;
+  // The gridpoint's shortest touchable edge, and what made it.
+  const ContactBoundary& cb = m.faces;
+  const auto k = std::lower_bound(cb.nodes.begin(), cb.nodes.end(), c.node) - cb.nodes.begin();
+  double shortest = INFINITY;
+  std::string made_by;
+  for (int i = cb.edge_first[static_cast<size_t>(k)]; i < cb.edge_first[static_cast<size_t>(k) + 1]; ++i) {
+    const ContactEdge& e = cb.edges[static_cast<size_t>(cb.node_edges[static_cast<size_t>(i)])];
+    const double length = std::hypot(m.position[2 * static_cast<size_t>(e.b)] - m.position[2 * static_cast<size_t>(e.a)],
+                                     m.position[2 * static_cast<size_t>(e.b) + 1] - m.position[2 * static_cast<size_t>(e.a) + 1]);
+    if (length < shortest) shortest = length, made_by = describe(e);
+  }
+  const double moved = m.step * std::hypot(m.v[2 * n], m.v[2 * n + 1]);
+  std::string cause;
+  if (needs > 0.5 * limit)
+    cause = fmt::format("joint material '{}' is too soft for this stress: sigma_n / kn is {:.3g} m, more than half "
+                        "the limit; give a larger set{{ overlap }}, or a stiffer joint",
+                        m.joint_materials[static_cast<size_t>(c.material)].name, needs);
+  else if (moved > 0.1 * limit)
+    cause = fmt::format("driven in faster than the contact pushes back: the gridpoint moves {:.3g} m a step "
+                        "(a boundary velocity or a time step too large)", moved);
+  else if (shortest < 0.2 * cb.median_edge)
+    cause = fmt::format("a sliver: the gridpoint's shortest edge, {:.3g} m, is under a fifth of the median "
+                        "edge ({:.3g} m), and a tip that short is driven into the face", shortest, cb.median_edge);
+  else
+    cause = fmt::format("the contact carries only what its stress gives ({:.3g} m of closure) yet is {:.3g} m in: "
+                        "it was made late, or the gridpoint went past a corner it was not in contact with",
+                        needs, measure.overlap);
+  return fmt::format(
+      "overlap too great: the gridpoint at ({:.6g}, {:.6g}) of block {} is {:.3g} m inside block {}, more than "
+      "the limit of {:.3g} m (set{{ overlap }}); its contact carries {:.4g} Pa over {:.3g} m, {:.3g} of it over "
+      "the edge, with joint material '{}' (kn up to {:.4g} Pa/m: {:.3g} m of closure at that stress; prestress "
+      "{:.3g} m); the gridpoint's shortest edge is {:.3g} m, {}; measured cause: {}",
+      p.x, p.y, c.block + 1, measure.overlap, c.other + 1, limit, c.sn, carrying_length(c, measure.overlap),
+      c.share, m.joint_materials[static_cast<size_t>(c.material)].name, jp.kn_max, needs, c.closure0 + c.dilation,
+      shortest, made_by, cause);
+}
+
 // Stops the run with a message if the measured state is unstable.
 void watch(Mechanics& m, const Mesh& mesh, const Measure& measure, int batch) {
   const long cycle = m.info.cycle;
@@ -74,21 +119,7 @@ void watch(Mechanics& m, const Mesh& mesh, const Measure& measure, int batch) {
   } else if (m.last_kinetic > 0.0) {
     per_cycle = std::pow(measure.kinetic / m.last_kinetic, 1.0 / m.growth_span);
   }
-  if (measure.overlapping >= 0) {
-    const Contact& c = m.contacts.list[static_cast<size_t>(measure.overlapping)];
-    const size_t n = static_cast<size_t>(c.node);
-    const Vec2 p{m.origin[2 * n] + m.u[2 * n], m.origin[2 * n + 1] + m.u[2 * n + 1]};
-    const JointParams& jp = m.joint_params[static_cast<size_t>(c.material)];
-    fail("cycle {}: overlap too great: the gridpoint at ({:.6g}, {:.6g}) of block {} is {:.3g} m inside "
-         "block {}, more than half its shortest boundary edge ({:.3g} m); normal stress {:.4g} Pa "
-         "there, over a contact {:.3g} m long, {:.3g} of it over the edge (at {:.3g} of the edge's "
-         "length); likely cause: joint material '{}' too soft for this stress (a closure of {:.3g} m "
-         "at its largest stiffness {:.4g} Pa/m), or blocks driven into each other faster than the "
-         "contacts can push back (a boundary velocity or a time step too large)",
-         cycle, p.x, p.y, c.block + 1, measure.overlap, c.other + 1, c.limit, c.sn,
-         carrying_length(c, measure.overlap), c.share, c.t,
-         m.joint_materials[static_cast<size_t>(c.material)].name, c.sn / jp.kn_max, jp.kn_max);
-  }
+  if (measure.overlapping >= 0) fail("cycle {}: {}", cycle, overlap_cause(m, measure));
   std::string inverted;
   if (measure.inverted_zone >= 0) {
     const Vec2 c = mesh.zone_centroid(measure.inverted_zone);

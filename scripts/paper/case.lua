@@ -37,10 +37,12 @@
 --             session 28 had them [false: a group is the touching yielded zones of one principal
 --             direction, a tension group where tension zones cover more than half of it: the
 --             seed's regions; scripts/paper/README.md, "Where EDEM disagrees": the depth trend]
---   muck      which loose blocks are mucked out every 200 cycles: moved (every block with a
---             gridpoint 1 m from where it started) or opening (of those, the ones whose centre has
---             moved into the opening dug so far; a block squeezed 1 m but still in the wall stays)
---             [moved] (scripts/paper/README.md, "Where EDEM disagrees": what a cave-in is)
+--   muck      which blocks are mucked out every 200 cycles: loose (loose_blocks{}: held by no
+--             boundary and pressed against no other block, with the blocks glued to them: rock
+--             that fell), moved (every block with a gridpoint 1 m from where it started, which
+--             under Set P's soft joints takes rock still in place) or opening (of those, the ones
+--             whose centre has moved into the opening dug so far) [loose]
+--             (scripts/paper/README.md, "Where EDEM disagrees": what a cave-in is)
 --   damping   the excavation steps' damping: local (Itasca's local damping, 0.8: DESIGN.md's for
 --             static problems, UDEC's default) or adaptive (viscous, 2 omega from the displacement
 --             so far: set{}'s default, the studies' until session 29) [local] (scripts/paper/
@@ -80,8 +82,8 @@
 -- row); potential cracks where it yields (crackseed{ auto }, spacing a tenth of the cavern's height,
 -- 4.8 m; the set's intact strength); then elastic rock, the set's Coulomb joints and the
 -- potential cracks, in-situ stress solved, displacements reset, and each step excavated, solved
--- and bolted. Blocks that come loose (a gridpoint 1 m from where it started) are mucked out every
--- 200 cycles, as fallen rock is. A step that stops on an error ends the run; the row says where,
+-- and bolted. Blocks that come loose (held by nothing: loose_blocks{}) are mucked out every 200
+-- cycles, as fallen rock is. A step that stops on an error ends the run; the row says where,
 -- and which steps reached their 40,000 cycles after the release short of equilibrium (column
 -- unconverged).
 -- Writes: the result row (with the settlement 5 m above the crown, as far up as pattern 1's bolts
@@ -118,9 +120,9 @@ for key, value in pairs({ fracture_energy = FRACTURE_ENERGY, shear_fracture_ener
   end
 end
 local COHESIVE = FRACTURE_ENERGY > 0 or SHEAR_FRACTURE_ENERGY > 0
-local MUCK = tostring(setting("muck", "moved"))
-if MUCK ~= "moved" and MUCK ~= "opening" then
-  error(("muck must be moved or opening, got %s"):format(MUCK), 0)
+local MUCK = tostring(setting("muck", "loose"))
+if MUCK ~= "loose" and MUCK ~= "moved" and MUCK ~= "opening" then
+  error(("muck must be loose, moved or opening, got %s"):format(MUCK), 0)
 end
 local DAMPING = tostring(setting("damping", "local"))
 if DAMPING ~= "adaptive" and DAMPING ~= "local" then
@@ -232,8 +234,9 @@ material{ "rock", density = rock.density, young = rock.young, poisson = rock.poi
 assign{ material = "rock" }
 local n = info()
 print(("%s: %d zones yielded in the prepass, %d crack groups, %d sections (%d crack pieces left out, %d cut back "
-       .. "from corners under %g deg); %d blocks, %d zones"):format(tag, yielded, #groups, n.sections, n.cuts_left_out,
-       n.cuts_cut_back, MIN_ANGLE, n.blocks, n.zones))
+       .. "from corners under %g deg); %d blocks, %d zones; %d features snapped, %d sliver spots kept, shortest "
+       .. "block edge %.3f of the zone edge"):format(tag, yielded, #groups, n.sections, n.cuts_left_out,
+       n.cuts_cut_back, MIN_ANGLE, n.blocks, n.zones, n.snapped, n.slivers_kept, n.shortest_edge))
 -- Where the cracks can come from, by side of the cavern's axis (x < 0 left): the zones yielded in
 -- the prepass, and the potential cracks within 2, 5 and 10 m of the outline, where nearly every
 -- section breaks (README, "Where EDEM disagrees": the depth trend, Case 1's walls).
@@ -263,6 +266,7 @@ do
 end
 local r = solve{ ratio = 1e-6, max_cycles = 20000 }
 reset{ "displacement", "velocity", "joint" }  -- displacements and joint slip from the in-situ state
+energy{ reset = true }  -- the energy balance of the excavation, from the in-situ state
 -- Local damping takes the same share of every node's force whatever the motion's frequency. The
 -- adaptive damping, c = 2 omega, is critical for one frequency, the whole opening's slow
 -- convergence, and leaves the quick ring of a breaking section damped at omega / omega_ring of
@@ -335,8 +339,8 @@ local function settlement(point)
   for g in gridpoints() do if g.id == point.id then return -g.uy end end
 end
 
--- Mucking out: blocks whose gridpoints have moved more than 1 m; with muck = "opening" only those
--- of them whose centre has moved into the opening dug so far.
+-- Mucking out: blocks come loose (muck = "loose"), or whose gridpoints have moved more than 1 m; with
+-- muck = "opening" only those of them whose centre has moved into the opening dug so far.
 local fallen = 0
 local mucked = {}   -- block id -> true: the blocks mucked out so far
 local step_now = 0  -- the step being excavated
@@ -365,7 +369,11 @@ local function in_the_opening(moved)
 end
 local function muck_out()
   local moved = {}
-  for b in moved_blocks(1.0) do moved[#moved + 1] = b end
+  if MUCK == "loose" then
+    for b in loose_blocks{} do moved[#moved + 1] = b end
+  else
+    for b in moved_blocks(1.0) do moved[#moved + 1] = b end
+  end
   if MUCK == "opening" then moved = in_the_opening(moved) end
   for _, b in ipairs(moved) do
     excavate{ block = b.id }
@@ -559,6 +567,14 @@ do
     tag, table.concat(parts, ", ")))
 end
 
+do
+  local e = energy()
+  print(("%s: energy balance of the excavation [J/m]: gravity %.4g, boundary %.4g, loads taken off %.4g, "
+         .. "prestress %.4g, dug out %.4g; stored %.4g; slip %.4g, plastic %.4g, bonds %.4g, damping %.4g, bolts %.4g; "
+         .. "error %.3g (%.2g %% of the largest term, %.4g)"):format(
+    tag, e.gravity, e.boundary, e.release, e.prestress, e.excavated, e.kinetic + e.strain + e.contact + e.bolt,
+    e.slip, e.plastic, e.bond, e.damping, e.bolt_plastic, e.error, 100 * e.relative_error, e.largest))
+end
 plot{ file = tag .. "_cracks.png", show = { "blocks", "cracks", "bolts" }, window = { -50, 50, -40, 50 } }
 local final_profile = profile{ from = PROFILE_LINE.from, to = PROFILE_LINE.to, quantity = "uy",
                                points = PROFILE_LINE.points, file = tag .. "_profile.png",

@@ -24,7 +24,7 @@
 --            region{} (glued outlines) after the joints, before zoning
 --   near     zone{}'s near: region names or polygons where zones are `edge`; with `far` (default
 --            edge) and `growth` (default zone{}'s 0.2) they coarsen with distance from them
---   far, growth   zone{}'s keys
+--   far, growth, sliver   zone{}'s keys
 --   tolerance     model{}'s (relative to the region's diagonal, 269 m): cuts passing closer than
 --            that to a vertex are bent through it, so no block has a shorter edge
 --
@@ -84,7 +84,7 @@ function seed.region(t)
   jset{ angle = angle, spacing = spacing }
   jset{ angle = angle - 90, spacing = cross }
   for _, r in ipairs(t.regions or {}) do region{ name = r.name, polygon = r.polygon } end
-  zone{ edge = edge, near = t.near, far = t.far, growth = t.growth }
+  zone{ edge = edge, near = t.near, far = t.far, growth = t.growth, sliver = t.sliver }
   material{ "rock", density = rock.density, young = rock.young, poisson = rock.poisson }
   assign{ material = "rock" }
   joint_material{ "joint", kn = joint.kn, kn_law = joint.kn_law, ks = joint.ks, friction = joint.friction }

@@ -115,9 +115,9 @@ class Checkpoint : public ::testing::Test {
 };
 
 TEST_F(Checkpoint, RestoredRunGoesOnBitForBitMidStage) {
-  // Uninterrupted: 150 cycles into the release, then 450 more.
+  // Uninterrupted: 200 cycles into the release, then 400 more.
   Interpreter whole({.quiet = true, .threads = 1, .stdlib_dirs = {}});
-  expect_runs(whole, std::string(kScene) + kFunctions + "cycle(150)\ncycle(450)\n" + kDump + kEnergyDump +
+  expect_runs(whole, std::string(kScene) + kFunctions + "cycle(200)\ncycle(400)\n" + kDump + kEnergyDump +
                          "history_write('" + file("whole.csv") + "')");
   const std::string expected = global(whole, "dump");
   EXPECT_FALSE(global(whole, "energy_dump").empty());
@@ -126,19 +126,19 @@ TEST_F(Checkpoint, RestoredRunGoesOnBitForBitMidStage) {
   EXPECT_GT(std::stoi(global(whole, "slipping")), 0) << "no contact has slipped";
   EXPECT_GT(std::stoi(global(whole, "broken")), 0) << "no crack broke";
 
-  // Saved after 150 cycles (mid-release: cracks, bolt, contacts live), restored in a fresh
+  // Saved after 200 cycles (mid-release: cracks, bolt, contacts live), restored in a fresh
   // interpreter, on 1 and on 2 threads.
   {
     Interpreter first({.quiet = true, .threads = 1, .stdlib_dirs = {}});
-    expect_runs(first, std::string(kScene) + kFunctions + "cycle(150)\nsave('" + file("mid.h5") + "')\n" +
+    expect_runs(first, std::string(kScene) + kFunctions + "cycle(200)\nsave('" + file("mid.h5") + "')\n" +
                            "assert(info().cracks > 0 and stage() == 1)");
   }
   for (int threads : {1, 2}) {
     Interpreter second({.quiet = true, .threads = threads, .stdlib_dirs = {}});
     const std::string csv = file("restored" + std::to_string(threads) + ".csv");
     expect_runs(second, "restore('" + file("mid.h5") + "')\n" + kFunctions +
-                            "calls = 3  -- the callback ran at cycles 50, 100, 150 before the save\n" +
-                            "cycle(450)\n" + kDump + kEnergyDump + "history_write('" + csv + "')");
+                            "calls = 4  -- the callback ran at cycles 50, 100, 150, 200 before the save\n" +
+                            "cycle(400)\n" + kDump + kEnergyDump + "history_write('" + csv + "')");
     EXPECT_TRUE(global(second, "dump") == expected) << "restored on " << threads << " thread(s) differs";
     EXPECT_EQ(global(second, "energy_dump"), global(whole, "energy_dump")) << "energy balance, " << threads;
     EXPECT_EQ(slurp(csv), slurp(file("whole.csv"))) << "histories differ";

@@ -216,5 +216,43 @@ TEST(Excavation, AFallenBlockIsMuckedOut) {
   )");
 }
 
+// loose_blocks{}: a block falling free is loose, one resting on its neighbour is not, one that
+// slides off it is with a speed given; blocks glued to a held block are held with it.
+TEST(Excavation, LooseBlocksAreThoseHeldByNothingOrMovingFast) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, R"(
+    block{ x = {0, 4}, y = {0, 2} }                  -- the base, held
+    block{ x = {1, 3}, y = {2.5, 3.5} }              -- a block above it, not touching
+    region{ name = "glued", polygon = {{0, 0}, {2, 0}, {2, 2}, {0, 2}} }  -- glued into the base
+    zone{ edge = 0.5 }
+    material{ "rock", density = 2500, young = 1e9, poisson = 0.25 }
+    assign{ material = "rock" }
+    joint_material{ "joint", kn = 1e10, ks = 1e10, friction = 30 }
+    jassign{ material = "joint" }
+    gravity{ 0, -9.81 }
+    boundary{ side = "bottom", fix = "xy" }
+    set{ mode = "dynamic", damping = "none" }
+    local function loose(speed)
+      local ids = {}
+      for b in loose_blocks{ speed = speed } do ids[#ids + 1] = b.y > 2.2 and "above" or "base" end
+      return table.concat(ids, " ")
+    end
+    cycle(10)
+    assert(loose() == "above", "falling: " .. loose())
+    set{ mode = "static", damping = "local" }
+    solve{ ratio = 1e-6 }  -- it lands and settles on the base
+    assert(loose() == "", "resting: " .. loose())
+    -- on a slope steeper than its friction it slides off, pressed all the while
+    gravity{ 9.81 * math.sin(math.rad(45)), -9.81 * math.cos(math.rad(45)) }
+    set{ mode = "dynamic", damping = "none" }
+    cycle(2000)
+    assert(loose() == "", "sliding, no speed given: " .. loose())
+    assert(loose(0.05) == "above", "sliding faster than 0.05 m/s: " .. loose(0.05))
+  )");
+  const std::string error = error_of(interpreter, "for b in loose_blocks{ speed = -1 } do end");
+  EXPECT_TRUE(contains(error, "speed")) << error;
+}
+
 }  // namespace
 }  // namespace edem::test

@@ -1,12 +1,14 @@
 -- edem.seed.region{ mirror = true } is the mirror image about x = 0 of the region without it
 -- (scripts/paper/case.lua's mirror): every block of one has a block of the other with the same
 -- area and its centroid mirrored, and Case 3's joints (60 deg, 16, 12, 8 m in turn) are not
--- symmetric by themselves, so a mirror that left them as they were would fail.
+-- symmetric by themselves, so a mirror that left them as they were would fail. The cutter's
+-- snapping of slivers (zone{ sliver }) is off here: which of two close vertices moves depends on
+-- the order the cuts are met, so with it the images agree only to a tenth of a zone edge.
 local check = require "edem.check"
 local seed = require "edem.seed"
 
 local function block_list(mirror)
-  seed.region{ case = 3, edge = 8, mirror = mirror }
+  seed.region{ case = 3, edge = 8, mirror = mirror, sliver = 0 }
   local list = {}
   for b in blocks() do list[#list + 1] = { x = b.centroid.x, y = b.centroid.y, area = b.area } end
   return list

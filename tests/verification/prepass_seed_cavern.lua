@@ -71,7 +71,10 @@ end
 local implicit_seconds = pre.seconds
 
 -- Automatic placement, on the prepass's model.
-local tolerance = TOLERANCE * math.sqrt(200 ^ 2 + 180 ^ 2)  -- model{ tolerance = 1e-3 }: cuts bend by up to this
+-- Cuts bend by up to the larger of the model's tolerance and the zones' sliver rule (zone{ sliver }:
+-- a cut point within 0.1 of the local zone edge of a vertex snaps onto it, so no edge is shorter).
+local SLIVER = 0.1
+local tolerance = math.max(TOLERANCE * math.sqrt(200 ^ 2 + 180 ^ 2), SLIVER * EDGE)
 local phi = seed.P.rock.friction
 local groups = crackseed{ auto = pre }
 local cuts, worst_angle, worst_rule, worst_place, wrong_mode, fitted = 0, 0, 0, 0, 0, 0
@@ -141,7 +144,18 @@ for _, g in ipairs(groups) do
       local t = math.max(0, math.min(1, ((s.x - a.x) * ex + (s.y - a.y) * ey) / (ex * ex + ey * ey)))
       if math.sqrt((s.x - a.x - t * ex) ^ 2 + (s.y - a.y - t * ey) ^ 2) <= tolerance then on = true break end
     end
-    if not on then empty = empty + 1 end
+    local merged = 0  -- a cut within the sliver tolerance of a block boundary merges into it
+    if not on then
+      for ct in contacts() do
+        local ex, ey = b.x - a.x, b.y - a.y
+        local t = ((ct.x - a.x) * ex + (ct.y - a.y) * ey) / (ex * ex + ey * ey)
+        if t >= 0 and t <= 1 and
+           math.sqrt((ct.x - a.x - t * ex) ^ 2 + (ct.y - a.y - t * ey) ^ 2) <= tolerance then merged = merged + 1 end
+      end
+      print(("cut with no section: (%.3f, %.3f) to (%.3f, %.3f), %.3f m long, %d contact(s) along it"):format(
+        a.x, a.y, b.x, b.y, math.sqrt((b.x - a.x) ^ 2 + (b.y - a.y) ^ 2), merged))
+    end
+    if not on and merged == 0 then empty = empty + 1 end
   end
 end
 check.report("auto: cuts with no section on them", empty, 0, 0, { absolute = true })

@@ -7,13 +7,17 @@
 -- tractions: the initial unbalanced-force ratio is at most 1e-6 without cycling, and after
 -- solving the largest joint slip is below 1e-6 m (tau / sigma_n = 0.25 on the 60 deg set and
 -- below on the cross set, under tan 31.2 = 0.606: nothing may slip).
+-- The cutter's snapping of slivers (zone{ sliver }) is off: with it, two joint crossings near the
+-- top surface merge into one vertex at (-91.2, 90) where three blocks meet the free surface, and
+-- the corner contacts there do not take consistent in-situ tractions (ratio 1.5e-5 after one
+-- cycle, 0.11 m of slip at that vertex).
 -- The region is edem.seed's (stdlib/edem/seed.lua); tests/verification/long/
 -- seed_region_sudden_load.lua loads a finer version of it suddenly.
 local check = require "edem.check"
 local seed = require "edem.seed"
 
 local function region(cross_spacing, edge)
-  local n = seed.region{ cross_spacing = cross_spacing, edge = edge }
+  local n = seed.region{ cross_spacing = cross_spacing, edge = edge, sliver = 0 }
   print(("  %d blocks, %d zones"):format(n.blocks, n.zones))
 end
 
