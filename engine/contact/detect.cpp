@@ -338,8 +338,11 @@ std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t
   const int node = cb.nodes[k];
   const Vec2 p = at(m, node);
   const double reach = cb.reach[k];
-  // Found as deep as the watchdog lets a gridpoint sink, whatever the length of its own edges.
-  const double search = std::max(reach, overlap_limit(m));
+  // A contact it already has is followed as deep as the watchdog lets a gridpoint sink, whatever
+  // the length of its own edges; a new one is made within its reach only (further out, the
+  // nearest edge of a block can be one the gridpoint does not face: spurious deep contacts).
+  const double follow = std::max(reach, overlap_limit(m));
+  double search = reach;
   const int* own_first = cb.node_blocks.data() + cb.block_first[k];
   const int* own_last = cb.node_blocks.data() + cb.block_first[k + 1];
   Vec2 own_normal;
@@ -354,9 +357,13 @@ std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t
   if (!alive) return found;
   for (const int block : grid.near(p)) {
     if (std::find(own_first, own_last, block) != own_last) continue;
-    if (!grid.boxes[static_cast<size_t>(block)].contains(p, search)) continue;
+    if (!grid.boxes[static_cast<size_t>(block)].contains(p, follow)) continue;
     const int held = held_edge(m.contacts, node, block);
-    if (auto f = nearest_edge(m, node, p, own_normal, block, reach, search, held)) found.push_back(*f);
+    const double radius = held >= 0 ? follow : reach;
+    if (auto f = nearest_edge(m, node, p, own_normal, block, reach, radius, held)) {
+      found.push_back(*f);
+      search = std::max(search, radius);
+    }
   }
   if (found.empty()) return found;
   // Each half of an adjacent edge goes to the block its quarter point is nearest to: to the
