@@ -501,6 +501,26 @@ local function append_row(file, line)
   out:close()
 end
 
+-- Why a step stopped short of its ratio, as measured: where the rock still moves fastest (the
+-- static run's speed) and how many contacts slip within 5 m of it, against the whole model's.
+local function still_moving()
+  local fastest, at = 0, nil
+  for g in gridpoints() do
+    local v = math.sqrt(g.vx ^ 2 + g.vy ^ 2)
+    if v > fastest then fastest, at = v, g end
+  end
+  if not at then return "nothing moves" end
+  local near, all = 0, 0
+  for k in contacts() do
+    if k.state == "slip" then
+      all = all + 1
+      if (k.x - at.x) ^ 2 + (k.y - at.y) ^ 2 <= 25 then near = near + 1 end
+    end
+  end
+  return ("still moving: fastest at (%.1f, %.1f) in block %d, %.2g m/s, %d of the %d slipping contacts "
+          .. "within 5 m of it"):format(at.x, at.y, at.block, fastest, near, all)
+end
+
 print(("  %5s %-20s %7s %9s %10s %7s %6s %6s"):format("step", "name", "cycles", "ratio", "crown [m]", "cracks",
                                                    "fallen", "time"))
 for i, s in ipairs(c.stages) do
@@ -523,6 +543,7 @@ for i, s in ipairs(c.stages) do
   done = i
   print(("  %5d %-20s %7d %9.2e %10.4f %7d %6d %6d%s"):format(i, s.name, result.cycles, result.ratio, settlement(),
     info().cracks, fallen, os.time() - started, result.converged and "" or "  NOT CONVERGED"))
+  if not result.converged then print(("        step %d short of its ratio, %s"):format(i, still_moving())) end
   append_row(STEPS_TABLE, select(2, result_row()))
 end
 cancel(mucking)
