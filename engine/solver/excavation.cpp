@@ -134,6 +134,32 @@ void follow_release(Mechanics& m, const Mesh& mesh, const std::vector<int>& old_
   }
 }
 
+// Drops the release's shares on nodes no rock zone holds any more (a block mucked out while its
+// step's load comes off): those nodes are no longer cycled, and their last velocity would go on
+// counting the share's work.
+void drop_release_on_dug_nodes(Mechanics& m, const Mesh& mesh) {
+  ReleaseLoad& r = m.release;
+  if (r.dof.empty()) return;
+  std::vector<char> rock(static_cast<size_t>(m.node_count), 0);
+  for (int z = 0; z < mesh.zone_count(); ++z) {
+    if (m.zone_excavated[static_cast<size_t>(z)] > 0) continue;
+    for (const int gp : mesh.zone_gp[static_cast<size_t>(z)]) rock[static_cast<size_t>(m.gp_node[static_cast<size_t>(gp)])] = 1;
+  }
+  const bool with_velocities = r.v_before.size() == r.dof.size();
+  size_t kept = 0;
+  for (size_t i = 0; i < r.dof.size(); ++i) {
+    const size_t node = static_cast<size_t>(r.dof[i] / 2);
+    if (node >= rock.size() || !rock[node]) continue;
+    r.dof[kept] = r.dof[i];
+    r.force[kept] = r.force[i];
+    if (with_velocities) r.v_before[kept] = r.v_before[i];
+    ++kept;
+  }
+  r.dof.resize(kept);
+  r.force.resize(kept);
+  if (with_velocities) r.v_before.resize(kept);
+}
+
 }  // namespace
 
 void Model::excavate(const ExcavateDef& def) {
@@ -177,8 +203,9 @@ void Model::excavate(const ExcavateDef& def) {
     reconnect(m, mesh_);
     m.keep_fits = false;  // the zones changed, not only the nodes: sections are fitted again
     follow_release(m, mesh_, old_node);
-    lump_boundary_loads(m);
   }
+  drop_release_on_dug_nodes(m, mesh_);
+  lump_boundary_loads(m);
   m.dirty = true;
   book_excavation(m, before);  // the rock's energy goes with it
 }

@@ -504,10 +504,12 @@ end
 -- Why a step stopped short of its ratio, as measured: where the rock still moves fastest (the
 -- static run's speed) and how many contacts slip within 5 m of it, against the whole model's.
 local function still_moving()
+  local dug = {}  -- blocks dug or mucked out: their gridpoints are no longer cycled
+  for b in blocks() do if b.excavated then dug[b.id] = true end end
   local fastest, at = 0, nil
   for g in gridpoints() do
     local v = math.sqrt(g.vx ^ 2 + g.vy ^ 2)
-    if v > fastest then fastest, at = v, g end
+    if not dug[g.block] and v > fastest then fastest, at = v, g end
   end
   if not at then return "nothing moves" end
   local near, all = 0, 0

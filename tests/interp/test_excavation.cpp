@@ -254,5 +254,36 @@ TEST(Excavation, LooseBlocksAreThoseHeldByNothingOrMovingFast) {
   EXPECT_TRUE(contains(error, "speed")) << error;
 }
 
+// A block mucked out while its step's load comes off takes its share of the load with it: its
+// nodes are no longer cycled, and their last velocity went on counting the share's work (the
+// balance's error was 98 % of its largest term here).
+TEST(Excavation, MuckingOutDuringAReleaseTakesTheBlocksShare) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, R"(
+    block{ x = {-5, 5}, y = {-5, 5} }
+    crack{ from = {-5, 1}, to = {5, 1} }            -- the top slab, the hole's top in it
+    region{ name = "hole", polygon = {{-1, -1}, {1, -1}, {1, 2}, {-1, 2}} }
+    zone{ edge = 0.5 }
+    material{ "rock", density = 2500, young = 1e9, poisson = 0.25 }
+    assign{ material = "rock" }
+    joint_material{ "joint", kn = 1e10, ks = 1e10, friction = 30 }
+    jassign{ material = "joint" }
+    insitu{ sxx = -1e6, syy = -1e6 }
+    boundary{ side = "bottom", fix = "xy" }
+    boundary{ side = "left", fix = "x" } boundary{ side = "right", fix = "x" }
+    set{ mode = "dynamic", damping = "none" }
+    energy{ reset = true }
+    excavate{ region = "hole", release = 2000 }
+    cycle(200)
+    local slab
+    for b in blocks() do if b.centroid.y > 1 and not b.excavated then slab = b.id end end
+    excavate{ block = slab }
+    cycle(1500)
+    local e = energy()
+    assert(math.abs(e.relative_error) < 0.01, ("error %g of the largest term %g"):format(e.error, e.largest))
+  )");
+}
+
 }  // namespace
 }  // namespace edem::test
