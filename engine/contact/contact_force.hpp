@@ -19,6 +19,13 @@ struct ContactLoss {
   double slip = 0.0, bond = 0.0;
 };
 
+// Coulomb's limit on a contact's shear force over `length` [N/m] at normal stress `sn`: its
+// cohesion (as far as it has softened) while intact, its residual strength after.
+inline double shear_limit(const Contact& c, const JointParams& p, double sn, double cohesion, double length) {
+  return std::max(0.0, (c.intact ? cohesion + p.tan_friction * sn : p.residual_cohesion + p.tan_residual_friction * sn) *
+                           length);
+}
+
 // Updates `c` and its force on the gridpoint (c.fx, c.fy) from the node positions, origin + u,
 // and velocities `v`; returns the overlap, how far the
 // gridpoint is inside the edge's block [m] (negative: a gap). `edges`: all of them (the edge is
@@ -139,10 +146,7 @@ struct ContactLoss {
   const double trial = fs_start - ks * dus;
   const double cohesion =
       p.softens ? p.residual_cohesion + (p.cohesion - p.residual_cohesion) * left : p.cohesion;
-  const double limit =
-      std::max(0.0, (c.intact ? cohesion + p.tan_friction * sn
-                              : p.residual_cohesion + p.tan_residual_friction * sn) *
-                        length);
+  const double limit = shear_limit(c, p, sn, cohesion, length);
   if (std::fabs(trial) > limit) {
     const double plastic = (std::fabs(trial) - limit) / ks;
     c.fs = std::copysign(limit, trial);

@@ -602,9 +602,18 @@ class LoadedFaces {
 // What a contact's shear force can be at most over `length` [N/m]: Coulomb's limit at its closure
 // (a force carried over from a contact of another length, as a stress, keeps within it).
 double shear_strength(const Contact& c, const JointParams& p, double length) {
-  const double sn = c.closure > 0.0 ? normal_stress(p, c.closure) : 0.0;
-  const double strength = c.intact ? p.cohesion + p.tan_friction * sn : p.residual_cohesion + p.tan_residual_friction * sn;
-  return std::max(0.0, strength * length);
+  return shear_limit(c, p, c.closure > 0.0 ? normal_stress(p, c.closure) : 0.0, p.cohesion, length);
+}
+
+// Books what a contact made with a given state stores (`now`, less `had` if it was there) as
+// prestress: the joint's, not made by the method; at the last booked point too, so that commands
+// do not book it again.
+void book_prestress(Mechanics& m, const ContactEnergy& now, const ContactEnergy& had) {
+  m.energy.prestress += now.normal + now.shear - had.normal - had.shear;
+  if (m.energy.last_current) {
+    m.energy.last.normal += now.normal - had.normal;
+    m.energy.last.shear += now.shear - had.shear;
+  }
 }
 
 // A new contact `c` (its gridpoint at `gap` from its edge, whose direction is `s`) takes the
@@ -737,23 +746,16 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
       // that was there keeps its own force for the part it had. insitu{} sets every contact's.
       // (A tip not yet pressed in, with none of its own length, has nothing to take it by.)
       const bool given = f.insitu && (with_insitu || !kept) && carrying_length(c, -f.gap) > 0.0;
+      const Vec2 a = at(m, edge.a), b = at(m, edge.b);
+      const Vec2 s = (1.0 / norm(b - a)) * (b - a);
       if (!kept && !given && !first) {
-        const Vec2 a = at(m, edge.a), b = at(m, edge.b);
         const double within = kLendingReaches * cb.reach[k];
         if (const Contact* from = loaded.nearest(m, c.block, c.other, at(m, c.node), f.normal, within)) {
-          inherit_faces(m, c, p, *from, f.gap, (1.0 / norm(b - a)) * (b - a));
-          // What it carries is the joint's, not made by the method: booked as given.
-          const ContactEnergy now = contact_energy(c, p);
-          m.energy.prestress += now.normal + now.shear;
-          if (m.energy.last_current) {
-            m.energy.last.normal += now.normal;
-            m.energy.last.shear += now.shear;
-          }
+          inherit_faces(m, c, p, *from, f.gap, s);
+          book_prestress(m, contact_energy(c, p), {});
         }
       }
       if (given) {
-        const Vec2 a = at(m, edge.a), b = at(m, edge.b);
-        const Vec2 s = (1.0 / norm(b - a)) * (b - a);
         const double gap = f.gap;
         // The half traction on this side, as the contact's force on its gridpoint.
         c.sn = dot(f.insitu_force, f.normal) / carrying_length(c, -gap);
@@ -764,12 +766,7 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
         c.dilation = c.us = c.slip = c.opened = 0.0;
         if (c.state == ContactState::open && c.sn != 0.0) c.state = c.intact ? ContactState::bonded : ContactState::elastic;
         // What the given stress stores in it is the stress's, not the method's: booked as such.
-        const ContactEnergy now = contact_energy(c, p), had = kept ? contact_energy(*old, p) : ContactEnergy{};
-        m.energy.prestress += now.normal + now.shear - had.normal - had.shear;
-        if (m.energy.last_current) {  // not for commands to book again
-          m.energy.last.normal += now.normal - had.normal;
-          m.energy.last.shear += now.shear - had.shear;
-        }
+        book_prestress(m, contact_energy(c, p), kept ? contact_energy(*old, p) : ContactEnergy{});
       }
       list.push_back(c);
     }

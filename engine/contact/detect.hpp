@@ -25,8 +25,8 @@ std::string describe(const ContactEdge& e);
 double median_edge_length(const ContactBoundary& cb, const std::vector<double>& position);
 
 // The overlap watchdog's limit [m]: set{ overlap }, or half the median touchable edge.
-// Contacts are looked for at least this far from a gridpoint, so that one pressed in this deep
-// is still found.
+// A contact a gridpoint has is followed this deep, so that one pressed in this far is still
+// found (new contacts are made within the gridpoint's reach).
 double overlap_limit(const Mechanics& m);
 
 // Gives every edge the joint material of the last jassign{} that selects it.

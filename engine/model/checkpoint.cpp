@@ -10,10 +10,10 @@
 #include <new>
 
 #include "core/error.hpp"
+#include "contact/detect.hpp"
 #include "io/checkpoint_file.hpp"
 #include "io/h5_archive.hpp"
 #include "model/model.hpp"
-#include "contact/detect.hpp"
 #include "solver/mechanics.hpp"
 #include "solver/prepare.hpp"
 

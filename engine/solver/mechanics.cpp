@@ -13,6 +13,7 @@
 
 #include "core/error.hpp"
 #include "core/names.hpp"
+#include "core/union_find.hpp"
 #include "io/temp_file.hpp"
 #include "model/model.hpp"
 #include "solver/bolt_coupling.hpp"
@@ -635,14 +636,7 @@ std::vector<int> Model::loose_blocks(double speed) const {
   }
   std::vector<int> body(blocks), node_body(static_cast<size_t>(m.node_count), -1);
   for (size_t b = 0; b < blocks; ++b) body[b] = static_cast<int>(b);
-  const auto root = [&](int b) {
-    while (body[static_cast<size_t>(b)] != b) {
-      int& up = body[static_cast<size_t>(b)];
-      up = body[static_cast<size_t>(up)];  // halve the path
-      b = up;
-    }
-    return b;
-  };
+  const auto root = [&](int b) { return find_root(body, b); };
   for (size_t b = 0; b < blocks; ++b) {
     if (!in_place[b]) continue;
     for (int gp = mesh_.block_first_gp[b]; gp < mesh_.block_first_gp[b + 1]; ++gp) {

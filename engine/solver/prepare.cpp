@@ -10,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "contact/detect.hpp"
+#include "core/union_find.hpp"
 #include "crack/judge.hpp"
 #include "solver/bolt_coupling.hpp"
 #include "solver/loads.hpp"
@@ -17,14 +18,6 @@
 
 namespace edem {
 namespace {
-
-int find_root(std::vector<int>& parent, int i) {
-  while (parent[static_cast<size_t>(i)] != i) {
-    parent[static_cast<size_t>(i)] = parent[static_cast<size_t>(parent[static_cast<size_t>(i)])];
-    i = parent[static_cast<size_t>(i)];
-  }
-  return i;
-}
 
 // Mesh gridpoint -> node: gridpoints at the two ends of the same glued segment (edge_glued, per
 // flat loop edge), seen from the blocks on either side, become one node.
