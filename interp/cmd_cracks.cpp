@@ -170,9 +170,18 @@ int run_crackseed(lua_State* L, Context& context, const Args& args) {
   return 0;
 }
 
+const std::vector<std::string>& judging_times() {
+  static const std::vector<std::string> names = {"cycles", "equilibrium"};
+  return names;
+}
+
 int run_judge(lua_State* L, Context& context, const Args& args) {
   JudgeDef def;
-  def.every = static_cast<long>(args.integer("every"));
+  def.at = args.string("at") == "equilibrium" ? JudgeAt::equilibrium : JudgeAt::cycles;
+  if (def.at == JudgeAt::equilibrium && args.has("every"))
+    fail("every is for at = \"cycles\" (a judgment every n cycles); at = \"equilibrium\" judges each "
+         "state a solve{{}} brings to its ratio");
+  if (args.has("every")) def.every = static_cast<long>(args.integer("every"));
   def.most = static_cast<long>(args.integer("most"));
   def.radius = args.number("radius");
   if (args.has("criterion")) def.criterion = lua_criterion(L, args.get<FunctionArg>("criterion").index);
@@ -323,17 +332,26 @@ const Command& judge_command() {
   static const Command command{
       .name = "judge",
       .help =
-          "How potential-crack sections are judged: every n cycles, each intact section's "
-          "stress is fitted from the zones around it (four each side, an equilibrium linear "
-          "field; with radius, also the rest of its two blocks' zones within it) and the section "
-          "breaks in tension when s3 > tension, else in shear when "
-          "(1 - sin phi) s1 - (1 + sin phi) s3 + 2 c cos phi < 0; or by your criterion.",
+          "How and when potential-crack sections are judged. Each intact section's stress is "
+          "fitted from the zones around it (four each side, an equilibrium linear field; with "
+          "radius, also the rest of its two blocks' zones within it) and the section breaks in "
+          "tension when s3 > tension, else in shear when "
+          "(1 - sin phi) s1 - (1 + sin phi) s3 + 2 c cos phi < 0; or by your criterion. "
+          "at = \"cycles\" judges every n cycles while the model moves (the seed's way: what "
+          "breaks depends on how fast loads come on or off); at = \"equilibrium\" judges only "
+          "states a solve{} has brought to its ratio: all sections on one state, those that fail "
+          "break, the model is solved again, and so on until a round breaks none; cycle() judges "
+          "nothing then.",
       .keys =
           {
-              {"every", Type::integer, "", ge(1), "10", "cycles between judgments"},
+              {"at", Type::string, "", any_value, "\"cycles\"",
+               "cycles: every `every` cycles; equilibrium: on each state a solve{} brings to its "
+               "ratio, in rounds until none breaks",
+               "", judging_times},
+              {"every", Type::integer, "", ge(1), kOptional, "cycles between judgments (at = \"cycles\" only)", "10"},
               {"most", Type::integer, "", ge(0), "0",
-               "at most this many sections break at a judgment, those furthest past the built-in "
-               "criteria first (larger of s3 / tension and the Mohr circle's radius over the shear "
+               "at most this many sections break at a judgment (a round, at = \"equilibrium\"), "
+               "those furthest past the built-in criteria first (larger of s3 / tension and the Mohr circle's radius over the shear "
                "strength at its centre); the rest are judged again next time; 0: all that fail"},
               {"radius", Type::number, "m", ge(0), "0",
                "the stress is also fitted to every zone of the section's two blocks whose "

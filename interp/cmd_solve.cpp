@@ -105,18 +105,36 @@ int run_solve(lua_State* L, Context& context, const Args& args) {
     return context.model().solve(def);
   }();
   if (!context.quiet) {
+    // With judging on equilibrium states: the rounds, and, short of the ratio, that the last
+    // round's breaks found no equilibrium in the cycles given.
+    const auto plural = [](int n) { return n == 1 ? "" : "s"; };
+    std::string rounds;
+    if (result.judgments > 0)
+      rounds = fmt::format("; {} section{} broke in {} judgment{} at equilibrium", result.broke, plural(result.broke),
+                           result.judgments, plural(result.judgments));
     if (result.converged)
-      fmt::print("solve: {} cycles, ratio {:.3g}\n", result.cycles, result.ratio);
-    else
-      fmt::print("solve: stopped after {} cycles at ratio {:.3g} (not converged to {:.3g})\n",
+      fmt::print("solve: {} cycles, ratio {:.3g}{}\n", result.cycles, result.ratio, rounds);
+    else if (result.unjudged && result.broke > 0)
+      fmt::print("solve: stopped after {} cycles at ratio {:.3g} (not converged to {:.3g}){}: the breaks of the "
+                 "last judgment found no new equilibrium in the cycles given (is the rock collapsing?); the state "
+                 "is kept as it is, not judged\n",
+                 result.cycles, result.ratio, def.ratio, rounds);
+    else if (result.unjudged)
+      fmt::print("solve: stopped after {} cycles at ratio {:.3g} (not converged to {:.3g}); its state is not an "
+                 "equilibrium and was not judged\n",
                  result.cycles, result.ratio, def.ratio);
+    else
+      fmt::print("solve: stopped after {} cycles at ratio {:.3g} (not converged to {:.3g}){}\n", result.cycles,
+                 result.ratio, def.ratio, rounds);
     std::fflush(stdout);
   }
-  lua_createtable(L, 0, 3);
+  lua_createtable(L, 0, 5);
   set_field(L, "cycles", static_cast<long long>(result.cycles));
   set_field(L, "ratio", result.ratio);
   lua_pushboolean(L, result.converged);
   lua_setfield(L, -2, "converged");
+  set_field(L, "judgments", static_cast<long long>(result.judgments));
+  set_field(L, "broke", static_cast<long long>(result.broke));
   return 1;
 }
 
@@ -229,7 +247,9 @@ const Command& solve_command() {
       .name = "solve",
       .help =
           "Cycles until the unbalanced-force ratio is at most `ratio`, or `max_cycles` have "
-          "run, and prints one line saying which (not with --quiet).",
+          "run, and prints one line saying which (not with --quiet). With judge{ at = "
+          "\"equilibrium\" } each state at the ratio is judged, and cycling goes on after a "
+          "judgment that broke sections until one breaks none; max_cycles counts them all.",
       .keys =
           {
               {"ratio", Type::number, "-", above_below(0, 1), "1e-5",
@@ -238,7 +258,8 @@ const Command& solve_command() {
               {"max_cycles", Type::integer, "", ge(1), "100000", "stop after this many cycles"},
           },
       .run = run_solve,
-      .returns = "a table: cycles (run by this call), ratio (reached), converged (true or false)",
+      .returns = "a table: cycles (run by this call), ratio (reached), converged (true or false), judgments "
+                 "(with judge{ at = \"equilibrium\"}: the states judged) and broke (the sections they broke)",
       .usage = "solve{ ratio = 1e-5 }\nsolve()",
       .bare_call = true,
   };

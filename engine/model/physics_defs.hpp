@@ -205,6 +205,11 @@ struct SolveResult {
   long cycles = 0;         // cycles done by this solve
   double ratio = 0.0;      // ratio reached
   bool converged = false;
+  // With judge{ at = "equilibrium" }: the judgments made on equilibrium states (each that broke
+  // sections, and the last, which broke none, if the solve converged) and the sections broken.
+  int judgments = 0;
+  int broke = 0;
+  bool unjudged = false;  // stopped short of the ratio with sections intact: its last state not judged
 };
 
 // Where a long cycle() or solve{} stands, for a progress line (Model::set_progress).
@@ -310,10 +315,16 @@ struct CrackView {
   double sxx = 0, syy = 0, sxy = 0;  // the fitted stress that broke it [Pa]
 };
 
-// How sections are judged: every `every` cycles, by the built-in criteria (crack/criteria.hpp)
+// When sections are judged: every n cycles while the model moves (the seed's way), or only on
+// states of equilibrium, each time a solve reaches its ratio, and again after each round of breaks
+// until a round breaks none (what breaks then does not depend on how fast loads were applied).
+enum class JudgeAt : std::uint8_t { cycles, equilibrium };
+
+// How sections are judged: when (`at`, `every`), by the built-in criteria (crack/criteria.hpp)
 // or by `criterion`.
 struct JudgeDef {
-  long every = 10;
+  JudgeAt at = JudgeAt::cycles;
+  long every = 10;  // cycles between judgments with at = cycles
   // At most this many sections break at one judgment, those furthest past the built-in criteria
   // first (crack/criteria.hpp, overstress); the rest wait for the next. 0: every one that fails.
   long most = 0;

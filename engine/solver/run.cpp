@@ -152,9 +152,22 @@ void adapt_damping(Mechanics& m, const Measure& measure) {
   m.adaptive.c = std::min(2.0 * std::sqrt(omega2), 2.0 / m.step);
 }
 
-// Sections are judged while any is intact.
-bool judging(const Mechanics& m) {
+// Some section is still intact.
+bool any_intact(const Mechanics& m) {
   return static_cast<long>(m.cracks.size()) < static_cast<long>(m.sections.size());
+}
+
+// Sections are judged every n cycles (judge{ at = "cycles" }) while any is intact.
+bool judging(const Mechanics& m) { return m.judge.at == JudgeAt::cycles && any_intact(m); }
+
+// With judge{ at = "equilibrium" }, at a state the solve has brought to its ratio: every intact
+// section judged on it. True if the state stands (nothing broke, or judging is not on equilibrium).
+bool stands_judged(Mechanics& m, const Mesh& mesh, SolveResult& result) {
+  if (m.judge.at != JudgeAt::equilibrium || !any_intact(m)) return true;
+  ++result.judgments;
+  const int broke = judge_sections(m, mesh);
+  result.broke += broke;
+  return broke == 0;
 }
 
 long next_due(const Mechanics& m, long cycle) {
@@ -276,7 +289,7 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
   if (target_ratio > 0.0 && m.release.dof.empty()) {
     const Measure now = measure_state(m);
     m.info.ratio = now.applied > 0.0 ? now.unbalanced / now.applied : 0.0;
-    if (m.info.ratio <= target_ratio) {
+    if (m.info.ratio <= target_ratio && stands_judged(m, mesh, result)) {
       result.ratio = m.info.ratio;
       result.converged = true;
       return result;
@@ -329,7 +342,8 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
     // A model that has just cracked is not in equilibrium, whatever the ratio said before.
     const bool cracked = run_due(m, mesh, m.info.cycle, commands_pending);
     // Nor is one whose excavation loads are still coming off.
-    if (target_ratio > 0.0 && m.info.ratio <= target_ratio && !cracked && !releasing) {
+    if (target_ratio > 0.0 && m.info.ratio <= target_ratio && !cracked && !releasing &&
+        stands_judged(m, mesh, result)) {
       result.converged = true;
       break;
     }
@@ -349,6 +363,7 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
     }
   }
   result.ratio = m.info.ratio;
+  result.unjudged = !result.converged && m.judge.at == JudgeAt::equilibrium && any_intact(m);
   return result;
 }
 

@@ -1,6 +1,7 @@
 // judge{ most = n }: at most n sections break at a judgment, those furthest past the built-in
 // criteria first; the rest wait for the next judgment. judge{ radius = r }: a section's stress is
-// fitted to its two blocks' zones within r of its point as well.
+// fitted to its two blocks' zones within r of its point as well. judge{ at = "equilibrium" }:
+// sections judged only on the states a solve brings to its ratio, in rounds until none breaks.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -207,6 +208,80 @@ TEST(JudgeRadius, ACheckpointKeepsIt) {
 
 TEST(JudgeRadius, ANegativeRadiusIsAnErrorNamingIt) {
   EXPECT_TRUE(test::contains(test::error_of("judge{ radius = -1 }"), "radius"));
+}
+
+// judge{ at = "equilibrium" }: the bar of kStep held at both ends (its stress in equilibrium from
+// the start), every section past its strength.
+std::string held_bar(const std::string& judge) {
+  return bar() + "boundary{ side = \"bottom\", fix = \"xy\" }\nboundary{ side = \"top\", fix = \"xy\" }\n" + judge;
+}
+
+SolveResult last_solve(Interpreter& interpreter) { return interpreter.context().model().solve({}); }
+
+TEST(JudgeAtEquilibrium, CyclingJudgesNothing) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, held_bar("judge{ at = \"equilibrium\" }\ncycle(100)"));
+  EXPECT_EQ(broken(interpreter).count, 0);
+}
+
+TEST(JudgeAtEquilibrium, ASolveJudgesTheStateAtItsRatioUntilNoneBreaks) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, held_bar("judge{ at = \"equilibrium\" }"));
+  const SolveResult r = last_solve(interpreter);
+  const int sections = interpreter.context().model().info().sections;
+  EXPECT_TRUE(r.converged);
+  EXPECT_EQ(r.broke, sections);  // all past their strength on the first state judged
+  EXPECT_EQ(broken(interpreter).count, sections);
+  EXPECT_EQ(r.judgments, 1);  // none left intact to judge again
+}
+
+// One at a time, the furthest past first: the crack that opens across the bar first relieves the
+// rest, which a judgment of all at once breaks too.
+TEST(JudgeAtEquilibrium, MostBreaksTheFurthestPastFirstRoundByRound) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, held_bar("judge{ at = \"equilibrium\", most = 2 }"));
+  const SolveResult r = last_solve(interpreter);
+  const int sections = interpreter.context().model().info().sections;
+  EXPECT_TRUE(r.converged);
+  EXPECT_EQ(r.judgments, r.broke / 2 + 1);  // two a round, then a round that broke none
+  EXPECT_LT(r.broke, sections);
+  const Model& model = interpreter.context().model();
+  ASSERT_GE(model.crack_count(), 2);
+  EXPECT_GT(model.crack(0).position.x, 0.0);  // the 0.08 MPa side first
+  EXPECT_GT(model.crack(1).position.x, 0.0);
+}
+
+// Under load control a bar that breaks through finds no equilibrium: the solve stops at its
+// max_cycles with the breaks kept, never hangs.
+TEST(JudgeAtEquilibrium, ACollapseEndsAtMaxCyclesWithTheStateKept) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, test::seed_bar("0.25") +
+                               "boundary{ side = \"bottom\", fix = \"xy\" }\n"
+                               "boundary{ side = \"top\", stress = {0, 0.06e6, 0} }\n"
+                               "judge{ at = \"equilibrium\" }");
+  const SolveResult r = interpreter.context().model().solve({.ratio = 1e-5, .max_cycles = 5000});
+  EXPECT_FALSE(r.converged);
+  EXPECT_EQ(r.cycles, 5000);
+  EXPECT_GT(r.broke, 0);
+  EXPECT_EQ(broken(interpreter).count, r.broke);
+}
+
+TEST(JudgeAtEquilibrium, ACheckpointKeepsIt) {
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / ("edem_judge_at_" + std::to_string(::getpid()) + ".h5");
+  Interpreter first;
+  first.context().quiet = true;
+  expect_runs(first, held_bar("judge{ at = \"equilibrium\" }\nsave('" + file.string() + "')"));
+  Interpreter second;
+  second.context().quiet = true;
+  expect_runs(second, "restore('" + file.string() + "')\ncycle(100)");
+  std::filesystem::remove(file);
+  EXPECT_EQ(broken(second).count, 0);
+  EXPECT_GT(last_solve(second).broke, 0);
 }
 
 }  // namespace

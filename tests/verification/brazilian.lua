@@ -20,7 +20,11 @@
 -- cracks over 90 % of the loaded diameter), its load has fallen below half the peak, or 30 steps
 -- after the first crack. Under the jaws' even displacement the load gathers at their ends and the
 -- centre's tension is 0.953 of 2P/(pi D) (measured, elastic), so the disc should split at about
--- F / 0.953 = 1.05 F; it does at 1.04 F with either criterion (about 15 s in all).
+-- F / 0.953 = 1.05 F; it does at 1.04 F with either criterion.
+--
+-- Judged at equilibrium (judge{ at = "equilibrium" }, criterion (i)): the same steps, each pushed at
+-- once and solved, and the load in one step: the jaw pushed at once to a displacement on a fresh
+-- disc, the least that cracks it bisected; the peak load so found against F and against the steps'.
 --
 -- Two criteria, as VERIFICATION.md §8a asks: (i) the built-in one on the principal stresses at a
 -- section's point, whatever the section's direction; (ii) a Lua criterion on the tractions on
@@ -47,7 +51,7 @@ local LOW = R * math.cos(math.rad(ALPHA)) - 1e-3
 local TOP = { { -HALF, LOW }, { HALF, LOW }, { HALF, R + 0.01 }, { -HALF, R + 0.01 } }
 local BOTTOM = { { -HALF, -LOW }, { -HALF, -R - 0.01 }, { HALF, -R - 0.01 }, { HALF, -LOW } }
 
-local function build(label, criterion)
+local function build(label, criterion, at)
   model{ title = label }
   local outline = {}
   -- Vertices at 1.5 + 3 k deg: the jaws' ends (at 90 +- 7.5 deg) are vertices, and no vertex
@@ -64,7 +68,11 @@ local function build(label, criterion)
             tension = ROCK.tension }
   assign{ material = "rock" }
   joint_material{ "crack", kn = 100e9, ks = 100e9, friction = 31.2 }
-  judge{ every = 10, criterion = criterion }
+  if at == "equilibrium" then
+    judge{ at = "equilibrium", criterion = criterion }
+  else
+    judge{ every = 10, criterion = criterion }
+  end
   boundary{ polygon = BOTTOM, fix = "y" }
   local tip = 1e-3
   boundary{ polygon = { { -tip, -R - tip }, { tip, -R - tip }, { tip, -LOW }, { -tip, -LOW } }, fix = "x" }
@@ -102,16 +110,23 @@ local function split_length()
   return length
 end
 
-local function run(label, criterion)
-  local started = os.clock()
-  build(label, criterion)
-  -- The displacement at F, from the stiffness of a first small step.
+-- The displacement at F, from the stiffness of a first small step.
+local function reach_of_F()
   local probe = 1e-5
   step(probe, probe / 200)
-  local reach = probe * F / load()
-  local pushed, peak, at_peak, before = probe, 0, 0, 0
+  return probe * F / load(), probe
+end
+
+-- Judged every 10 cycles the jaw must move slowly (a load read while it moves lags the stress
+-- inside); judged at equilibrium it moves each step at once (in 10 cycles).
+local function run(label, criterion, at)
+  local started = os.clock()
+  build(label, criterion, at)
+  local slow = at ~= "equilibrium"
+  local reach, pushed = reach_of_F()
+  local peak, at_peak, before = 0, 0, 0
   for k = 1, 4 do
-    step(0.2 * k * reach - pushed, reach / 4000)
+    step(0.2 * k * reach - pushed, slow and reach / 4000 or reach)
     pushed = 0.2 * k * reach
   end
   local steps, cracked = 0, nil
@@ -121,7 +136,7 @@ local function run(label, criterion)
     if p > peak then peak, at_peak = p, pushed end
     cracked = cracked or (info().cracks > 0 and steps)
     if cracked and (p < 0.5 * peak or split_length() >= 0.9 * 2 * R or steps - cracked >= 30) then break end
-    step(0.01 * reach, reach / 40000)
+    step(0.01 * reach, slow and reach / 40000 or reach)
     pushed, steps = pushed + 0.01 * reach, steps + 1
   end
   -- The first crack: the sections broken at the first judgment that broke any.
@@ -156,8 +171,11 @@ local function traction_criterion(s)
   return nil
 end
 
-for _, case in ipairs({ { "principal stresses (i)", nil }, { "tractions on the plane (ii)", traction_criterion } }) do
-  local r = run(case[1], case[2])
+local gradual_peak
+for _, case in ipairs({ { "principal stresses (i)", nil }, { "tractions on the plane (ii)", traction_criterion },
+                        { "judged at equilibrium (i)", nil, "equilibrium" } }) do
+  local r = run(case[1], case[2], case[3])
+  if case[3] then gradual_peak = r.peak end
   local n = #r.first
   check.report(case[1] .. ": peak load [N/m]", r.peak, F, 0.10)
   check.report(case[1] .. ": first crack's sections in tension", r.tension, n, 0, { absolute = true })
@@ -169,4 +187,30 @@ for _, case in ipairs({ { "principal stresses (i)", nil }, { "tractions on the p
   check.report(case[1] .. ": split along the diameter [m] (at least 0.9 D)", math.min(r.split, 0.9 * 2 * R),
                0.9 * 2 * R, 1e-9)
 end
+
+-- Judged at equilibrium, the jaw pushed at once to a displacement on a fresh disc and solved: the
+-- least displacement that cracks it, bisected to 0.3 % of the reach between 80 and 120 %, and the
+-- load at the largest that does not (the peak with the load in one step) against F and against
+-- the peak in 1 % steps above.
+build("judged at equilibrium, at once", nil, "equilibrium")
+local reach = reach_of_F()
+local function splits_at_once(d)
+  build("judged at equilibrium, at once", nil, "equilibrium")
+  step(d * reach, reach)
+  return info().cracks > 0, load()
+end
+local lo, hi = 0.8, 1.2
+local split_lo, peak = splits_at_once(lo)
+local split_hi = splits_at_once(hi)
+for _ = 1, 7 do
+  local mid = 0.5 * (lo + hi)
+  local split, p = splits_at_once(mid)
+  if split then hi = mid else lo, peak = mid, p end
+end
+print(("judged at equilibrium, jaw pushed at once: no crack at %.4f of the reach of F (load %.6g N/m), cracks at "
+       .. "%.4f"):format(lo, peak, hi))
+check.report("judged at equilibrium, at once: no crack at 0.8, cracks at 1.2 of the reach (1 = yes)",
+             (not split_lo and split_hi) and 1 or 0, 1, 0, { absolute = true })
+check.report("judged at equilibrium, at once: peak load [N/m]", peak, F, 0.10)
+check.report("judged at equilibrium: peak at once against in 1 % steps", peak, gradual_peak, 0.01)
 check.finish()

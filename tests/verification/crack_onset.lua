@@ -24,6 +24,12 @@
 -- depend on the orientation of the cracks; the uniaxial case is repeated with both sets turned
 -- by 15 and 30 degrees and must give the same onset within 0.2 % (the meshes differ, and so
 -- does the small unevenness of the stress while the top moves).
+-- Judged at equilibrium (judge{ at = "equilibrium" }), the same four onsets twice: with the load
+-- put on at once (the platen stress on a fresh sample, solved; the onset bisected between 90 and
+-- 115 % of the closed form: none breaks below it, sections of the right mode above), and in steps
+-- pushed at once and solved (the first crack's own record gives the stress of the equilibrium
+-- that broke it). Under load control the broken sample finds no new equilibrium in tension; the
+-- solve then stops at its max_cycles with the state kept.
 -- Tolerance: 1 % (VERIFICATION.md "good").
 local check = require "edem.check"
 
@@ -36,7 +42,7 @@ local sin_phi = math.sin(math.rad(ROCK.friction))
 local UCS = 2 * ROCK.cohesion * math.cos(math.rad(ROCK.friction)) / (1 - sin_phi)
 local KP = (1 + sin_phi) / (1 - sin_phi)
 
-local function build(label, s3, turn)
+local function build(label, s3, turn, at)
   model{ title = label }
   block{ x = { -W / 2, W / 2 }, y = { 0, H } }
   local a = 45 + ROCK.friction / 2
@@ -48,7 +54,7 @@ local function build(label, s3, turn)
             cohesion = ROCK.cohesion, friction = ROCK.friction, tension = ROCK.tension }
   assign{ material = "rock" }
   joint_material{ "crack", kn = 1880e6, ks = 1880e6, friction = 31.2 }
-  judge{ every = 10 }
+  if at == "equilibrium" then judge{ at = "equilibrium" } else judge{ every = 10 } end
   boundary{ side = "bottom", fix = "y" }
   local centre = gp_near(0, 0).position  -- a gridpoint of the base near its centre
   local d = 0.1 * EDGE
@@ -134,5 +140,51 @@ for _, turn in ipairs({ 15, 30 }) do
   local label = ("uniaxial compression, cracks turned %d deg"):format(turn)
   local q = first_crack(label, 0, turn, UCS, -1)
   check.report(label .. ": onset as unturned", q, uniaxial, 0.002)
+end
+
+-- Judged at equilibrium (judge{ at = "equilibrium" }): nothing is judged while the load comes on,
+-- so how fast it comes on no longer matters.
+-- Load in one step: the platen stress put on at once on a fresh sample and solved; the onset is
+-- bisected between 90 % and 115 % of the closed form, to 0.1 % of it.
+local function breaks_at_once(case, q)
+  build(case.label, case.s3, 0, "equilibrium")
+  boundary{ side = "top", stress = { 0, case.sign * q, 0 } }
+  local r = solve{ ratio = RATIO, max_cycles = 5000 }
+  local c = cracks()()
+  return r.broke > 0, c and c.mode
+end
+-- Gradually: the top pushed in steps, each at once (10 cycles) and solved, of 5 % of the
+-- displacement to the onset up to 90 % of it, then of 0.2 %; the first crack's own record gives the
+-- stress of the equilibrium that broke it.
+local function first_crack_at_equilibrium(case)
+  build(case.label, case.s3, 0, "equilibrium")
+  local reach = (case.onset - case.s3) * H / ROCK.young
+  local pushed, size = 0, 0.05
+  while not cracks()() and pushed < 1.1 * reach do
+    if pushed >= 0.9 * reach then size = 0.002 end
+    step(case.sign * size * reach, reach)
+    pushed = pushed + size * reach
+  end
+  local c = cracks()()
+  if not c then error(case.label .. ": no crack at equilibrium by 110 % of the onset") end
+  return case.sign * c.syy, c.mode
+end
+for _, case in ipairs(cases) do
+  local label = case.label .. ", judged at equilibrium"
+  local lo, hi = 0.9 * case.onset, 1.15 * case.onset
+  local broke_lo = breaks_at_once(case, lo)
+  local broke_hi, mode = breaks_at_once(case, hi)
+  for _ = 1, 8 do
+    local mid = 0.5 * (lo + hi)
+    if breaks_at_once(case, mid) then hi = mid else lo = mid end
+  end
+  print(("%s: load at once, none broke at %.6g Pa, sections broke at %.6g Pa"):format(label, lo, hi))
+  check.report(label .. ", load at once: onset [Pa]", 0.5 * (lo + hi), case.onset, 0.01)
+  check.report(label .. ", load at once: none at 90 %, " .. case.mode .. " at 115 % (1 = yes)",
+               (not broke_lo and broke_hi and mode == case.mode) and 1 or 0, 1, 0, { absolute = true })
+  local q, first_mode = first_crack_at_equilibrium(case)
+  check.report(label .. ", in steps: stress at the first crack [Pa]", q, case.onset, 0.01)
+  check.report(label .. ", in steps: mode " .. case.mode .. " (1 = right)", first_mode == case.mode and 1 or 0, 1, 0,
+               { absolute = true })
 end
 check.finish()

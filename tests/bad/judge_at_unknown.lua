@@ -1,0 +1,3 @@
+-- line: 3
+-- expect: judge: at must be one of cycles, equilibrium, got "equilibrum" \(did you mean .equilibrium.\?\)
+judge{ at = "equilibrum" }
