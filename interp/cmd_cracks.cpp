@@ -179,8 +179,8 @@ int run_judge(lua_State* L, Context& context, const Args& args) {
   JudgeDef def;
   def.at = args.string("at") == "equilibrium" ? JudgeAt::equilibrium : JudgeAt::cycles;
   if (def.at == JudgeAt::equilibrium && args.has("every"))
-    fail("every is for at = \"cycles\" (a judgment every n cycles); at = \"equilibrium\" judges each "
-         "state a solve{{}} brings to its ratio");
+    fail("every is for at = \"cycles\" (a judgment every n cycles); at = \"equilibrium\" "
+         "judges each state a solve{{}} brings to its ratio");
   if (args.has("every")) def.every = static_cast<long>(args.integer("every"));
   def.most = static_cast<long>(args.integer("most"));
   def.radius = args.number("radius");
@@ -348,11 +348,13 @@ const Command& judge_command() {
                "cycles: every `every` cycles; equilibrium: on each state a solve{} brings to its "
                "ratio, in rounds until none breaks",
                "", judging_times},
-              {"every", Type::integer, "", ge(1), kOptional, "cycles between judgments (at = \"cycles\" only)", "10"},
+              {"every", Type::integer, "", ge(1), kOptional,
+               "cycles between judgments (at = \"cycles\" only)", "10"},
               {"most", Type::integer, "", ge(0), "0",
                "at most this many sections break at a judgment (a round, at = \"equilibrium\"), "
-               "those furthest past the built-in criteria first (larger of s3 / tension and the Mohr circle's radius over the shear "
-               "strength at its centre); the rest are judged again next time; 0: all that fail"},
+               "those furthest past the built-in criteria first (larger of s3 / tension and the "
+               "Mohr circle's radius over the shear strength at its centre); the rest are judged "
+               "again next time; 0: all that fail"},
               {"radius", Type::number, "m", ge(0), "0",
                "the stress is also fitted to every zone of the section's two blocks whose "
                "centroid lies within this distance of its point: a length of the rock's, so that "

@@ -110,14 +110,14 @@ int run_solve(lua_State* L, Context& context, const Args& args) {
     const auto plural = [](int n) { return n == 1 ? "" : "s"; };
     std::string rounds;
     if (result.judgments > 0)
-      rounds = fmt::format("; {} section{} broke in {} judgment{} at equilibrium", result.broke, plural(result.broke),
-                           result.judgments, plural(result.judgments));
+      rounds = fmt::format("; {} section{} broke in {} judgment{} at equilibrium", result.broke,
+                           plural(result.broke), result.judgments, plural(result.judgments));
     if (result.converged)
       fmt::print("solve: {} cycles, ratio {:.3g}{}\n", result.cycles, result.ratio, rounds);
     else if (result.unjudged && result.broke > 0)
-      fmt::print("solve: stopped after {} cycles at ratio {:.3g} (not converged to {:.3g}){}: the breaks of the "
-                 "last judgment found no new equilibrium in the cycles given (is the rock collapsing?); the state "
-                 "is kept as it is, not judged\n",
+      fmt::print("solve: stopped after {} cycles at ratio {:.3g} (not converged to {:.3g}){}: the "
+                 "breaks of the last judgment found no new equilibrium in the cycles given (is the "
+                 "rock collapsing?); the state is kept as it is, not judged\n",
                  result.cycles, result.ratio, def.ratio, rounds);
     else if (result.unjudged)
       fmt::print("solve: stopped after {} cycles at ratio {:.3g} (not converged to {:.3g}); its state is not an "

@@ -209,7 +209,8 @@ struct SolveResult {
   // sections, and the last, which broke none, if the solve converged) and the sections broken.
   int judgments = 0;
   int broke = 0;
-  bool unjudged = false;  // stopped short of the ratio with sections intact: its last state not judged
+  // Stopped short of the ratio with sections intact: its last state was not judged.
+  bool unjudged = false;
 };
 
 // Where a long cycle() or solve{} stands, for a progress line (Model::set_progress).

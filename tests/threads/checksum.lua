@@ -1,6 +1,6 @@
 -- A run that exercises every pass of the cycle (Mohr-Coulomb zones that yield, gravity,
 -- stress and fixed boundaries, adaptive damping, glued blocks; then the mixed discretisation;
--- then contacts between jointed blocks)
+-- then contacts between jointed blocks; then potential cracks judged at equilibrium)
 -- and prints a checksum of the state after each part: every displacement, velocity and stress,
 -- as exact hexadecimal floats.
 -- tests/threads/compare.cmake runs it with --threads 1 and --threads 2; the sums must agree.
@@ -67,4 +67,27 @@ for c in contacts() do
   if c.state == "slip" then sliding = sliding + 1 end
 end
 print(("zones %d, contacts %d, slipping %d"):format(info().zones, info().contacts, sliding))
+
+-- Potential cracks judged at equilibrium: a hole dug at once in weak rock, judged in rounds until
+-- none breaks; every crack (where, how, when) and the state go in.
+model{ title = "cracks at equilibrium" }
+block{ x = { 0, 40 }, y = { 0, 30 } }
+region{ name = "hole", polygon = shapes.circle{ centre = { 20, 15 }, radius = 3, segments = 32 } }
+region{ name = "ring", polygon = shapes.circle{ centre = { 20, 15 }, radius = 7, segments = 32 } }
+crackseed{ region = "ring", angles = { 30, 120 }, spacing = 1, material = "strength", after = "crack" }
+zone{ edge = 0.5, far = 2, near = { "ring" } }
+material{ "rock", density = 2500, young = 2e9, poisson = 0.25 }
+material{ "strength", model = "mohr", young = 2e9, poisson = 0.25, cohesion = 1e6, friction = 30,
+          tension = 0.3e6 }
+assign{ material = "rock" }
+joint_material{ "crack", kn = 2e10, ks = 1e10, friction = 30 }
+insitu{ sxx = -3e6, syy = -5e6, szz = -4e6 }
+for _, side in ipairs{ "left", "right", "top", "bottom" } do boundary{ side = side, fix = "xy" } end
+judge{ at = "equilibrium" }
+excavate{ region = "hole" }
+local judged = solve{ ratio = 1e-5, max_cycles = 20000 }
+add_state()
+for c in cracks() do add(("%a %a %s %d"):format(c.x, c.y, c.mode, c.cycle)) end
+print(("sections %d, cracks %d in %d judgments at equilibrium"):format(info().sections, info().cracks,
+                                                                      judged.judgments))
 print(("checksum %016x"):format(hash))
