@@ -658,6 +658,14 @@ std::vector<int> Model::loose_blocks(double speed) const {
       ++moving[r];
     }
   }
+  // The load of an excavation still coming off holds the new face it pushes on: the rock dug
+  // away bears on it until its release ends.
+  const ReleaseLoad& release = m.release;
+  if (release.factor > 0.0)
+    for (size_t i = 0; i < release.dof.size(); ++i) {
+      const int body_of = node_body[static_cast<size_t>(release.dof[i] / 2)];
+      if (body_of >= 0 && release.force[i] != 0.0) held[static_cast<size_t>(root(body_of))] = 1;
+    }
   for (const Contact& c : m.contacts.list) {
     if (c.state == ContactState::open || !(c.sn > 0.0)) continue;
     const int a = node_body[static_cast<size_t>(c.node)];

@@ -254,6 +254,32 @@ TEST(Excavation, LooseBlocksAreThoseHeldByNothingOrMovingFast) {
   EXPECT_TRUE(contains(error, "speed")) << error;
 }
 
+// While an excavation's load comes off, the rock it pushes on is held by it: not loose until the
+// release ends (muck out would take a wall the dug rock still bears on).
+TEST(Excavation, RockTheReleaseStillPushesOnIsNotLoose) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, R"(
+    block{ x = {0, 4}, y = {0, 2} }
+    region{ name = "dig", polygon = {{-1, -1}, {5, -1}, {5, 1}, {-1, 1}} }
+    zone{ edge = 0.5 }
+    material{ "rock", density = 2500, young = 1e9, poisson = 0.25 }
+    assign{ material = "rock" }
+    insitu{ sxx = -1e6, syy = -1e6, szz = -1e6 }
+    local function loose()
+      local n = 0
+      for _ in loose_blocks{} do n = n + 1 end
+      return n
+    end
+    assert(loose() == 2, "held by nothing: " .. loose())  -- the two glued blocks, each listed
+    excavate{ region = "dig", release = 1000 }
+    cycle(10)
+    assert(loose() == 0, "while the release runs: " .. loose())
+    cycle(1000)
+    assert(loose() == 1, "after it: " .. loose())
+  )");
+}
+
 // A block mucked out while its step's load comes off takes its share of the load with it: its
 // nodes are no longer cycled, and their last velocity went on counting the share's work (the
 // balance's error was 98 % of its largest term here).
