@@ -283,12 +283,15 @@ if DAMPING == "local" then set{ damping = "local", local_damping = 0.8 } end
 
 -- Measuring points, in the rock left in place: the gridpoint nearest to the crown, and those
 -- nearest to the side walls at y = 0.
-local in_cavern = {}
+local in_cavern = {}    -- block id -> true: rock of one of the steps
+local dug_at_step = {}  -- block id -> the step that digs it
 do
-  local stage_names = {}
-  for _, s in ipairs(c.stages) do stage_names[s.name] = true end
+  local stage_of = {}
+  for k, s in ipairs(c.stages) do stage_of[s.name] = k end
   for b in blocks() do
-    for _, name in ipairs(b.regions) do if stage_names[name] then in_cavern[b.id] = true end end
+    for _, name in ipairs(b.regions) do
+      if stage_of[name] then in_cavern[b.id], dug_at_step[b.id] = true, stage_of[name] end
+    end
   end
 end
 local function rock_gridpoint_near(x, y)
@@ -375,10 +378,22 @@ local function in_the_opening(moved)
   end
   return taken
 end
+-- Judged at equilibrium, what is mucked out must not depend on the release any more than what
+-- breaks: a loose block goes only if it was loose at the check before too, 200 cycles earlier (a
+-- block a step's transient lifts off its seat for a moment has not fallen), and rock of a step not
+-- yet dug stays for its step (with the load of a step coming off over 100 cycles, the next bench
+-- down was found loose and taken, and the step after had nothing left to dig).
+local loose_before = {}
 local function muck_out()
   local moved = {}
   if MUCK == "loose" then
-    for b in loose_blocks{} do moved[#moved + 1] = b end
+    local loose_now = {}
+    for b in loose_blocks{} do
+      loose_now[b.id] = true
+      local later = dug_at_step[b.id] and dug_at_step[b.id] > step_now
+      if JUDGE_AT ~= "equilibrium" or (loose_before[b.id] and not later) then moved[#moved + 1] = b end
+    end
+    loose_before = loose_now
   else
     for b in moved_blocks(1.0) do moved[#moved + 1] = b end
   end

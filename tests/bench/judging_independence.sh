@@ -7,7 +7,7 @@
 # each run's seconds and cycles; exits 1 if the equilibrium mode's spread is over 3 % in cracks or
 # 2 % in crown settlement.
 #   bash tests/bench/judging_independence.sh [--edem PATH] [--out DIR] [--jobs N] [--threads M]
-# One thread a run and two runs at a time on two cores take about an hour (tests/bench/RESULTS.md).
+# One thread a run and two runs at a time on two cores take about half an hour (tests/bench/RESULTS.md).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 edem=$root/build/interp/edem out=judging-independence jobs=2 threads=1
