@@ -194,23 +194,23 @@ end
 -- the peak in 1 % steps above.
 build("judged at equilibrium, at once", nil, "equilibrium")
 local reach = reach_of_F()
-local function splits_at_once(d)
+local function cracks_at_once(d)
   build("judged at equilibrium, at once", nil, "equilibrium")
   step(d * reach, reach)
   return info().cracks > 0, load()
 end
 local lo, hi = 0.8, 1.2
-local split_lo, peak = splits_at_once(lo)
-local split_hi = splits_at_once(hi)
+local cracked_lo, peak = cracks_at_once(lo)
+local cracked_hi = cracks_at_once(hi)
 for _ = 1, 7 do
   local mid = 0.5 * (lo + hi)
-  local split, p = splits_at_once(mid)
-  if split then hi = mid else lo, peak = mid, p end
+  local cracked, p = cracks_at_once(mid)
+  if cracked then hi = mid else lo, peak = mid, p end
 end
 print(("judged at equilibrium, jaw pushed at once: no crack at %.4f of the reach of F (load %.6g N/m), cracks at "
        .. "%.4f"):format(lo, peak, hi))
 check.report("judged at equilibrium, at once: no crack at 0.8, cracks at 1.2 of the reach (1 = yes)",
-             (not split_lo and split_hi) and 1 or 0, 1, 0, { absolute = true })
+             (not cracked_lo and cracked_hi) and 1 or 0, 1, 0, { absolute = true })
 check.report("judged at equilibrium, at once: peak load [N/m]", peak, F, 0.10)
 check.report("judged at equilibrium: peak at once against in 1 % steps", peak, gradual_peak, 0.01)
 check.finish()
