@@ -42,7 +42,9 @@
 --             that fell), moved (every block with a gridpoint 1 m from where it started, which
 --             under Set P's soft joints takes rock still in place) or opening (of those, the ones
 --             whose centre has moved into the opening dug so far) [loose]
---             (scripts/paper/README.md, "Where EDEM disagrees": what a cave-in is)
+--             (scripts/paper/README.md, "Where EDEM disagrees": what a cave-in is); with
+--             judge = equilibrium a loose block goes only if loose at the check before too, and
+--             never rock of a step not yet dug
 --   damping   the excavation steps' damping: local (Itasca's local damping, 0.8: DESIGN.md's for
 --             static problems, UDEC's default) or adaptive (viscous, 2 omega from the displacement
 --             so far: set{}'s default, the studies' until session 29) [local] (scripts/paper/
