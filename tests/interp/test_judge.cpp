@@ -237,8 +237,8 @@ TEST(JudgeAtEquilibrium, ASolveJudgesTheStateAtItsRatioUntilNoneBreaks) {
   EXPECT_EQ(r.judgments, 1);  // none left intact to judge again
 }
 
-// One at a time, the furthest past first: the crack that opens across the bar first relieves the
-// rest, which a judgment of all at once breaks too.
+// Two a round (most = 2), the furthest past first: the crack that opens across the bar first
+// relieves the rest, which a judgment of all at once breaks too.
 TEST(JudgeAtEquilibrium, MostBreaksTheFurthestPastFirstRoundByRound) {
   Interpreter interpreter;
   interpreter.context().quiet = true;
