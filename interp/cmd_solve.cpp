@@ -105,27 +105,25 @@ int run_solve(lua_State* L, Context& context, const Args& args) {
     return context.model().solve(def);
   }();
   if (!context.quiet) {
-    // With judging on equilibrium states: the rounds, and, short of the ratio, that the last
-    // round's breaks found no equilibrium in the cycles given.
+    // With judging on equilibrium states: the judgments and what they broke.
     const auto plural = [](int n) { return n == 1 ? "" : "s"; };
     std::string rounds;
     if (result.judgments > 0)
       rounds = fmt::format("; {} section{} broke in {} judgment{} at equilibrium", result.broke,
                            plural(result.broke), result.judgments, plural(result.judgments));
+    // Short of the ratio after breaks: they found no new equilibrium; short of it with sections
+    // intact and none broken: the last state was not judged.
+    std::string why;
+    if (result.broke > 0)
+      why = ": the breaks of the last judgment found no new equilibrium in the cycles given (is the "
+            "rock collapsing?); the state is kept as it is";
+    else if (result.unjudged)
+      why = "; its state is not an equilibrium and was not judged";
     if (result.converged)
       fmt::print("solve: {} cycles, ratio {:.3g}{}\n", result.cycles, result.ratio, rounds);
-    else if (result.unjudged && result.broke > 0)
-      fmt::print("solve: stopped after {} cycles at ratio {:.3g} (not converged to {:.3g}){}: the "
-                 "breaks of the last judgment found no new equilibrium in the cycles given (is the "
-                 "rock collapsing?); the state is kept as it is, not judged\n",
-                 result.cycles, result.ratio, def.ratio, rounds);
-    else if (result.unjudged)
-      fmt::print("solve: stopped after {} cycles at ratio {:.3g} (not converged to {:.3g}); its state is not an "
-                 "equilibrium and was not judged\n",
-                 result.cycles, result.ratio, def.ratio);
     else
-      fmt::print("solve: stopped after {} cycles at ratio {:.3g} (not converged to {:.3g}){}\n", result.cycles,
-                 result.ratio, def.ratio, rounds);
+      fmt::print("solve: stopped after {} cycles at ratio {:.3g} (not converged to {:.3g}){}{}\n",
+                 result.cycles, result.ratio, def.ratio, rounds, why);
     std::fflush(stdout);
   }
   lua_createtable(L, 0, 5);
