@@ -379,7 +379,7 @@ class BaseCutter {
     for (size_t i = 1; i < pts.size(); ++i)
       if (CGAL::compare_distance_to_point(q, pts[i], pts[nearest_vertex]) == CGAL::SMALLER)
         nearest_vertex = i;
-    if (pts[nearest_vertex] == q) return false;
+    if (pts[nearest_vertex] == q) return drop_close_neighbours(id, nearest_vertex);
     if (CGAL::compare(CGAL::squared_distance(q, pts[nearest_vertex]), tolerance2_at(q)) ==
         CGAL::SMALLER) {
       pts[nearest_vertex] = q;
@@ -400,6 +400,69 @@ class BaseCutter {
     return true;
   }
 
+  // Piece `id` already has vertex k where it is bent to: its neighbours closer than the
+  // tolerance to it go (a small feature the piece makes by itself). False if none did.
+  bool drop_close_neighbours(int id, size_t k) {
+    auto& pts = pieces_[static_cast<size_t>(id)].points;
+    const Point q = pts[k];
+    const auto close = [&](size_t i) {
+      return CGAL::compare(CGAL::squared_distance(q, pts[i]), tolerance2_at(q)) == CGAL::SMALLER;
+    };
+    const size_t before = pts.size();
+    if (k + 1 < pts.size() && pts.size() > 2 && close(k + 1)) pts.erase(pts.begin() + static_cast<long>(k) + 1);
+    if (k > 0 && pts.size() > 2 && close(k - 1)) pts.erase(pts.begin() + static_cast<long>(k) - 1);
+    return pts.size() != before;
+  }
+
+  // q as a point of few bits: on an edge of the base, the point along that edge at the nearest
+  // parameter that is a double (so that it stays on the edge exactly); elsewhere q rounded to
+  // doubles. Bending cuts to the exact crossings of cuts already bent would chain constructions
+  // on constructions, whose exact numbers grow with every round of bending.
+  Point rounded(const Point& q) const {
+    if (is_base_vertex(q)) return q;
+    const size_t n = base_vertices_.size();
+    for (size_t i = 0; i < n; ++i) {
+      const Point& a = base_vertices_[i];
+      const Point& b = base_vertices_[(i + 1) % n];
+      if (!Segment(a, b).has_on(q)) continue;
+      // The parameter computed exactly, so that a point made here is its own rounding.
+      const Kernel::Vector_2 d = b - a;
+      const Kernel::FT t(std::clamp(CGAL::to_double(((q - a) * d) / d.squared_length()), 0.0, 1.0));
+      return a + t * d;
+    }
+    return to_point(to_vec(q));
+  }
+
+  // Piece `id`, which passes through p, passes through q instead: its vertex at p moves to q, or
+  // q goes into its segment through p. Nothing else of it moves.
+  bool reroute(int id, const Point& p, const Point& q) {
+    auto& pts = pieces_[static_cast<size_t>(id)].points;
+    const auto at = std::find(pts.begin(), pts.end(), p);
+    if (at != pts.end()) {
+      *at = q;
+    } else {
+      const Piece& piece = pieces_[static_cast<size_t>(id)];
+      size_t i = 0;
+      while (i < piece.segment_count() && !piece.segment(i).has_on(p)) ++i;
+      if (i == piece.segment_count()) return bend(id, q);
+      pts.insert(pts.begin() + static_cast<long>(i) + 1, q);
+    }
+    pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+    if (pieces_[static_cast<size_t>(id)].closed && pts.size() > 1 && pts.front() == pts.back()) pts.pop_back();
+    return true;
+  }
+
+  // Bends the cuts `ids` to q, the rounded position of vertex `at` (if there is one), and moves
+  // the cuts through `at` there too: all of them then meet exactly at q.
+  bool bend_all(const std::vector<int>& ids, std::optional<Vertex> at, const Point& q) {
+    bool changed = false;
+    for (int id : ids) changed |= bend(id, q);
+    if (at && (*at)->point() != q)
+      for (int id : cut_pieces_at(*at))
+        if (std::find(ids.begin(), ids.end(), id) == ids.end()) changed |= reroute(id, (*at)->point(), q);
+    return changed;
+  }
+
   // Resolve a vertex v closer than the tolerance to an edge e it is not on.
   bool fix(Vertex v, Halfedge e) {
     const Point& p = v->point();
@@ -408,25 +471,18 @@ class BaseCutter {
     // A nearby end of e: bring v's cuts to it (the two vertices become one).
     for (Vertex w : {e->source(), e->target()}) {
       if (!v_fixed && CGAL::compare(CGAL::squared_distance(p, w->point()),
-                                    tolerance2_at(p)) == CGAL::SMALLER) {
-        bool changed = false;
-        for (int id : cut_pieces_at(v)) changed |= bend(id, w->point());
-        return changed;
-      }
+                                    tolerance2_at(p)) == CGAL::SMALLER)
+        return bend_all(cut_pieces_at(v), w, rounded(w->point()));
     }
     if (!e_base) {
       // Bend e's cuts through v.
-      bool changed = false;
-      for (int id : e->curve().data()) changed |= bend(id, p);
-      return changed;
+      const auto& on_e = e->curve().data();
+      return bend_all(std::vector<int>(on_e.begin(), on_e.end()), v, rounded(p));
     }
     if (v_fixed) return false;  // the base's own features are the user's geometry
     // v (a cut vertex) near a base edge: move it onto the edge.
     const Segment s(e->source()->point(), e->target()->point());
-    const Point q = s.supporting_line().projection(p);
-    bool changed = false;
-    for (int id : cut_pieces_at(v)) changed |= bend(id, q);
-    return changed;
+    return bend_all(cut_pieces_at(v), std::nullopt, rounded(s.supporting_line().projection(p)));
   }
 
   // "joint set 1 and crackseed 2": the inputs the pieces come from, as a script names them.

@@ -3,4 +3,4 @@
 model{ tolerance = 1e-3 }
 block{ x = {-100, 100}, y = {-90, 90} }
 jset{ angle = 60, spacing = {16, 12, 8} }
-crackseed{ angles = {62, 118}, spacing = 4.8, origin = {1.3, 0.7} }
+crackseed{ angles = {60.5, 119.5}, spacing = 4.8, origin = {1.3, 0.7} }
