@@ -672,10 +672,34 @@ class BaseCutter {
     return static_cast<int>(cut.size());
   }
 
+  // Whether v is left over where a dangling cut crossed a piece: two edges of the same pieces meet
+  // there, and v is none of their points (the two edges are one straight stretch).
+  bool is_remnant(Vertex v) const {
+    if (v->degree() != 2) return false;
+    const Halfedge in = v->incident_halfedges(), other = in->next();
+    const auto& ids = in->curve().data();
+    if (!std::is_permutation(ids.begin(), ids.end(), other->curve().data().begin(), other->curve().data().end()))
+      return false;
+    return std::none_of(ids.begin(), ids.end(), [&](int id) {
+      const auto& pts = pieces_[static_cast<size_t>(id)].points;
+      return std::find(pts.begin(), pts.end(), v->point()) != pts.end();
+    });
+  }
+
+  // A ring from its halfedges; a remnant vertex closer than the tolerance to the next or the
+  // previous one is left out (the cut that made it is gone, and no fix can move what is not a point
+  // of a cut: rounding once left one 2e-15 m from a crossing).
   Ring make_ring(const std::vector<Halfedge>& halfedges) const {
     Ring ring;
-    for (const Halfedge& h : halfedges) {
-      ring.points.push_back(to_vec(h->source()->point()));
+    const size_t n = halfedges.size();
+    for (size_t i = 0; i < n; ++i) {
+      const Halfedge& h = halfedges[i];
+      const Vertex v = h->source();
+      const auto near = [&](Vertex w) {
+        return CGAL::compare(CGAL::squared_distance(v->point(), w->point()), tolerance2_at(v->point())) == CGAL::SMALLER;
+      };
+      if (n > 3 && is_remnant(v) && (near(h->target()) || near(halfedges[(i + n - 1) % n]->source()))) continue;
+      ring.points.push_back(to_vec(v->point()));
       ring.edges.push_back(edge_origin(h, pieces_));
     }
     return ring;
