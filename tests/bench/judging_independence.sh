@@ -7,7 +7,10 @@
 # each run's seconds and cycles; exits 1 if the equilibrium mode's spread is over 3 % in cracks or
 # 2 % in crown settlement.
 #   bash tests/bench/judging_independence.sh [--edem PATH] [--out DIR] [--jobs N] [--threads M]
-# One thread a run and two runs at a time on two cores take about half an hour (tests/bench/RESULTS.md).
+# And, judged at equilibrium under adaptive damping released over 100 cycles, with 1 and 2 m zones
+# at the opening (1.5 m above), for the charts of speed against accuracy that it draws at its end
+# (tests/bench/judging_chart.lua: OUT/judging_cracks.png, OUT/judging_crown.png).
+# One thread a run and two runs at a time on two cores take about 40 minutes (tests/bench/RESULTS.md).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 edem=$root/build/interp/edem out=judging-independence jobs=2 threads=1
@@ -31,14 +34,17 @@ for judge in equilibrium cycles; do
   done
 done
 runs+=("cycles local 20000")
+# Zone size near the opening (case.lua's edge; 1.5 m is the runs' above): 1 and 2 m.
+for edge in 1 2; do runs+=("equilibrium adaptive 100 $edge"); done
 
 run_one() {
-  local judge=$1 damping=$2 release=$3
-  local name=${judge}_${damping}_${release} dir=$out/${judge}_${damping}_${release}
+  local judge=$1 damping=$2 release=$3 edge=${4:-}
+  local name=${judge}_${damping}_${release}${edge:+_edge$edge}
+  local dir=$out/$name
   mkdir -p "$dir"
   (cd "$dir" && "$edem" --threads "$threads" --out "$dir" --set set=P --set case=3 --set depth=158 \
      --set judge="$judge" --set damping="$damping" --set release="$release" --set threads="$threads" \
-     --set table="$dir/row.csv" run "$root/scripts/paper/case.lua" > "$dir/log" 2>&1) ||
+     ${edge:+--set edge=$edge} --set table="$dir/row.csv" run "$root/scripts/paper/case.lua" > "$dir/log" 2>&1) ||
     echo "judging_independence.sh: $name failed (its log: $dir/log)" >&2
 }
 export -f run_one
@@ -47,17 +53,28 @@ printf '%s\n' "${runs[@]}" | xargs -P "$jobs" -I{} bash -c 'run_one {}'
 
 # One line a run: mode, damping, release, cracks, crown settlement, seconds, cycles (from the log).
 summary=$out/summary.csv
+# And one line a zone size (zones.csv), the 1.5 m one from the runs at that size.
+zones=$out/zones.csv
 echo "judge,damping,release,cracks,crown_m,seconds,cycles" > "$summary"
+echo "edge,cracks,crown_m,seconds,cycles" > "$zones"
 for run in "${runs[@]}"; do
-  read -r judge damping release <<< "$run"
-  dir=$out/${judge}_${damping}_${release}
+  read -r judge damping release edge <<< "$run"
+  dir=$out/${judge}_${damping}_${release}${edge:+_edge$edge}
   [[ -f $dir/row.csv ]] || continue
   row=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) col[$i] = i; next }
                  { print $col["cracks"] "," $col["crown_settlement_m"] "," $col["seconds"] }' "$dir/row.csv")
   cycles=$(awk '$1 ~ /^[0-9]+$/ && NF >= 9 { sum += $3 } END { print sum + 0 }' "$dir/log")
-  echo "$judge,$damping,$release,$row,$cycles" >> "$summary"
+  if [[ -n $edge ]]; then
+    echo "$edge,$row,$cycles" >> "$zones"
+  else
+    echo "$judge,$damping,$release,$row,$cycles" >> "$summary"
+    [[ "$judge $damping $release" == "equilibrium adaptive 100" ]] && echo "1.5,$row,$cycles" >> "$zones"
+  fi
 done
 column -s, -t "$summary"
+column -s, -t "$zones"
+# The charts of speed against accuracy (tests/bench/judging_chart.lua), beside the tables.
+"$edem" --quiet --set summary="$summary" --set zones="$zones" --set out="$out" run "$root/tests/bench/judging_chart.lua"
 awk -F, 'NR > 1 && !($1 == "cycles" && $3 == 20000) {
            n[$1]++; c = $4 + 0; u = $5 + 0
            if (!(($1) in cmin) || c < cmin[$1]) cmin[$1] = c; if (!(($1) in cmax) || c > cmax[$1]) cmax[$1] = c
