@@ -4,7 +4,7 @@
 // exact kernel; each edge carries the set of pieces it came from. Faces inside the base are
 // blocks; edges with the same face on both sides are dangling cut pieces, dropped and counted.
 // Before extracting blocks, features below the tolerance are removed by bending cut pieces
-// through nearby vertices (never moving the base), rebuilding until none is left.
+// through nearby vertices, rounded (never moving the base), rebuilding until none is left.
 #include "geom/cutter.hpp"
 
 #include <CGAL/Arr_consolidated_curve_data_traits_2.h>
@@ -688,7 +688,7 @@ class BaseCutter {
 
   // A ring from its halfedges; a remnant vertex closer than the tolerance to the next or the
   // previous one is left out (the cut that made it is gone, and no fix can move what is not a point
-  // of a cut: rounding once left one 2e-15 m from a crossing).
+  // of a cut: one can lie 2e-15 m from a crossing, an edge no zoning takes).
   Ring make_ring(const std::vector<Halfedge>& halfedges) const {
     Ring ring;
     const size_t n = halfedges.size();

@@ -510,9 +510,9 @@ TEST(Cutter, AnAutomaticGroupsOutlineGivesWayOnlyWhereNoOptionalCutCan) {
 }
 
 // The cuts crackseed{ auto } gives the study's Case 3 at 158 m with its potential cracks through
-// (3.67, 1.01) m (tests/unit/data): bent to exact crossings of cuts already bent, joint sets 1 and
-// 2 kept coming closer to each other near (41.31, 31.57) m, and only a fresh start without the
-// optional cuts near there laid them. Bent to rounded points, every cut is laid at the first try,
+// (3.67, 1.01) m (tests/unit/data). Bent to the exact crossings of cuts already bent, joint sets 1
+// and 2 come ever closer to each other near (41.31, 31.57) m, and only a fresh start without the
+// optional cuts near there lays them; bent to rounded points, every cut is laid at the first try,
 // and so are the same cuts all required. (The fresh start stays for inputs that still go round in
 // circles; the cuts of the tests above that do have nothing optional near the spot to leave out.)
 CutInput cuts_that_bend_two_joints_together() {
