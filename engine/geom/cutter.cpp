@@ -68,6 +68,11 @@ struct Piece {
   bool left_out = false;  // it was: not in the arrangement any more
   double min_angle = 0.0;  // [rad] an optional piece meeting another edge at a sharper corner is cut back
   size_t segment_count() const { return closed ? points.size() : points.size() - 1; }
+  // Points that repeat the one before (or, closed, the first) go.
+  void drop_repeats() {
+    points.erase(std::unique(points.begin(), points.end()), points.end());
+    if (closed && points.size() > 1 && points.front() == points.back()) points.pop_back();
+  }
   Segment segment(size_t i) const { return Segment(points[i], points[(i + 1) % points.size()]); }
   // Distance from p to segment i, in doubles (for choosing, not for the geometry).
   double distance(size_t i, Vec2 p) const;
@@ -395,8 +400,7 @@ class BaseCutter {
       }
       pts.insert(pts.begin() + static_cast<long>(nearest_segment) + 1, q);
     }
-    pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
-    if (piece.closed && pts.size() > 1 && pts.front() == pts.back()) pts.pop_back();
+    piece.drop_repeats();
     return true;
   }
 
@@ -436,19 +440,18 @@ class BaseCutter {
   // Piece `id`, which passes through p, passes through q instead: its vertex at p moves to q, or
   // q goes into its segment through p. Nothing else of it moves.
   bool reroute(int id, const Point& p, const Point& q) {
-    auto& pts = pieces_[static_cast<size_t>(id)].points;
+    Piece& piece = pieces_[static_cast<size_t>(id)];
+    auto& pts = piece.points;
     const auto at = std::find(pts.begin(), pts.end(), p);
     if (at != pts.end()) {
       *at = q;
     } else {
-      const Piece& piece = pieces_[static_cast<size_t>(id)];
       size_t i = 0;
       while (i < piece.segment_count() && !piece.segment(i).has_on(p)) ++i;
       if (i == piece.segment_count()) return bend(id, q);
       pts.insert(pts.begin() + static_cast<long>(i) + 1, q);
     }
-    pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
-    if (pieces_[static_cast<size_t>(id)].closed && pts.size() > 1 && pts.front() == pts.back()) pts.pop_back();
+    piece.drop_repeats();
     return true;
   }
 
