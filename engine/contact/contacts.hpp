@@ -4,9 +4,11 @@
 // Every gridpoint on a block boundary that is not glued looks for the nearest edge of each
 // other block within its reach; both sides of a joint do so, each with half the contact length,
 // so that the two faces carry the joint's stiffness together whatever their zoning. A contact's
-// length is the part of its gridpoint's boundary that faces that block: half of each adjacent
-// edge, projected on the contact plane, and given to the block its quarter point is nearest to
-// (so a gridpoint facing the end of one block and the start of the next shares between them).
+// length is the part of its gridpoint's boundary that faces that block: of half of each adjacent
+// edge, the part that lies over the block's faces, projected on the contact plane (so a
+// gridpoint facing the end of one block and the start of the next shares between them, and the
+// length moves smoothly as it slides past a joint crossing); where two blocks' faces both lie
+// under a half-edge, the one nearer its quarter point takes more (detect.cpp, kShareBand).
 //
 // A gridpoint at a convex corner whose edges both leave the other block's face (a tip driven in
 // point first) has almost no such length, yet its boundary crosses the face over a chord that

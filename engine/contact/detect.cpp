@@ -25,6 +25,9 @@ constexpr double kRowBound = 1.21;
 // A block whose boundary has moved this fraction of the smallest reach since it was last marked
 // has its contacts found again, with those of the blocks near it (refresh_contacts).
 constexpr double kStaleMotion = 0.125;
+// A half-edge over two blocks' faces whose quarter point is nearer to one than to the other by
+// this fraction of its length or more is the nearer's alone; nearer by less, the two share it.
+constexpr double kShareBand = 0.5;
 // Edges whose outward normals are within 10 degrees face the same way.
 const double kSameFacing = std::cos(10.0 * M_PI / 180.0);
 
@@ -366,10 +369,15 @@ std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t
     }
   }
   if (found.empty()) return found;
-  // Each half of an adjacent edge goes to the block its quarter point is nearest to: to the
-  // found edge or those beside it along its block's outline. (A gridpoint where a joint ends on
-  // another block's face is as near to the face's piece on either side of it; either may have
-  // been found, and its half-edge lying over the other piece is that block's all the same.)
+  // Each half of an adjacent edge goes to the blocks whose faces it lies over: to each found
+  // block, the part of it over that block's found edge and those beside it along its outline
+  // (covered_length). Where two blocks' faces both lie under it (a gridpoint at the corner of two
+  // blocks), the nearer takes more: a block whose face is further from the half-edge's quarter
+  // point than the nearest one by half the half-edge or more takes none, nearer by less a part
+  // that grows as it comes nearer (kShareBand), and together they take no more than the
+  // half-edge. The length so moves smoothly with the gridpoint: a half-edge sliding past a joint
+  // crossing goes from one block to the next as it goes over, and a gridpoint at a corner does
+  // not lose a contact at one detection and make it again at the next.
   const auto near_face = [&](Vec2 q, const Found& f) {
     const ContactEdge& target = cb.edges[static_cast<size_t>(f.edge)];
     double d = distance_to_segment(q, at(m, target.a), at(m, target.b));
@@ -379,33 +387,44 @@ std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t
     }
     return d;
   };
+  std::vector<double> over(found.size());
   for (int i = cb.edge_first[k]; i < cb.edge_first[k + 1]; ++i) {
     const ContactEdge& e = cb.edges[static_cast<size_t>(cb.node_edges[static_cast<size_t>(i)])];
     if (!m.block_live[static_cast<size_t>(e.block)]) continue;
     const Vec2 far_end = at(m, e.a == node ? e.b : e.a);
     const double half = 0.5 * norm(far_end - p);
     const Vec2 quarter = p + 0.25 * (far_end - p);
-    double best = search + 0.5 * half;
-    Found* to = nullptr;
-    for (Found& f : found) {
-      const double d = near_face(quarter, f);
-      if (d < best) best = d, to = &f;
-    }
-    if (!to) continue;
-    const Vec2 n_e = e.a == node ? outward(p, far_end) : outward(far_end, p);
-    if (continues_outline(m, *to, p, n_e, reach)) continue;
     const Vec2 middle = p + 0.5 * (far_end - p);
-    // This side's share, half; of the half edge, the part that lies over the other block.
-    const double covered = covered_length(m, p, middle, to->edge);
-    to->length += 0.5 * covered * std::max(0.0, -dot(n_e, to->normal));
-    if (with_traction && covered > 0.0) {
+    const Vec2 n_e = e.a == node ? outward(p, far_end) : outward(far_end, p);
+    const double within = search + 0.5 * half;
+    double nearest = within;
+    for (size_t j = 0; j < found.size(); ++j) {
+      over[j] = near_face(quarter, found[j]);
+      nearest = std::min(nearest, over[j]);
+    }
+    if (!(nearest < within)) continue;
+    double total = 0.0;
+    for (size_t j = 0; j < found.size(); ++j) {
+      const double weight = over[j] < within ? std::clamp(1.0 - (over[j] - nearest) / (kShareBand * half), 0.0, 1.0) : 0.0;
+      const bool along = weight > 0.0 && continues_outline(m, found[j], p, n_e, reach);
+      over[j] = weight > 0.0 && !along ? weight * covered_length(m, p, middle, found[j].edge) : 0.0;
+      total += over[j];
+    }
+    const double scale = total > half ? half / total : 1.0;
+    for (size_t j = 0; j < found.size(); ++j) {
+      if (!(over[j] > 0.0)) continue;
+      Found& to = found[j];
+      // This side's share, half; of the half edge, the part that lies over the other block.
+      const double covered = scale * over[j];
+      to.length += 0.5 * covered * std::max(0.0, -dot(n_e, to.normal));
+      if (!with_traction) continue;
       const int own = cb.node_edges[static_cast<size_t>(i)];
       if (const auto s = traction_source(m, own, p + (1.0 / 3.0) * (far_end - p), with_insitu)) {
         // This side's share of the edge's consistent nodal force, half * sigma . n, for the
         // part that lies over the other block.
-        to->insitu_force = to->insitu_force + 0.5 * covered * Vec2{s->xx * n_e.x + s->xy * n_e.y, s->xy * n_e.x + s->yy * n_e.y};
-        to->insitu = true;
-        to->cracked = to->cracked || section_of(m, own) >= 0;
+        to.insitu_force = to.insitu_force + 0.5 * covered * Vec2{s->xx * n_e.x + s->xy * n_e.y, s->xy * n_e.x + s->yy * n_e.y};
+        to.insitu = true;
+        to.cracked = to.cracked || section_of(m, own) >= 0;
       }
     }
   }
