@@ -28,6 +28,10 @@ constexpr double kStaleMotion = 0.125;
 // A half-edge over two blocks' faces whose quarter point is nearer to one than to the other by
 // this fraction of its length or more is the nearer's alone; nearer by less, the two share it.
 constexpr double kShareBand = 0.5;
+// A half-edge over a face that is not the nearest takes a share of it only where it faces it:
+// none where the cosine between their normals (one turned round) is below this, all of it where
+// it is above twice this (60 and 0 deg).
+constexpr double kShareFacing = 0.5;
 // Edges whose outward normals are within 10 degrees face the same way.
 const double kSameFacing = std::cos(10.0 * M_PI / 180.0);
 
@@ -374,8 +378,8 @@ std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t
   // (covered_length). Where two blocks' faces both lie under it (a gridpoint at the corner of two
   // blocks), the nearer takes more: a block whose face is further from the half-edge's quarter
   // point than the nearest one by half the half-edge or more takes none, nearer by less a part
-  // that grows as it comes nearer (kShareBand), and together they take no more than the
-  // half-edge. The length so moves smoothly with the gridpoint: a half-edge sliding past a joint
+  // that grows as it comes nearer (kShareBand), a face other than the nearest only as far as the
+  // half-edge faces it (kShareFacing), and together they take no more than the half-edge. The length so moves smoothly with the gridpoint: a half-edge sliding past a joint
   // crossing goes from one block to the next as it goes over, and a gridpoint at a corner does
   // not lose a contact at one detection and make it again at the next.
   const auto near_face = [&](Vec2 q, const Found& f) {
@@ -398,14 +402,19 @@ std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t
     const Vec2 n_e = e.a == node ? outward(p, far_end) : outward(far_end, p);
     const double within = search + 0.5 * half;
     double nearest = within;
+    size_t first = found.size();
     for (size_t j = 0; j < found.size(); ++j) {
       over[j] = near_face(quarter, found[j]);
-      nearest = std::min(nearest, over[j]);
+      if (over[j] < nearest) nearest = over[j], first = j;
     }
-    if (!(nearest < within)) continue;
+    if (first == found.size()) continue;
     double total = 0.0;
     for (size_t j = 0; j < found.size(); ++j) {
-      const double weight = over[j] < within ? std::clamp(1.0 - (over[j] - nearest) / (kShareBand * half), 0.0, 1.0) : 0.0;
+      // Besides the nearest, a block takes a share only as far as the half-edge faces its face:
+      // one whose face it meets edge on would carry its traction over next to no length.
+      const double facing = j == first ? 1.0 : std::clamp((-dot(n_e, found[j].normal) - kShareFacing) / kShareFacing, 0.0, 1.0);
+      const double nearness = std::clamp(1.0 - (over[j] - nearest) / (kShareBand * half), 0.0, 1.0);
+      const double weight = over[j] < within ? facing * nearness : 0.0;
       const bool along = weight > 0.0 && continues_outline(m, found[j], p, n_e, reach);
       over[j] = weight > 0.0 && !along ? weight * covered_length(m, p, middle, found[j].edge) : 0.0;
       total += over[j];
