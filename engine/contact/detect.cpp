@@ -26,7 +26,7 @@ constexpr double kRowBound = 1.21;
 // has its contacts found again, with those of the blocks near it (refresh_contacts).
 constexpr double kStaleMotion = 0.125;
 // A half-edge over two blocks' faces whose quarter point is nearer to one than to the other by
-// this fraction of its length or more is the nearer's alone; nearer by less, the two share it.
+// this fraction of the half-edge or more is the nearer's alone; nearer by less, the two share it.
 constexpr double kShareBand = 0.5;
 // A half-edge over a face that is not the nearest takes a share of it only where it faces it:
 // none where the cosine between their normals (one turned round) is below this, all of it where
@@ -338,9 +338,95 @@ int held_edge(const ContactSet& set, int node, int block) {
   return c != set.list.end() && c->node == node && c->other == block ? c->edge : -1;
 }
 
+// How far `q` is from the found edge of `f` or those beside it along its block's outline [m].
+// (A gridpoint where a joint ends on another block's face is as near to the face's piece on
+// either side of it; either may have been found, and its half-edge lying over the other piece is
+// that block's all the same.)
+double distance_to_face(const Mechanics& m, Vec2 q, const Found& f) {
+  const ContactBoundary& cb = m.faces;
+  const ContactEdge& target = cb.edges[static_cast<size_t>(f.edge)];
+  double d = distance_to_segment(q, at(m, target.a), at(m, target.b));
+  for (const int beside : {target.prev, target.next}) {
+    const ContactEdge& b = cb.edges[static_cast<size_t>(beside)];
+    if (b.touchable) d = std::min(d, distance_to_segment(q, at(m, b.a), at(m, b.b)));
+  }
+  return d;
+}
+
+// The part of the half-edge from gridpoint p towards `far_end` (outward normal n_e) that each found
+// block takes [m]: of the half-edge, the part over the block's found edge and those beside it
+// along its outline (covered_length). Where two blocks' faces both lie under it (a gridpoint at
+// the corner of two blocks), the nearer takes more: a block whose face is further from the
+// half-edge's quarter point than the nearest one by kShareBand of the half-edge or more takes
+// none, nearer by less a part that grows as it comes nearer; a face other than the nearest only
+// as far as the half-edge faces it (kShareFacing); together they take no more than the half-edge.
+// So the length moves smoothly with the gridpoint: a half-edge sliding past a joint crossing goes
+// from one block to the next as it goes over, and a gridpoint at a corner does not lose a
+// contact at one detection and make it again at the next. All zero when no face is within
+// `search` and a quarter of the edge of the quarter point.
+std::vector<double> half_edge_parts(const Mechanics& m, Vec2 p, Vec2 far_end, Vec2 n_e, double reach, double search,
+                                    const std::vector<Found>& found) {
+  const double half = 0.5 * norm(far_end - p);
+  const Vec2 quarter = p + 0.25 * (far_end - p);
+  const Vec2 middle = p + 0.5 * (far_end - p);
+  const double within = search + 0.5 * half;
+  std::vector<double> distance(found.size()), part(found.size(), 0.0);
+  double nearest = within;
+  size_t first = found.size();
+  for (size_t j = 0; j < found.size(); ++j) {
+    distance[j] = distance_to_face(m, quarter, found[j]);
+    if (distance[j] < nearest) nearest = distance[j], first = j;
+  }
+  if (first == found.size()) return part;
+  double total = 0.0;
+  for (size_t j = 0; j < found.size(); ++j) {
+    if (!(distance[j] < within)) continue;
+    // A face met edge on would carry the half-edge's traction over next to no length.
+    const double facing = j == first ? 1.0 : std::clamp((-dot(n_e, found[j].normal) - kShareFacing) / kShareFacing, 0.0, 1.0);
+    const double nearness = std::clamp(1.0 - (distance[j] - nearest) / (kShareBand * half), 0.0, 1.0);
+    if (!(facing * nearness > 0.0) || continues_outline(m, found[j], p, n_e, reach)) continue;
+    part[j] = facing * nearness * covered_length(m, p, middle, found[j].edge);
+    total += part[j];
+  }
+  if (total > half)
+    for (double& x : part) x *= half / total;
+  return part;
+}
+
+// Gives the halves of node k's adjacent edges to the blocks found (half_edge_parts): their
+// lengths, and where a stress acts on them (the in-situ field with with_insitu, or a section that
+// broke since the last detection) its traction.
+void give_half_edges(const Mechanics& m, size_t k, double search, bool with_insitu, std::vector<Found>& found) {
+  const bool with_traction = with_insitu || m.fresh_cracks;
+  const ContactBoundary& cb = m.faces;
+  const int node = cb.nodes[k];
+  const Vec2 p = at(m, node);
+  for (int i = cb.edge_first[k]; i < cb.edge_first[k + 1]; ++i) {
+    const int own = cb.node_edges[static_cast<size_t>(i)];
+    const ContactEdge& e = cb.edges[static_cast<size_t>(own)];
+    if (!m.block_live[static_cast<size_t>(e.block)]) continue;
+    const Vec2 far_end = at(m, e.a == node ? e.b : e.a);
+    const Vec2 n_e = e.a == node ? outward(p, far_end) : outward(far_end, p);
+    const std::vector<double> parts = half_edge_parts(m, p, far_end, n_e, cb.reach[k], search, found);
+    for (size_t j = 0; j < found.size(); ++j) {
+      if (!(parts[j] > 0.0)) continue;
+      Found& to = found[j];
+      // This side's share, half; of the half edge, the part that lies over the other block.
+      to.length += 0.5 * parts[j] * std::max(0.0, -dot(n_e, to.normal));
+      if (!with_traction) continue;
+      if (const auto s = traction_source(m, own, p + (1.0 / 3.0) * (far_end - p), with_insitu)) {
+        // This side's share of the edge's consistent nodal force, half * sigma . n, for the
+        // part that lies over the other block.
+        to.insitu_force = to.insitu_force + 0.5 * parts[j] * Vec2{s->xx * n_e.x + s->xy * n_e.y, s->xy * n_e.x + s->yy * n_e.y};
+        to.insitu = true;
+        to.cracked = to.cracked || section_of(m, own) >= 0;
+      }
+    }
+  }
+}
+
 // Contacts of node position k: the nearest edge of each block in reach, and their lengths.
 std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t k, bool with_insitu) {
-  const bool with_traction = with_insitu || m.fresh_cracks;
   const ContactBoundary& cb = m.faces;
   const int node = cb.nodes[k];
   const Vec2 p = at(m, node);
@@ -373,70 +459,7 @@ std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t
     }
   }
   if (found.empty()) return found;
-  // Each half of an adjacent edge goes to the blocks whose faces it lies over: to each found
-  // block, the part of it over that block's found edge and those beside it along its outline
-  // (covered_length). Where two blocks' faces both lie under it (a gridpoint at the corner of two
-  // blocks), the nearer takes more: a block whose face is further from the half-edge's quarter
-  // point than the nearest one by half the half-edge or more takes none, nearer by less a part
-  // that grows as it comes nearer (kShareBand), a face other than the nearest only as far as the
-  // half-edge faces it (kShareFacing), and together they take no more than the half-edge. The length so moves smoothly with the gridpoint: a half-edge sliding past a joint
-  // crossing goes from one block to the next as it goes over, and a gridpoint at a corner does
-  // not lose a contact at one detection and make it again at the next.
-  const auto near_face = [&](Vec2 q, const Found& f) {
-    const ContactEdge& target = cb.edges[static_cast<size_t>(f.edge)];
-    double d = distance_to_segment(q, at(m, target.a), at(m, target.b));
-    for (const int beside : {target.prev, target.next}) {
-      const ContactEdge& b = cb.edges[static_cast<size_t>(beside)];
-      if (b.touchable) d = std::min(d, distance_to_segment(q, at(m, b.a), at(m, b.b)));
-    }
-    return d;
-  };
-  std::vector<double> over(found.size());
-  for (int i = cb.edge_first[k]; i < cb.edge_first[k + 1]; ++i) {
-    const ContactEdge& e = cb.edges[static_cast<size_t>(cb.node_edges[static_cast<size_t>(i)])];
-    if (!m.block_live[static_cast<size_t>(e.block)]) continue;
-    const Vec2 far_end = at(m, e.a == node ? e.b : e.a);
-    const double half = 0.5 * norm(far_end - p);
-    const Vec2 quarter = p + 0.25 * (far_end - p);
-    const Vec2 middle = p + 0.5 * (far_end - p);
-    const Vec2 n_e = e.a == node ? outward(p, far_end) : outward(far_end, p);
-    const double within = search + 0.5 * half;
-    double nearest = within;
-    size_t first = found.size();
-    for (size_t j = 0; j < found.size(); ++j) {
-      over[j] = near_face(quarter, found[j]);
-      if (over[j] < nearest) nearest = over[j], first = j;
-    }
-    if (first == found.size()) continue;
-    double total = 0.0;
-    for (size_t j = 0; j < found.size(); ++j) {
-      // Besides the nearest, a block takes a share only as far as the half-edge faces its face:
-      // one whose face it meets edge on would carry its traction over next to no length.
-      const double facing = j == first ? 1.0 : std::clamp((-dot(n_e, found[j].normal) - kShareFacing) / kShareFacing, 0.0, 1.0);
-      const double nearness = std::clamp(1.0 - (over[j] - nearest) / (kShareBand * half), 0.0, 1.0);
-      const double weight = over[j] < within ? facing * nearness : 0.0;
-      const bool along = weight > 0.0 && continues_outline(m, found[j], p, n_e, reach);
-      over[j] = weight > 0.0 && !along ? weight * covered_length(m, p, middle, found[j].edge) : 0.0;
-      total += over[j];
-    }
-    const double scale = total > half ? half / total : 1.0;
-    for (size_t j = 0; j < found.size(); ++j) {
-      if (!(over[j] > 0.0)) continue;
-      Found& to = found[j];
-      // This side's share, half; of the half edge, the part that lies over the other block.
-      const double covered = scale * over[j];
-      to.length += 0.5 * covered * std::max(0.0, -dot(n_e, to.normal));
-      if (!with_traction) continue;
-      const int own = cb.node_edges[static_cast<size_t>(i)];
-      if (const auto s = traction_source(m, own, p + (1.0 / 3.0) * (far_end - p), with_insitu)) {
-        // This side's share of the edge's consistent nodal force, half * sigma . n, for the
-        // part that lies over the other block.
-        to.insitu_force = to.insitu_force + 0.5 * covered * Vec2{s->xx * n_e.x + s->xy * n_e.y, s->xy * n_e.x + s->yy * n_e.y};
-        to.insitu = true;
-        to.cracked = to.cracked || section_of(m, own) >= 0;
-      }
-    }
-  }
+  give_half_edges(m, k, search, with_insitu, found);
   for (Found& f : found) {
     f.wedge = tip_wedge(m, k, p, own_normal, f, reach);
     if (f.wedge > 0.0 && !(f.length > 1e-12 * reach)) mark_leading_past(m, k, p, f);
