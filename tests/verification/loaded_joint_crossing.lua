@@ -79,6 +79,7 @@ local function base_contact_lengths(moved)
   end
   return lengths
 end
+
 local worst, deepest_all, start = 0, 0, base_moved()
 local largest_step, lengths = 0, nil
 boundary{ polygon = top, xvel = 2e-5 }  -- m per cycle in static mode
