@@ -363,21 +363,23 @@ double distance_to_face(const Mechanics& m, Vec2 q, const Found& f) {
 // So the length moves smoothly with the gridpoint: a half-edge sliding past a joint crossing goes
 // from one block to the next as it goes over, and a gridpoint at a corner does not lose a
 // contact at one detection and make it again at the next. All zero when no face is within
-// `search` and a quarter of the edge of the quarter point.
-std::vector<double> half_edge_parts(const Mechanics& m, Vec2 p, Vec2 far_end, Vec2 n_e, double reach, double search,
-                                    const std::vector<Found>& found) {
+// `search` and a quarter of the edge of the quarter point. `distance` and `part` are the
+// caller's, per found block, so that a gridpoint's half-edges reuse them.
+void half_edge_parts(const Mechanics& m, Vec2 p, Vec2 far_end, Vec2 n_e, double reach, double search,
+                     const std::vector<Found>& found, std::vector<double>& distance, std::vector<double>& part) {
   const double half = 0.5 * norm(far_end - p);
   const Vec2 quarter = p + 0.25 * (far_end - p);
   const Vec2 middle = p + 0.5 * (far_end - p);
   const double within = search + 0.5 * half;
-  std::vector<double> distance(found.size()), part(found.size(), 0.0);
+  distance.resize(found.size());
+  part.assign(found.size(), 0.0);
   double nearest = within;
   size_t first = found.size();
   for (size_t j = 0; j < found.size(); ++j) {
     distance[j] = distance_to_face(m, quarter, found[j]);
     if (distance[j] < nearest) nearest = distance[j], first = j;
   }
-  if (first == found.size()) return part;
+  if (first == found.size()) return;
   double total = 0.0;
   for (size_t j = 0; j < found.size(); ++j) {
     if (!(distance[j] < within)) continue;
@@ -390,7 +392,6 @@ std::vector<double> half_edge_parts(const Mechanics& m, Vec2 p, Vec2 far_end, Ve
   }
   if (total > half)
     for (double& x : part) x *= half / total;
-  return part;
 }
 
 // Gives the halves of node k's adjacent edges to the blocks found (half_edge_parts): their
@@ -401,13 +402,14 @@ void give_half_edges(const Mechanics& m, size_t k, double search, bool with_insi
   const ContactBoundary& cb = m.faces;
   const int node = cb.nodes[k];
   const Vec2 p = at(m, node);
+  std::vector<double> distance, parts;
   for (int i = cb.edge_first[k]; i < cb.edge_first[k + 1]; ++i) {
     const int own = cb.node_edges[static_cast<size_t>(i)];
     const ContactEdge& e = cb.edges[static_cast<size_t>(own)];
     if (!m.block_live[static_cast<size_t>(e.block)]) continue;
     const Vec2 far_end = at(m, e.a == node ? e.b : e.a);
     const Vec2 n_e = e.a == node ? outward(p, far_end) : outward(far_end, p);
-    const std::vector<double> parts = half_edge_parts(m, p, far_end, n_e, cb.reach[k], search, found);
+    half_edge_parts(m, p, far_end, n_e, cb.reach[k], search, found, distance, parts);
     for (size_t j = 0; j < found.size(); ++j) {
       if (!(parts[j] > 0.0)) continue;
       Found& to = found[j];
