@@ -26,6 +26,36 @@ inline double shear_limit(const Contact& c, const JointParams& p, double sn, dou
                            length);
 }
 
+// What a contact's shear force can be at most over `length` [N/m]: Coulomb's limit at its closure
+// (a force carried over from a contact of another length, as a stress, keeps within it).
+inline double shear_strength(const Contact& c, const JointParams& p, double length) {
+  return shear_limit(c, p, c.closure > 0.0 ? normal_stress(p, c.closure) : 0.0, p.cohesion, length);
+}
+
+// A contact found again (the same gridpoint and block) as `c`, its length and edge found anew,
+// keeps the state `old` had: its normal stress by its closure, its shear stress by scaling its
+// force to the new length. Both lengths are taken at the overlap its force was last found at, not
+// at the detection's distance to the face: near a corner that is not the overlap the force takes
+// (contact_force), and a tip's length grows with it, so a tip pressed in by a corner would gain
+// shear force at every detection and slip it off in its next cycle, energy made. Its next cycle
+// scales the force to the overlap it finds then.
+inline void keep_state(Contact& c, const Contact& old, const JointParams& p) {
+  c.closure0 = old.closure0;
+  c.dilation = old.dilation;
+  c.closure = old.closure;
+  c.sn = old.sn;
+  c.us = old.us;
+  c.slip = old.slip;
+  c.state = old.state;
+  c.intact = old.intact;
+  c.opened = old.opened;
+  c.share = old.share;  // what its next cycle finds the length it had by
+  const double overlap = last_overlap(old);
+  const double was = carrying_length(old, overlap), now = carrying_length(c, overlap);
+  const double strength = shear_strength(c, p, now);
+  c.fs = was > 0.0 ? std::clamp(old.fs * (now / was), -strength, strength) : 0.0;
+}
+
 // Updates `c` and its force on the gridpoint (c.fx, c.fy) from the node positions, origin + u,
 // and velocities `v`; returns the overlap, how far the
 // gridpoint is inside the edge's block [m] (negative: a gap). `edges`: all of them (the edge is

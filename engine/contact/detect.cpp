@@ -652,12 +652,6 @@ class LoadedFaces {
   std::unordered_map<std::uint64_t, std::vector<int>> by_pair_;
 };
 
-// What a contact's shear force can be at most over `length` [N/m]: Coulomb's limit at its closure
-// (a force carried over from a contact of another length, as a stress, keeps within it).
-double shear_strength(const Contact& c, const JointParams& p, double length) {
-  return shear_limit(c, p, c.closure > 0.0 ? normal_stress(p, c.closure) : 0.0, p.cohesion, length);
-}
-
 // Books what a contact made with a given state stores (`now`, less `had` if it was there) as
 // prestress: the joint's, not made by the method; at the last booked point too, so that commands
 // do not book it again.
@@ -763,21 +757,7 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
       });
       const bool kept = old != set.list.end() && old->node == c.node && old->other == c.other;
       if (kept) {
-        c.closure0 = old->closure0;
-        c.dilation = old->dilation;
-        c.closure = old->closure;
-        c.sn = old->sn;
-        c.us = old->us;
-        c.slip = old->slip;
-        c.state = old->state;
-        c.intact = old->intact;
-        c.opened = old->opened;
-        c.share = old->share;  // what its next cycle finds the length it had by
-        // Its length is found again from where its gridpoint's half-edges lie now: it keeps its
-        // stresses, the normal one by its closure, the shear one by scaling its force.
-        const double was = carrying_length(*old, last_overlap(*old)), now = carrying_length(c, -f.gap);
-        const double strength = shear_strength(c, p, now);
-        c.fs = was > 0.0 ? std::clamp(old->fs * (now / was), -strength, strength) : 0.0;
+        keep_state(c, *old, p);
       } else {
         // Already pressed in, and nothing held this gridpoint back before: it went into the other
         // block unseen. (At a junction a gridpoint held by one block may turn to its neighbour:

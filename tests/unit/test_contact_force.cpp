@@ -128,5 +128,41 @@ TEST(ContactForce, BesideAThinTipWithinTheEdgeNoDeepLinePressesItIn) {
   EXPECT_NEAR(c.contact.closure, 0.2, 1e-12);
 }
 
+// A tip pressed in beside a corner of the face's block takes as its overlap its depth inside the
+// corner's other face (plus the fade span), less than its depth below the face's line, which is
+// the distance a detection finds. Found again and again at rest, it keeps its shear force: its
+// length is scaled at the overlap its force takes, whatever the detection measured.
+TEST(ContactForce, ATipFoundAgainAtRestBesideACornerKeepsItsShearForce) {
+  Corner c;
+  c.origin[4] = 1.0;  // a 45 deg tip at b, as above
+  c.joint.tan_friction = c.joint.tan_residual_friction = 1.0;
+  c.contact.length = 0.001;
+  c.contact.wedge = 0.25;
+  c.contact.limit = 0.1;
+  // 0.09 m from the tip along the edge and 0.12 m below its line, 0.021 m outside the tip's other
+  // face: pressed in by 0.05 - 0.021 m (the fade span twice its largest length, 0.025 m).
+  c.force_at(0.09, -0.12);
+  const double overlap = 0.05 - 0.03 / std::sqrt(2.0);
+  ASSERT_NEAR(c.contact.closure, overlap, 1e-12);
+  c.contact.fs = 1e4;  // within Coulomb's limit, 1e9 x 0.029 x (0.25 x 0.029) = 2.1e5 N/m
+  for (int detection = 0; detection < 10; ++detection) {
+    Contact found;
+    found.node = c.contact.node;
+    found.edge = c.contact.edge;
+    found.length = c.contact.length;
+    found.wedge = c.contact.wedge;
+    found.limit = c.contact.limit;
+    keep_state(found, c.contact, c.joint);
+    c.contact = found;
+    c.force_at(0.09, -0.12);
+    EXPECT_NEAR(c.contact.fs, 1e4, 1e-6) << "detection " << detection;
+  }
+  // Found with a longer length of its own than the tip's, it keeps its shear stress.
+  Contact longer = c.contact;
+  longer.length = 0.05;
+  keep_state(longer, c.contact, c.joint);
+  EXPECT_NEAR(longer.fs, 1e4 * 0.05 / (0.25 * overlap), 1e-6);
+}
+
 }  // namespace
 }  // namespace edem
