@@ -329,13 +329,34 @@ void mark_leading_past(const Mechanics& m, size_t k, Vec2 p, Found& to) {
   to.leads_past_b = !back_to_a && sharp(a, b, at(m, next.b));
 }
 
-// The edge of the contact of `node` with `block` in the list as it stands, or -1.
-int held_edge(const ContactSet& set, int node, int block) {
+// The contact of `node` with `block` in the list as it stands, or nullptr.
+const Contact* held_contact(const ContactSet& set, int node, int block) {
   const auto before = [](const Contact& x, std::pair<int, int> key) {
     return x.node != key.first ? x.node < key.first : x.other < key.second;
   };
   const auto c = std::lower_bound(set.list.begin(), set.list.end(), std::pair{node, block}, before);
-  return c != set.list.end() && c->node == node && c->other == block ? c->edge : -1;
+  return c != set.list.end() && c->node == node && c->other == block ? &*c : nullptr;
+}
+
+// The edge of the contact of `node` with `block` in the list as it stands, or -1.
+int held_edge(const ContactSet& set, int node, int block) {
+  const Contact* c = held_contact(set, node, block);
+  return c ? c->edge : -1;
+}
+
+// A gridpoint pressed into a block that a detection finds no length and no tip over (its edges
+// turning about the face's direction as it rocks: a tip at one detection, edges running into the
+// face at the next) keeps the length and tip its contact had: the contact goes when its gap opens
+// or it slides off the face's corner (contact_force.hpp), not by a turn of its edges. Dropped and
+// made again, it would start with none of its load and take it from its overlap at once, energy
+// made at every detection.
+void keep_pressed(const ContactSet& set, int node, Found& f) {
+  const Contact* c = held_contact(set, node, f.other);
+  if (!c || c->state == ContactState::open || !(c->sn > 0.0)) return;
+  f.length = c->length;
+  f.wedge = c->wedge;
+  f.leads_past_a = c->leads_past_a;
+  f.leads_past_b = c->leads_past_b;
 }
 
 // How far `q` is from the found edge of `f` or those beside it along its block's outline [m].
@@ -465,6 +486,7 @@ std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t
   for (Found& f : found) {
     f.wedge = tip_wedge(m, k, p, own_normal, f, reach);
     if (f.wedge > 0.0 && !(f.length > 1e-12 * reach)) mark_leading_past(m, k, p, f);
+    if (!(f.length > 1e-12 * reach) && !(f.wedge > 0.0)) keep_pressed(m.contacts, node, f);
   }
   std::erase_if(found, [&](const Found& f) { return !(f.length > 1e-12 * reach) && !(f.wedge > 0.0); });
   return found;
