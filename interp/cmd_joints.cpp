@@ -32,6 +32,10 @@ int run_joint_material(lua_State*, Context& context, const Args& args) {
     def.kn_table = args.get<std::vector<std::array<double, 2>>>("kn_table");
   }
   if (args.has("kn_law")) def.law = NormalLaw::seed_cubic;
+  if ((args.has("stress_scale") || args.has("closure_scale")) && !args.has("kn_law"))
+    fail("stress_scale and closure_scale scale kn_law's curve: give kn_law, or leave them out");
+  if (args.has("stress_scale")) def.law_stress_scale = args.number("stress_scale");
+  if (args.has("closure_scale")) def.law_closure_scale = args.number("closure_scale");
   def.ks = args.number("ks");
   def.friction = args.number("friction");
   def.cohesion = args.number("cohesion");
@@ -66,7 +70,9 @@ const Command& joint_material_command() {
           "(closures from 0, increasing); or kn_law = \"seed-cubic\", the seed paper's lab "
           "curve sn = -4.302 v^3 + 7.688 v^2 - 0.123 v (MPa, mm), started at its zero "
           "crossing and straight at 1880 MPa/m past its descending 1880 MPa/m point, so that "
-          "it never gives tension or a negative stiffness. Shear: ks and Coulomb slip; "
+          "it never gives tension or a negative stiffness; stress_scale and closure_scale read "
+          "it at another scale, sn = stress_scale f(closure / closure_scale) (a similarity "
+          "law: the seed's prototype takes 17.86 and 400). Shear: ks and Coulomb slip; "
           "cohesion and tension hold only until the contact first slips or opens; then it "
           "has no tension and its residual cohesion and friction (UDEC's Coulomb slip with "
           "residual strength; by default zero and the friction; residual_cohesion = cohesion "
@@ -100,6 +106,10 @@ const Command& joint_material_command() {
                "a named normal law",
                "kn or kn_table",
                normal_laws},
+              {"stress_scale", Type::number, "", gt(0), kOptional,
+               "kn_law's stresses times this (default 1; its stiffnesses times stress_scale / "
+               "closure_scale)"},
+              {"closure_scale", Type::number, "", gt(0), kOptional, "kn_law's closures times this (default 1)"},
               {"ks", Type::number, "Pa/m", gt(0), kRequired, "shear stiffness"},
               {"friction", Type::number, "deg", from_below(0, 90), "0", "friction angle"},
               {"cohesion", Type::number, "Pa", ge(0), "0", "cohesion, until it first slips or opens"},
@@ -119,6 +129,8 @@ const Command& joint_material_command() {
       .usage =
           "joint_material{ \"joint\", kn = 1.2e7, ks = 3.6e6, friction = 31.2 }\n"
           "joint_material{ \"seed\", kn_law = \"seed-cubic\", ks = 8.07e7, friction = 31.2 }\n"
+          "joint_material{ \"prototype\", kn_law = \"seed-cubic\", stress_scale = 17.86, closure_scale = 400, "
+          "ks = 3.6e6, friction = 31.2 }\n"
           "joint_material{ \"cohesive\", kn = 1.88e9, ks = 1.88e9, friction = 34, "
           "cohesion = 0.143e6, tension = 0.0546e6, fracture_energy = 20, "
           "shear_fracture_energy = 100 }",

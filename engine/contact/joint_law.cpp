@@ -8,10 +8,13 @@
 //     third stage of the seed's three-stage fit, reached at v = 1.042 mm, sn = 3.35 MPa), it goes
 //     on straight with that stiffness.
 // The tangent is largest, 4456 MPa/m, at the inflection v = 0.596 mm: the time step allows for it.
+// Scaled by similarity (law_stress_scale S, law_closure_scale L) the law is S * f(closure / L):
+// every stress times S, every closure times L, every stiffness times S / L.
 #include "contact/joint_law.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "core/error.hpp"
 
@@ -104,6 +107,13 @@ JointParams joint_params(const JointMaterialDef& def) {
                        ? 2.0 * def.shear_fracture_energy / (def.cohesion - def.residual_cohesion)
                        : 0.0;
   const bool kn_given = !std::isnan(def.kn);
+  const bool scaled = def.law_stress_scale != 1.0 || def.law_closure_scale != 1.0;
+  if (scaled && def.law != NormalLaw::seed_cubic)
+    fail("stress_scale and closure_scale scale a named law: give kn_law, or leave them out");
+  for (auto [value, key] : {std::pair{def.law_stress_scale, "stress_scale"}, {def.law_closure_scale, "closure_scale"}})
+    if (!(std::isfinite(value) && value > 0.0)) fail("{} must be a finite number > 0, got {}", key, value);
+  p.law_stress_scale = def.law_stress_scale;
+  p.law_closure_scale = def.law_closure_scale;
   switch (def.law) {
     case NormalLaw::linear:
       if (!kn_given) fail("kn is missing: give kn, kn_table or kn_law");
@@ -134,9 +144,10 @@ JointParams joint_params(const JointMaterialDef& def) {
     }
     case NormalLaw::seed_cubic: {
       if (kn_given) fail("give kn or kn_law, not both");
-      p.kn_zero = cubic_slope(start_mm()) * kMPa / kMm;
+      const double stiffness = p.law_stress_scale / p.law_closure_scale;
+      p.kn_zero = stiffness * cubic_slope(start_mm()) * kMPa / kMm;
       const double inflection = -2.0 * kB / (6.0 * kA);
-      p.kn_max = cubic_slope(inflection) * kMPa / kMm;
+      p.kn_max = stiffness * cubic_slope(inflection) * kMPa / kMm;
       break;
     }
   }
@@ -173,7 +184,7 @@ double normal_stress(const JointParams& p, double closure) {
       return p.stage_stress[i] + p.stage_kn[i] * (closure - p.stage_closure[i]);
     }
     case NormalLaw::seed_cubic:
-      return cubic_stress(closure);
+      return p.law_stress_scale * cubic_stress(closure / p.law_closure_scale);
   }
   return 0.0;
 }
@@ -194,7 +205,7 @@ double normal_energy(const JointParams& p, double closure) {
       return energy;
     }
     case NormalLaw::seed_cubic:
-      return cubic_energy(closure);
+      return p.law_stress_scale * p.law_closure_scale * cubic_energy(closure / p.law_closure_scale);
   }
   return 0.0;
 }
@@ -210,14 +221,16 @@ double closure_at(const JointParams& p, double stress) {
       return p.stage_closure[i] + (stress - p.stage_stress[i]) / p.stage_kn[i];
     }
     case NormalLaw::seed_cubic: {
-      // Monotone: bisection to machine precision on a bracket that holds the answer.
-      double lo = 0.0, hi = stress / p.kn_zero + 1e-3;
-      while (cubic_stress(hi) < stress) hi *= 2.0;
+      // Monotone: bisection to machine precision on a bracket that holds the answer, on the
+      // unscaled curve.
+      const double lab_stress = stress / p.law_stress_scale;
+      double lo = 0.0, hi = lab_stress / (p.kn_zero * p.law_closure_scale / p.law_stress_scale) + 1e-3;
+      while (cubic_stress(hi) < lab_stress) hi *= 2.0;
       for (int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i) {
         const double mid = 0.5 * (lo + hi);
-        (cubic_stress(mid) < stress ? lo : hi) = mid;
+        (cubic_stress(mid) < lab_stress ? lo : hi) = mid;
       }
-      return 0.5 * (lo + hi);
+      return p.law_closure_scale * 0.5 * (lo + hi);
     }
   }
   return 0.0;

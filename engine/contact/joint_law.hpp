@@ -39,6 +39,8 @@ struct JointParams {
   // Staged law: stage i holds from stage_closure[i] on, with stiffness stage_kn[i] and the
   // stress stage_stress[i] at its start.
   std::vector<double> stage_closure, stage_kn, stage_stress;
+  // The seed law scaled (JointMaterialDef::law_stress_scale, law_closure_scale).
+  double law_stress_scale = 1.0, law_closure_scale = 1.0;
   double kn_zero = 0.0;  // tangent at zero closure: the stiffness of a bonded joint in tension
   double kn_max = 0.0;   // the largest tangent anywhere: what the time step must allow for
 };

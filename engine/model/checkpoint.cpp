@@ -77,6 +77,8 @@ template <class Ar> void fields(Ar& ar, JointMaterialDef& j) {
   // Optional: schema-1 files written before softening bonds have none (theirs dropped at once).
   optional_member(ar, "fracture_energy", j.fracture_energy, 0.0);
   optional_member(ar, "shear_fracture_energy", j.shear_fracture_energy, 0.0);
+  optional_member(ar, "law_stress_scale", j.law_stress_scale, 1.0);  // 1: the law unscaled
+  optional_member(ar, "law_closure_scale", j.law_closure_scale, 1.0);
 }
 template <class Ar> void fields(Ar& ar, JointParams& p) {
   ar("law", p.law); ar("kn", p.kn); ar("ks", p.ks); ar("tan_friction", p.tan_friction); ar("cohesion", p.cohesion);
@@ -87,6 +89,8 @@ template <class Ar> void fields(Ar& ar, JointParams& p) {
   optional_member(ar, "softens", p.softens, false);  // as the material's fracture energies
   optional_member(ar, "opening_at_loss", p.opening_at_loss, 0.0);
   optional_member(ar, "slip_at_loss", p.slip_at_loss, 0.0);
+  optional_member(ar, "law_stress_scale", p.law_stress_scale, 1.0);
+  optional_member(ar, "law_closure_scale", p.law_closure_scale, 1.0);
 }
 template <class Ar> void fields(Ar& ar, JassignDef& j) {
   ar("material", j.material); ar("set", j.set); ar("kind", j.kind); ar("region", j.region);

@@ -60,6 +60,10 @@ struct JointMaterialDef {
   double fracture_energy = 0.0;
   double shear_fracture_energy = 0.0;
   NormalLaw law = NormalLaw::linear;
+  // A named law scaled by similarity: sn = stress_scale * f(closure / closure_scale), so that
+  // its stiffnesses go by stress_scale / closure_scale (a lab curve read at prototype scale).
+  double law_stress_scale = 1.0;
+  double law_closure_scale = 1.0;
   // Stages {closure from [m], kn [Pa/m]}: closures increasing from 0.
   std::vector<std::array<double, 2>> kn_table;
 };

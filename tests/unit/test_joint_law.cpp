@@ -337,11 +337,55 @@ TEST(JointLaw, RejectsTableKnNotPositive) {
   def.kn_table[0][1] = -2.0;
   expect_rejected(def, {"kn_table stage 1", "kn", "got -2"});
 }
+// The seed's prototype (stresses x 17.86, closures x 400): the lab curve read at another scale,
+// its three stages' 260 / 940 / 1880 MPa/m becoming 11.6 / 42.0 / 83.9 MPa/m.
+JointMaterialDef prototype_def() {
+  JointMaterialDef def = seed_def();
+  def.law_stress_scale = 17.86;
+  def.law_closure_scale = 400.0;
+  return def;
+}
+
+TEST(JointLaw, ScaledSeedCubicIsTheLabCurveAtPrototypeScale) {
+  const JointParams lab = joint_params(seed_def()), p = joint_params(prototype_def());
+  for (double c : {0.001 * kMm, 0.1 * kMm, 0.5 * kMm, 1.0 * kMm, 2.5 * kMm}) {
+    const double expected = 17.86 * normal_stress(lab, c);
+    EXPECT_NEAR(normal_stress(p, 400.0 * c), expected, 1e-12 * expected) << c;
+    const double energy = 17.86 * 400.0 * normal_energy(lab, c);
+    EXPECT_NEAR(normal_energy(p, 400.0 * c), energy, 1e-12 * energy) << c;
+  }
+  EXPECT_NEAR(p.kn_zero, lab.kn_zero * 17.86 / 400.0, 1e-9 * p.kn_zero);
+  EXPECT_NEAR(p.kn_max, lab.kn_max * 17.86 / 400.0, 1e-9 * p.kn_max);
+  // Past its descending point the straight part is the third stage scaled: 83.9 MPa/m.
+  const double h = 1e-6, c = 2.0 * kMm * 400.0;
+  EXPECT_NEAR((normal_stress(p, c + h) - normal_stress(p, c)) / h, 1880e6 * 17.86 / 400.0, 1e-3 * 83.9e6);
+  // The in-situ stress of the seed's cavern, 2.5 to 4.2 MPa, closes it by 5 to 8 cm.
+  EXPECT_GT(closure_at(p, 2.5e6), 0.05);
+  EXPECT_LT(closure_at(p, 4.2e6), 0.08);
+  // (1 Pa is 0.056 Pa on the lab curve, where its terms cancel to about 1e-11 of it.)
+  for (double s : {1.0, 1e4, 1e6, 4.2e6, 6e7, 1e8}) {
+    const double closure = closure_at(p, s);
+    EXPECT_NEAR(normal_stress(p, closure), s, 1e-10 * s) << s;
+  }
+}
+
+TEST(JointLaw, RejectsScalesWithoutALawOrNotPositive) {
+  JointMaterialDef linear = linear_def();
+  linear.law_stress_scale = 17.86;
+  expect_rejected(linear, {"stress_scale", "kn_law"});
+  JointMaterialDef zero = prototype_def();
+  zero.law_closure_scale = 0.0;
+  expect_rejected(zero, {"closure_scale", "got 0"});
+  JointMaterialDef negative = prototype_def();
+  negative.law_stress_scale = -1.0;
+  expect_rejected(negative, {"stress_scale", "got -1"});
+}
+
 
 // normal_energy is the integral of normal_stress from zero closure (Simpson's rule on a fine
 // grid, through the stages and the seed curve's straight part), on both sides of zero.
 TEST(JointLaw, NormalEnergyIsTheIntegralOfTheStressForEveryLaw) {
-  for (const JointMaterialDef& def : {linear_def(), table_def(), seed_def()}) {
+  for (const JointMaterialDef& def : {linear_def(), table_def(), seed_def(), prototype_def()}) {
     const JointParams p = joint_params(def);
     for (const double closure : {-2e-5, 5e-5, 2e-4, 4e-4, 1.5 * kMm, 3.0 * kMm}) {
       constexpr int kIntervals = 20000;
