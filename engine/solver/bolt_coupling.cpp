@@ -349,12 +349,15 @@ void tie_bolts(Mechanics& m) {
   const size_t nodes = static_cast<size_t>(m.node_count);
   h.gather_first.assign(nodes + 1, 0);
   h.rows.assign(nodes, 0.0);
+  // The rock carries the segments' pulls on the nodes it hosts as well as their grout's
+  // (add_bolt_forces): their stiffness, a node's row, goes into its host's rows.
+  const std::vector<double> k = bolt_node_stiffness(set);
   for (size_t i = 0; i < set.nodes.size(); ++i) {
     if (h.zone[i] < 0) continue;
     const auto& node = m.geometry[at(h.zone[i])].node;
     for (int c = 0; c < 3; ++c) {
       ++h.gather_first[at(node[at(c)]) + 1];
-      h.rows[at(node[at(c)])] += 2.0 * std::fabs(h.weight[i][at(c)]) * set.nodes.grout_stiffness[i];
+      h.rows[at(node[at(c)])] += std::fabs(h.weight[i][at(c)]) * k[i];
     }
   }
   for (size_t n = 0; n < nodes; ++n) h.gather_first[n + 1] += h.gather_first[n];

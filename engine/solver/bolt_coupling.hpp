@@ -47,15 +47,21 @@ void bolt_cycle(Mechanics& m, const Motion& motion, bool record_start, bool meas
 // Adds the bolts' unbalanced and applied forces as their last cycle left them (no step).
 void measure_bolts(const Mechanics& m, Measure& out);
 
-// The grout's force on rock node `n` [N/m], from the forces of the last bolt_cycle.
-inline void add_grout_forces(const Mechanics& m, size_t n, double f[2]) {
+// The bolts' force on rock node `n` [N/m], from the forces of the last bolt_cycle. A bolt node
+// hosted by a zone moves with that zone's point and slides along the bolt (u = host + slide dir),
+// so the rock takes every force on the node but the grout's, which acts between the slide and the
+// rock: the segments' pulls, along the bolt and across it. Along it, the slide balances them
+// against the grout (at rest they are the grout's force); across it, where a bolt bends at a
+// slipping joint, only the rock holds them.
+inline void add_bolt_forces(const Mechanics& m, size_t n, double f[2]) {
   const BoltHosts& h = m.bolt_hosts;
   const BoltNodes& b = m.bolts.nodes;
   for (int s = h.gather_first[n]; s < h.gather_first[n + 1]; ++s) {
     const size_t node = static_cast<size_t>(h.gather[static_cast<size_t>(s)] / 3);
-    const double w = h.weight[node][static_cast<size_t>(h.gather[static_cast<size_t>(s)] % 3)] * b.grout_force[node];
-    f[0] += w * b.axis[node].x;
-    f[1] += w * b.axis[node].y;
+    const double w = h.weight[node][static_cast<size_t>(h.gather[static_cast<size_t>(s)] % 3)];
+    // The node's force is the segments' pulls less the grout's b.grout_force along b.axis.
+    f[0] += w * (b.force[node].x + b.grout_force[node] * b.axis[node].x);
+    f[1] += w * (b.force[node].y + b.grout_force[node] * b.axis[node].y);
   }
 }
 

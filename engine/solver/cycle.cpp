@@ -313,7 +313,7 @@ void node_motion_pass(Mechanics& m, int begin, int end, const Motion& motion, bo
           }
         }
         fc[0] = f[0] - own[0], fc[1] = f[1] - own[1];
-        if (with_bolts) add_grout_forces(m, nn, f);
+        if (with_bolts) add_bolt_forces(m, nn, f);
         fb[0] = f[0] - own[0] - fc[0], fb[1] = f[1] - own[1] - fc[1];
       }
       const double mass = m.mass[nn];
@@ -624,7 +624,7 @@ Measure measure_state(const Mechanics& m) {
   }
   // The bolts as their last cycle left them.
   if (!m.bolt_hosts.gather.empty())
-    for (size_t n = 0; n < static_cast<size_t>(m.node_count); ++n) add_grout_forces(m, n, &f[2 * n]);
+    for (size_t n = 0; n < static_cast<size_t>(m.node_count); ++n) add_bolt_forces(m, n, &f[2 * n]);
   measure_bolts(m, out);
   for (size_t n = 0; n < static_cast<size_t>(m.node_count); ++n) {
     if (!(m.mass[n] > 0.0)) continue;
