@@ -1,105 +1,56 @@
--- The seed paper's study, one case per run (issue 9): the 24 m x 48 m warhead cavern in the
--- seed's 200 m x 180 m region, excavated in its 16 steps, with or without bolts.
+-- The seed paper's study, one case per run: the 24 m x 48 m warhead cavern in the seed's
+-- 200 m x 180 m jointed region, dug in its 16 steps, with or without bolts.
 --
 --   edem --set case=3 --set depth=158 --set bolts=none run scripts/paper/case.lua
 --
--- Settings (--set KEY=VALUE; the defaults in brackets):
+-- Settings (--set KEY=VALUE; defaults in brackets):
 --   case      1, 2 or 3: the seed's joint patterns (edem.seed.cases) [3]
 --   depth     m from the ground to the crown [158]
---   bolts     none, 1 (pattern 1: 5 m at 1.5 m on the walls each step exposes) or 2 (pattern 1
---             and 15 m bolts between them in the two weak zones the seed names: the upper right
---             sidewall, A, y from 0 to the springline; the lower left sidewall, B, y below -8;
---             mirrored with the model) [none]
---   set       M or P: the parameter set (edem.seed; VERIFICATION.md S.3) [M]
---   edge, far m: zone size near the cavern and far from it [1.5, 10]
---   stages    how many of the 16 steps to excavate [16]
---   release   cycles over which each step's load comes off [20000]: slow enough that the answer
---             no longer depends on it (scripts/paper/README.md, "The release rate": since session
---             26 Case 3 at 158 m ends within the spread of runs 10 cycles apart from 5,000 cycles
---             up, but the whole study at 10,000 caved in more often than at 20,000, and under
---             local damping (session 30) ended single runs beyond the spread of 20,000's; in
---             session 35 at 10,000 Case 3 at 262 m ended 5 % below in cracks and 6 % in crown)
---             (study.sh --reduced gives 10,000, as slow on its zones twice as large)
---   release_offset  cycles added to release [0]: scripts/paper/study.sh --members runs each case
---             with releases a few cycles apart, to show the spread numerical detail gives
+--   bolts     none, 1 (5 m bolts at 1.5 m on the rock each step exposes) or 2 (pattern 1, and 15 m
+--             bolts between them on the seed's weak sidewalls: upper right A, lower left B) [none]
+--   set       P (the prototype), S (P with joint stiffness x 17.86 only) or M (the seed's listed
+--             values unscaled): edem.seed [P]
+--   prepass   jointed (the seed's: Mohr-Coulomb blocks and slipping joints dug by the explicit
+--             solver, edem.yield_pass) or continuum (prepass{}, joints tied) [jointed]
+--   judge     equilibrium (cracks judged on each step's solved state, in rounds until none
+--             breaks) or cycles (every 10 cycles while the rock moves, the seed's way) [equilibrium]
+--   release   cycles over which a step's load comes off [100 judged at equilibrium, else 20000]
+--   release_offset  cycles added to release [0]
+--   damping   local (Itasca's, 0.8: UDEC's for static problems) or adaptive (viscous, 2 omega,
+--             quicker, but a sliding block runs on barely damped) in the prepass and the steps [local]
+--   edge, far m: zone size at the cavern and far from it [1.5, 10]
+--   stages    how many of the 16 steps to dig [16]
 --   similar   deg: crackseed{ auto }'s grouping angle [45]
---   min_angle deg: crackseed{ auto }'s sharpest corner with a joint or another edge [30; 0: every
---             cut laid as placed]: a potential crack crossing a joint more shallowly leaves thin
---             wedges and slivers that, once free, are driven tip first into their neighbours until
---             the overlap watchdog stops the run; 30 leaves those stretches out (scripts/paper/
---             README.md, "Where runs stopped"; the default since session 25, when it had carried
---             all 21 runs of session 23's study to step 16 against 17 of 21 with 0)
---   origin_x, origin_y  m: a point every group's potential cracks pass through (crackseed{
---             origin }) [both unset: each group's own centroid, as the seed's rule leaves it]; where
---             the 4.8 m grid of cuts falls against the cavern's wall is otherwise chance
---             (scripts/paper/README.md, "Where EDEM disagrees": the depth trend)
---   by_mode   true: crackseed{ auto }'s groups keep to one failure mode, as the studies before
---             session 28 had them [false: a group is the touching yielded zones of one principal
---             direction, a tension group where tension zones cover more than half of it: the
---             seed's regions; scripts/paper/README.md, "Where EDEM disagrees": the depth trend]
---   muck      which blocks are mucked out every 200 cycles: loose (loose_blocks{}: held by no
---             boundary and pressed against no other block, with the blocks glued to them: rock
---             that fell), moved (every block with a gridpoint 1 m from where it started, which
---             under Set P's soft joints takes rock still in place) or opening (of those, the ones
---             whose centre has moved into the opening dug so far) [loose]
---             (scripts/paper/README.md, "Where EDEM disagrees": what a cave-in is); with
---             judge = equilibrium a loose block goes only if loose at the check before too, and
---             never rock of a step not yet dug
---   damping   the excavation steps' damping: local (Itasca's local damping, 0.8: DESIGN.md's for
---             static problems, UDEC's default) or adaptive (viscous, 2 omega from the displacement
---             so far: set{}'s default, the studies' until session 29) [local] (scripts/paper/
---             README.md, "Where EDEM disagrees": what a cave-in is)
---   first     left or right: the half of the arch dug first (steps 2 and 3) [left]. Case 1's two
---             joint sets are mirror images, and the order is the model's one asymmetry besides the
---             mesh and what it carries; right first shows it is not what moves Case 1's left wall
---             more (scripts/paper/README.md, "Where EDEM disagrees": Case 1's walls)
---   mirror    true: the joints mirrored about x = 0 (edem.seed.region's mirror: they dip towards +x)
---             [false]; with first = right the whole model is the mirror image of the one without,
---             so what differs between the two, side for side, comes from the mesh and where
---             crackseed{ auto } lays its cuts (scripts/paper/README.md, "Results", session 40;
---             study.sh --mirror)
---   judge     cycles or equilibrium: judge{ at } [cycles]: cycles judges every 10 cycles while the
---             model moves (the seed's way; what breaks depends on the release); equilibrium judges
---             only the states each step's solve brings to its ratio, in rounds until none breaks,
---             so that the release can be short (release=1: the load off at once)
---   judge_most  judge{ most }: at most this many sections break at a judgment (every 10
---             cycles), those furthest past their strength first [0: all that fail]
---   judge_radius  judge{ radius } [m]: a section's stress is fitted to its two blocks' zones
---             within this distance of its point as well as to the four nearest each side, so that
---             finer zones judge the same averaged stress [0: the four nearest, the seed's]; not the
---             seed's method, and not in the result row: a departure tried in session 43
---             (scripts/paper/README.md, "Results", session 43)
+--   min_angle deg: crackseed{ auto }'s sharpest corner of a cut with a joint [30; 0: every cut]
+--   origin_x, origin_y  m: a point every group's cuts pass through [each group's centroid]
+--   by_mode   true: crackseed{ auto }'s groups keep to one failure mode [false]
+--   muck      loose (blocks held by nothing, rock that fell), moved (moved 1 m) or opening (moved
+--             1 m into the opening) are mucked out every 200 cycles [loose]
+--   first     left or right: the half of the arch dug first [left]
+--   mirror    true: the joints mirrored about x = 0 (with first = right, the mirror image) [false]
+--   judge_most  at most this many sections break at a judgment [0: all that fail]
+--   judge_radius  m: a section's stress also from its blocks' zones within this distance [0]
 --   tolerance model{}'s geometric tolerance [7e-4]
---   fracture_energy, shear_fracture_energy  J/m^2: a broken section's crack softens as a
---             cohesive crack (joint_material{}'s keys) from the set's intact strength (its
---             tension, cohesion and friction) to the joints' friction, instead of being a joint
---             at once [0, 0: a joint at once, the seed's rule]; not the seed's method, and not in
---             the result row: a departure tried in session 42 (scripts/paper/README.md, "Results",
---             session 42)
+--   fracture_energy, shear_fracture_energy  J/m^2: broken sections soften as cohesive cracks
+--             instead of becoming joints at once [0, 0]
 --   table     CSV file the result row is appended to [case_results.csv]; a row after each step
---             goes to the same name with _steps before .csv; either, if there already, must have
---             the columns this script writes
---   threads   recorded in the table: the threads the run was given [OMP_NUM_THREADS, else default]
---   strict    true: a step that stops on an error fails the script (after the row and pictures)
---             instead of only being recorded [false]
--- Steps: the region with the case's joints and the cavern's steps cut as regions; the prepass of
--- the rock mass as one continuum (Mohr-Coulomb rock of the set, joints tied) over all the steps
--- (where Newton fails on every load path it tries it ends there: on_failure = "keep", noted in the
--- row); potential cracks where it yields (crackseed{ auto }, spacing a tenth of the cavern's height,
--- 4.8 m; the set's intact strength); then elastic rock, the set's Coulomb joints and the
--- potential cracks, in-situ stress solved, displacements reset, and each step excavated, solved
--- and bolted. Blocks that come loose (held by nothing: loose_blocks{}) are mucked out every 200
--- cycles, as fallen rock is. A step that stops on an error ends the run; the row says where,
--- and which steps reached their 40,000 cycles after the release short of equilibrium (column
--- unconverged).
--- Writes: the result row (with the settlement 5 m above the crown, as far up as pattern 1's bolts
--- reach, and the bolts broken or carrying half their yield), and pictures CASE_prepass.png (the
--- seed's Figure 8), CASE_cracks.png (Figures 9 and 11) and CASE_profile.png (Figure 12, the
--- settlement 10 m above the crown), with that profile's numbers in CASE_profile.csv (x_m, uy_m:
--- scripts/paper/figure12.lua draws three runs' together).
+--             goes to NAME_steps.csv; an existing table must have this script's columns
+--   threads   recorded in the table [OMP_NUM_THREADS, else default]
+--   strict    true: a step stopped by an error fails the script [false]
+-- Steps: the region with the case's joints and the cavern's steps cut as regions; the prepass
+-- over all the steps; potential cracks where it yielded (crackseed{ auto }, 4.8 m apart, a tenth
+-- of the cavern's height, with the set's intact strength); then elastic rock, the set's joints
+-- and the potential cracks, the in-situ state solved, displacements reset, and each step dug,
+-- solved to a ratio of 1e-5 and bolted. Blocks that come loose are mucked out every 200 cycles.
+-- Writes: the result row (cracks, crown and walls, the settlement 5 m above the crown, bolts
+-- broken or at half their yield, steps short of their ratio, where a step stopped) and pictures:
+-- CASE_prepass_arch.png, CASE_prepass_step9.png, CASE_prepass.png (the seed's Figure 8),
+-- CASE_cracks.png (Figures 9 and 11), CASE_profile.png and .csv (Figure 12: the settlement 10 m
+-- above the crown; figure12.lua draws three runs together).
 local seed = require "edem.seed"
 local cavern = require "edem.cavern"
 local rockbolts = require "edem.bolts"
+local yield_pass = require "edem.yield_pass"
 local shapes = require "edem.shapes"
 
 local function setting(key, default)
@@ -108,19 +59,20 @@ local function setting(key, default)
   return v
 end
 local CASE, DEPTH, BOLTS = setting("case", 3), setting("depth", 158), tostring(setting("bolts", "none"))
-local SET, EDGE, FAR = tostring(setting("set", "M")), setting("edge", 1.5), setting("far", 10)
+local SET, EDGE, FAR = tostring(setting("set", "P")), setting("edge", 1.5), setting("far", 10)
+if SET ~= "P" and SET ~= "S" and SET ~= "M" then error(("set must be P, S or M, got %s"):format(SET), 0) end
+local JUDGE_AT = tostring(setting("judge", "equilibrium"))
+if JUDGE_AT ~= "cycles" and JUDGE_AT ~= "equilibrium" then
+  error(("judge must be cycles or equilibrium, got %s"):format(JUDGE_AT), 0)
+end
 local STAGES, RELEASE_OFFSET = setting("stages", 16), setting("release_offset", 0)
-local RELEASE = setting("release", 20000) + RELEASE_OFFSET
+local RELEASE = setting("release", JUDGE_AT == "equilibrium" and 100 or 20000) + RELEASE_OFFSET
 if not (math.type(RELEASE) == "integer" and RELEASE >= 1) then
   error(("release + release_offset must be a whole number of cycles >= 1, got %s"):format(RELEASE), 0)
 end
 local SIMILAR, TOLERANCE = setting("similar", 45), setting("tolerance", 7e-4)
 local MIN_ANGLE = setting("min_angle", 30)
 local JUDGE_MOST = setting("judge_most", 0)
-local JUDGE_AT = tostring(setting("judge", "cycles"))
-if JUDGE_AT ~= "cycles" and JUDGE_AT ~= "equilibrium" then
-  error(("judge must be cycles or equilibrium, got %s"):format(JUDGE_AT), 0)
-end
 local JUDGE_RADIUS = setting("judge_radius", 0)
 local ORIGIN_X, ORIGIN_Y = setting("origin_x", nil), setting("origin_y", nil)
 local FRACTURE_ENERGY, SHEAR_FRACTURE_ENERGY = setting("fracture_energy", 0), setting("shear_fracture_energy", 0)
@@ -155,6 +107,10 @@ for key, value in pairs({ origin_x = ORIGIN_X, origin_y = ORIGIN_Y }) do
   if type(value) ~= "number" then error(("%s must be a number (m), got %s"):format(key, value), 0) end
 end
 local ORIGIN = ORIGIN_X and { ORIGIN_X, ORIGIN_Y } or nil
+local PREPASS = tostring(setting("prepass", "jointed"))
+if PREPASS ~= "jointed" and PREPASS ~= "continuum" then
+  error(("prepass must be jointed or continuum, got %s"):format(PREPASS), 0)
+end
 local TABLE = tostring(setting("table", "case_results.csv"))
 local STEPS_TABLE = TABLE:gsub("%.csv$", "") .. "_steps.csv"  -- a row after each step
 -- The result row's columns. A table that exists already is appended to, so it must have them,
@@ -166,7 +122,7 @@ local columns = { "case", "set", "depth", "bolts", "release", "steps", "cracks",
                   "slipped", "fallen", "bolts_laid", "bolts_skipped", "bolts_broken", "bolts_over_half_yield",
                   "cuts_left_out", "threads", "seconds", "prepass_stopped", "unconverged", "stopped",
                   "points_fallen", "edge_m", "far_m", "first", "muck", "damping", "mirror", "crack_length_m",
-                  "origin_x_m", "origin_y_m", "judge", "judgments" }
+                  "origin_x_m", "origin_y_m", "judge", "judgments", "prepass" }
 for _, file in ipairs{ TABLE, STEPS_TABLE } do
   local existing = io.open(file, "r")
   if existing then
@@ -189,6 +145,7 @@ if MIRROR then tag = tag .. "_mirror" end
 if COHESIVE then tag = tag .. "_cohesive" end
 if JUDGE_RADIUS ~= 0 then tag = tag .. "_radius" end
 if ORIGIN then tag = tag .. ("_origin%g_%g"):format(ORIGIN_X, ORIGIN_Y) end
+if PREPASS == "continuum" then tag = tag .. "_continuum" end
 local started = os.time()
 
 local c = cavern.warhead{}
@@ -196,45 +153,62 @@ if FIRST == "right" then
   assert(c.stages[2].name:match("arch_left$") and c.stages[3].name:match("arch_right$"))
   c.stages[2], c.stages[3] = c.stages[3], c.stages[2]
 end
-seed.region{ case = CASE, set = SET, depth = DEPTH, regions = c.stages, near = { c.outline }, edge = EDGE,
-             far = FAR, tolerance = TOLERANCE, mirror = MIRROR }
+local function build_region()
+  seed.region{ case = CASE, set = SET, depth = DEPTH, regions = c.stages, near = { c.outline }, edge = EDGE,
+               far = FAR, tolerance = TOLERANCE, mirror = MIRROR }
+end
+build_region()
 local rock = seed[SET].rock
 
--- 1. Where the rock mass yields, as one continuum (joints tied), over all the steps.
-material{ "intact", model = "mohr", density = rock.density, young = rock.young, poisson = rock.poisson,
-          cohesion = rock.cohesion, friction = rock.friction, tension = rock.tension }
-assign{ material = "intact" }
+-- 1. Where the rock mass yields as it is dug: Mohr-Coulomb rock of the set over all the steps.
+local function intact_rock()
+  material{ "intact", model = "mohr", density = rock.density, young = rock.young, poisson = rock.poisson,
+            cohesion = rock.cohesion, friction = rock.friction, tension = rock.tension }
+  assign{ material = "intact" }
+end
+intact_rock()
 local names = {}
 for _, s in ipairs(c.stages) do names[#names + 1] = s.name end
--- Near collapse, or where Newton fails on the stage's load path and on the four finer ones the
--- prepass tries after it (prepass{ restarts = 4 }: 4, 8, 16 and 32 steps), the prepass ends at
--- that step, and the cracks go where it yielded up to that point. Until session 46 it had no
--- restarts, and stopped at 212 m at bench 12 (load factor 0.625), where the path in 4 steps gets
--- through, and in the 262 m mirror image at bench 12 and then, with the prepass's default two
--- restarts, at bench 13 (0.969), where the path in 32 steps gets through (scripts/paper/README.md,
--- "Results", session 46).
--- Its linear solves use Eigen's SparseLU ("lu"), not the quicker UMFPACK: UMFPACK's dense kernels
--- come from OpenBLAS, which picks them for the CPU it runs on, and their last bits move the cracks'
--- ends, so the mesh and the whole run differ from one machine to the next (scripts/paper/README.md,
--- "Runs that differ between machines"). "lu" does not depend on the CPU's kernels, for 3 s more.
-local pre = prepass{ stages = names, joints = false, steps = 2, restarts = 4, on_failure = "keep",
-                     solver = "lu" }
-local prepass_note = "complete"
-if pre.failure then
-  local last = pre.stages[#pre.stages]
-  prepass_note = ("%s at load factor %.3g"):format(last.name, last.reached)
-  print(("%s: the prepass stopped short in %s: cracks placed from the zones yielded so far"):format(
-    tag, prepass_note))
+local WINDOW = { -60, 60, -50, 60 }
+local pre, prepass_note
+if PREPASS == "jointed" then
+  -- The seed's: the jointed mass, its joints slipping and opening, dug by the explicit solver
+  -- (edem.yield_pass), with pictures after the arch, after step 9 and after the last bench (the
+  -- seed's Figure 8); then the same model built again, undug, for the cracks.
+  local pictures = { [3] = "_prepass_arch.png", [9] = "_prepass_step9.png", [#names] = "_prepass.png" }
+  pre = yield_pass.run{ stages = names, release = 100, damping = DAMPING, after_stage = function(k)
+    if pictures[k] then plot{ file = tag .. pictures[k], show = { "plastic", "blocks" }, window = WINDOW } end
+  end }
+  prepass_note = pre.failure and ("stopped in " .. pre.failure:sub(1, 160):gsub('"', "'")) or "complete"
+  build_region()
+  yield_pass.check(pre)
+  intact_rock()
+else
+  -- The rock mass as one continuum, joints tied, by the implicit prepass (Newton). Where Newton
+  -- fails on the stage's load path and the four finer ones it tries after it (4, 8, 16 and 32
+  -- steps), it ends at that step and the cracks go where it yielded so far. Its linear solves use
+  -- Eigen's SparseLU ("lu"), whose answer does not depend on the CPU's kernels, as UMFPACK's
+  -- OpenBLAS kernels do: the cracks' ends, and so the whole run, are the same on any machine.
+  pre = prepass{ stages = names, joints = false, steps = 2, restarts = 4, on_failure = "keep", solver = "lu" }
+  prepass_note = "complete"
+  if pre.failure then
+    local last = pre.stages[#pre.stages]
+    prepass_note = ("%s at load factor %.3g"):format(last.name, last.reached)
+  end
+  plot{ file = tag .. "_prepass.png", show = { "prepass", "joints" }, window = WINDOW }
+end
+if prepass_note ~= "complete" then
+  print(("%s: the prepass stopped short (%s): cracks placed from the zones yielded so far"):format(tag, prepass_note))
 end
 local yielded = 0
 for _, z in ipairs(pre.zones) do if z.state ~= "none" then yielded = yielded + 1 end end
-plot{ file = tag .. "_prepass.png", show = { "prepass", "joints" }, window = { -60, 60, -50, 60 } }
 
 -- 2. Potential cracks there, then the discontinuum.
 judge{ at = JUDGE_AT, most = JUDGE_MOST, radius = JUDGE_RADIUS }
 if COHESIVE then
   local joint = seed[SET].joint
-  joint_material{ "cohesive", kn = joint.kn, kn_law = joint.kn_law, ks = joint.ks, friction = rock.friction,
+  joint_material{ "cohesive", kn = joint.kn, kn_law = joint.kn_law, stress_scale = joint.stress_scale,
+                  closure_scale = joint.closure_scale, ks = joint.ks, friction = rock.friction,
                   cohesion = rock.cohesion, tension = rock.tension, residual_friction = joint.friction,
                   fracture_energy = FRACTURE_ENERGY, shear_fracture_energy = SHEAR_FRACTURE_ENERGY }
 end
@@ -248,8 +222,7 @@ print(("%s: %d zones yielded in the prepass, %d crack groups, %d sections (%d cr
        .. "block edge %.3f of the zone edge"):format(tag, yielded, #groups, n.sections, n.cuts_left_out,
        n.cuts_cut_back, MIN_ANGLE, n.blocks, n.zones, n.snapped, n.slivers_kept, n.shortest_edge))
 -- Where the cracks can come from, by side of the cavern's axis (x < 0 left): the zones yielded in
--- the prepass, and the potential cracks within 2, 5 and 10 m of the outline, where nearly every
--- section breaks (README, "Where EDEM disagrees": the depth trend, Case 1's walls).
+-- the prepass, and the potential cracks within 2, 5 and 10 m of the outline.
 do
   local zones_by_side = { 0, 0 }
   for _, z in ipairs(pre.zones) do
@@ -279,8 +252,7 @@ reset{ "displacement", "velocity", "joint" }  -- displacements and joint slip fr
 energy{ reset = true }  -- the energy balance of the excavation, from the in-situ state
 -- Local damping takes the same share of every node's force whatever the motion's frequency. The
 -- adaptive damping, c = 2 omega, is critical for one frequency, the whole opening's slow
--- convergence, and leaves the quick ring of a breaking section damped at omega / omega_ring of
--- critical; in session 29's runs such rings spread into cave-ins (README, what a cave-in is).
+-- convergence, and leaves quicker motion (a breaking section's ring, a sliding block) damped less.
 if DAMPING == "local" then set{ damping = "local", local_damping = 0.8 } end
 
 -- Measuring points, in the rock left in place: the gridpoint nearest to the crown, and those
@@ -445,8 +417,8 @@ local function bolt_loads()
 end
 -- Pattern 2's weak zones, the seed's words for Figure 11: the upper right sidewall (A: y from 0
 -- to the springline) and the lower left sidewall (B: y below -8), the sidewalls only, not the
--- arch or the floor (before session 48 A took in the arch's right half and B the floor's left
--- half). Right is the side the joints dip towards, so the mirror image has them mirrored.
+-- arch or the floor. Right is the side the joints dip towards, so the mirror image has them
+-- mirrored.
 local half_width, springline, floor = 0, -math.huge, math.huge
 for _, p in ipairs(c.outline) do
   half_width, floor = math.max(half_width, math.abs(p[1])), math.min(floor, p[2])
@@ -515,7 +487,7 @@ local function result_row()
                 prepass_note == "complete" and '""' or ('"' .. prepass_note .. '"'),
                 '"' .. table.concat(unconverged, " ") .. '"',
                 '"' .. stopped:gsub('"', "'") .. '"', '"' .. points_fallen() .. '"', EDGE, FAR, FIRST, MUCK,
-                DAMPING, MIRROR, ("%.2f"):format(r.length), ORIGIN_X or "", ORIGIN_Y or "", JUDGE_AT, judgments }
+                DAMPING, MIRROR, ("%.2f"):format(r.length), ORIGIN_X or "", ORIGIN_Y or "", JUDGE_AT, judgments, PREPASS }
   for i, v in ipairs(row) do row[i] = tostring(v) end
   return r, table.concat(row, ",")
 end
@@ -603,8 +575,7 @@ print(("%s: %d steps, %d cracks (%d tension, %d shear; %d left, %d right), crown
                                  .. points_fallen()) or ""))
 
 -- Where the cracks came from: the potential crack by distance from the outline, the length broken
--- against the length placed (README, "The depth trend", session 47: near the wall nearly all of it
--- breaks at every depth, and where it stops breaking hardly moves with depth).
+-- against the length placed.
 do
   local broken = {}
   for k in cracks() do broken[k.section] = true end
@@ -633,9 +604,11 @@ do
   local e = energy()
   print(("%s: energy balance of the excavation [J/m]: gravity %.4g, boundary %.4g, loads taken off %.4g, "
          .. "prestress %.4g, dug out %.4g; stored %.4g; slip %.4g, plastic %.4g, bonds %.4g, damping %.4g, bolts %.4g; "
-         .. "error %.3g (%.2g %% of the largest term, %.4g)"):format(
+         .. "error %.3g (%.2g %% of the largest term, %.4g; arising in the zones %.3g, the contacts %.3g, "
+         .. "the bolts %.3g)"):format(
     tag, e.gravity, e.boundary, e.release, e.prestress, e.excavated, e.kinetic + e.strain + e.contact + e.bolt,
-    e.slip, e.plastic, e.bond, e.damping, e.bolt_plastic, e.error, 100 * e.relative_error, e.largest))
+    e.slip, e.plastic, e.bond, e.damping, e.bolt_plastic, e.error, 100 * e.relative_error, e.largest,
+    e.zone_error, e.contact_error, e.bolt_error))
 end
 plot{ file = tag .. "_cracks.png", show = { "blocks", "cracks", "bolts" }, window = { -50, 50, -40, 50 } }
 local final_profile = profile{ from = PROFILE_LINE.from, to = PROFILE_LINE.to, quantity = "uy",

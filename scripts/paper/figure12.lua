@@ -1,4 +1,4 @@
--- The seed's Figure 12 (issue 9): the vertical displacement 10 m above the crown of Case 3 at the
+-- The seed's Figure 12: the vertical displacement 10 m above the crown of Case 3 at the
 -- end, without bolts and with bolt patterns 1 and 2, on one chart, from the profiles
 -- scripts/paper/case.lua writes (TAG_profile.csv). study.sh draws it in its output folder once the
 -- three runs are there.

@@ -1,6 +1,7 @@
--- Why the crack count hardly grows with depth (issue 9; scripts/paper/README.md, "The depth
--- trend", session 47): the rock mass of a case as one continuum (joints tied), the whole cavern
--- dug, at 158, 212 and 262 m. Two areas of rock left in place, per depth:
+-- How much rock the cavern overstresses at each depth: the rock mass of a case as one continuum
+-- (joints tied), the whole cavern dug, at 158, 212 and 262 m, with a parameter set's rock
+-- (scripts/paper/README.md, "Sensitivities": Set M's hardly grows with depth, Set P's does). Two
+-- areas of rock left in place, per depth:
 --   * where the elastic stress breaks the seed's shear criterion (1) or tension criterion (2):
 --     what an explicit run's sections, judged on the stress of elastic blocks, start from;
 --   * where the Mohr-Coulomb prepass yields: where case.lua places its potential cracks.
@@ -8,7 +9,7 @@
 -- closed form: Kirsch's elastic stresses, and Salencon's plastic ring under the mean in-situ
 -- stress (hydrostatic; no support).
 --
---   edem --quiet run scripts/paper/overstress.lua            (Case 3; --set case=1 or 2)
+--   edem --quiet run scripts/paper/overstress.lua   (Case 3, Set P; --set case=1 or 2, --set set=M)
 --
 -- About 3 minutes on one core, most of it the three Mohr-Coulomb prepasses.
 local seed = require "edem.seed"
@@ -18,7 +19,8 @@ local shapes = require "edem.shapes"
 local CASE = arg and arg.case or 3
 local DEPTHS = { 158, 212, 262 }
 local K0 = 0.6
-local rock = seed.M.rock
+local SET = tostring(arg and arg.set or "P")
+local rock = (seed[SET] or error(("overstress: set must be P, S or M, got %s"):format(SET), 0)).rock
 local phi = math.rad(rock.friction)
 local sin_phi, cos_phi = math.sin(phi), math.cos(phi)
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The seed paper's study (issue 9) in one command: every run of scripts/paper/case.lua the
+# The seed paper's study in one command: every run of scripts/paper/case.lua the
 # trends need, then scripts/paper/trends.lua over their rows.
 #
 #   bash scripts/paper/study.sh [--edem PATH] [--out DIR] [--jobs N] [--threads T] [--members M]
@@ -11,41 +11,37 @@
 #   --jobs     runs at a time [1]
 #   --threads  threads each run cycles on [2]
 #   --members  runs of each case, their releases 10 cycles apart: 0, -10, +10, -20, ... cycles from
-#              case.lua's (--set release_offset); the trends are then judged over every pairing of
-#              them (trends.lua), since when a bench's cascade of cracking comes turns on such
-#              numerical detail (scripts/paper/README.md, "Results") [1]
+#              case.lua's (--set release_offset); each trend is then judged over every pairing of
+#              them (trends.lua) [1]
 #   --mirror   one more member of each case: its mirror image about the cavern's axis (case.lua's
 #              mirror = true and first = right: the joints dip the other way, the arch's right half
-#              is dug first), at case.lua's release; the mesh and where crackseed{ auto } lays its
-#              cuts are new, so it shows the spread the discretisation gives, which releases a few
-#              cycles apart do not (trends.lua swaps its sides back; scripts/paper/README.md,
-#              "Results", session 40) (neither key again after --)
+#              dug first); the mesh and where crackseed{ auto } lays its cuts are new, so it shows
+#              the spread the discretisation gives (trends.lua swaps its sides back) (neither key
+#              again after --)
 #   --origins K  K more members of each case, each with its potential cracks laid through a point of
 #              its own (case.lua's origin_x, origin_y): the k-th point is (4.8 u, 4.8 v) m with (u, v)
 #              the k-th point of the R2 low-discrepancy sequence, (frac(0.5 + 0.75488 k), frac(0.5 +
 #              0.56984 k)), so that the offsets of the 4.8 m grid of cuts against the cavern are
 #              spread evenly and fixed before any run; like the mirror image, a fair discretisation of
 #              the same problem. With two or more members of each case trends.lua also judges each
-#              trend on the members' means (trends_means.md: a one-sided Welch test at 95 %,
-#              scripts/paper/README.md, "Results", session 44) [0]
-#   --reduced  the version CI runs: zones twice as large (edge 3 m near the cavern, 20 m far), the
-#              first 8 of the 16 steps, each step's load released over 10,000 cycles, not 20,000
-#              (with scaled masses a cycle carries the load about one zone, so on zones twice as
-#              large that is as slow; scripts/paper/README.md, "The release rate"); the same runs
-#              and trends (edem takes a --set key once, so none of these four again after --)
+#              trend on the members' means (trends_means.md: a one-sided Welch test at 95 %) [0]
+#   --reduced  the version the default test suite runs: zones twice as large (edge 3 m near the
+#              cavern, 20 m far) and the first 8 of the 16 steps; the same runs and trends (edem
+#              takes a --set key once, so none of these three again after --)
 #   --strict   exit 1 unless every trend holds
 #   --resume   keep the runs that already wrote their row in OUT (a study cut short, or more
-#              --members on top of an earlier study made by the same edem) and run only the rest
+#              --members on top of a study made by the same edem) and run only the rest
 #   --list     print the study's runs, one a line (as --only takes them), and stop
 #   --only RUN one of those runs alone: its row, log and pictures in OUT, nothing gathered or
 #              judged; exit 1 when it wrote no row (ctest runs the reduced study's runs so, each a
 #              test of its own, so that they share the cores with the rest of the suite)
 #   --judge    run nothing: gather and judge the rows the runs (--only) left in OUT; exit 1 when
 #              one is missing (give the same --members, --mirror as the runs had)
-#   after --    more settings for every run (e.g. -- --set set=P)
+#   after --    more settings for every run (e.g. -- --set set=M)
 #
-# The runs (Set M unless told otherwise): Cases 1, 2 and 3 at 158 m without bolts; Case 3 at
-# 212 m and 262 m without bolts; Case 3 at 158 m with bolt patterns 1 and 2; each --members times
+# The runs, with case.lua's defaults (Set P, judged at equilibrium): Cases 1, 2 and 3 at 158 m
+# without bolts; Case 3 at 212 m and 262 m without bolts; Case 3 at 158 m with bolt patterns 1 and
+# 2; each --members times
 # (members after the first add _member-K to their names, the mirror image _member-mirror). Each
 # writes its own row (OUT/TAG.csv, a row after each step in OUT/TAG_steps.csv) and pictures;
 # OUT/study.csv and OUT/steps.csv gather them; OUT/trends.md has the verdicts at the runs' ends, and
@@ -86,7 +82,7 @@ done
 
 common=(--set "threads=$threads")
 if [[ $reduced == 1 ]]; then
-  common+=(--set edge=3 --set far=20 --set stages=8 --set release=10000)
+  common+=(--set edge=3 --set far=20 --set stages=8)
 fi
 cases=(
   "case=1 depth=158 bolts=none"
@@ -206,7 +202,7 @@ if (( members > 1 || mirror == 1 || origins > 0 )); then  # the same rows judged
 fi
 [[ $written == "${#runs[@]}" ]] || { echo "study: only $written of ${#runs[@]} runs wrote their row" >&2; exit 1; }
 # The seed's Figure 12 from the first members' profiles (case.lua's TAG_profile.csv).
-set_name=M
+set_name=P
 for kv in "${extra[@]}"; do [[ $kv == set=* ]] && set_name=${kv#set=}; done
 profiles=("case3_${set_name}_h158_none_profile.csv" "case3_${set_name}_h158_pattern1_profile.csv"
           "case3_${set_name}_h158_pattern2_profile.csv")

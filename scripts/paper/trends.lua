@@ -1,4 +1,4 @@
--- The seed paper's trends (issue 9, acceptance 1) checked in the rows scripts/paper/case.lua wrote.
+-- The seed paper's trends checked in the rows scripts/paper/case.lua wrote.
 --
 --   edem --set tables=study.csv --set markdown=trends.md run scripts/paper/trends.lua
 --
@@ -8,7 +8,7 @@
 --             --members), and so is its mirror image (case.lua's mirror = true: study.sh
 --             --mirror), read with left and right swapped back, so that right is the side the
 --             joints dip towards in every row; where one member has several rows the last one counts
---   set       the parameter set whose rows are compared [M]
+--   set       the parameter set whose rows are compared [P]
 --   depth     the depth of the comparisons that are not about depth [158]
 --   step      N: compare each run's row after step N (the tables are case.lua's _steps files);
 --             common: after the last step every run reached [the end of each run]
@@ -40,7 +40,7 @@ local function setting(key, default)
   if v == nil then return default end
   return v
 end
-local SET, DEPTH = tostring(setting("set", "M")), setting("depth", 158)
+local SET, DEPTH = tostring(setting("set", "P")), setting("depth", 158)
 local JUDGE = tostring(setting("judge", "pairings"))
 if JUDGE ~= "pairings" and JUDGE ~= "means" then
   error(("trends: judge must be pairings or means, got %s"):format(JUDGE), 0)
@@ -310,8 +310,8 @@ local function trend(statement, needs, holds, describe, points, means, into)
   into[#into + 1] = { statement = statement, verdict = verdict, numbers = numbers }
 end
 
--- The broken sections' total length after the count, where every row has it (case.lua since
--- session 41): a section is one zone edge, so the count follows the zone size and the geometric
+-- The broken sections' total length after the count, where every row has it: a section is one
+-- zone edge, so the count follows the zone size and the geometric
 -- tolerance, and the length much less. The verdict stays on the count, the seed's measure.
 local function broken_length(v, labels)
   local parts = {}

@@ -1,14 +1,14 @@
--- edem.seed: the seed paper's jointed region, as VERIFICATION.md S.3 reads its numbers.
+-- edem.seed: the seed paper's jointed region and its parameter sets, scaled as its similarity law says.
 --
 --   local seed = require "edem.seed"
 --   seed.region{ cross_spacing = 16, edge = 4 }   -- builds, zones, loads; returns info()
---   seed.P.rock, seed.P.joint                      -- the parameter sets it uses (seed.M too)
+--   seed.P.rock, seed.P.joint                      -- the parameter sets it uses (seed.S, seed.M too)
 --   seed.elastoplastic{}                           -- Mohr-Coulomb rock, bonded joints (a prepass)
 --
 -- The region: 200 m x 180 m, centred on the origin, the joints of `case` (seed.cases; default 3:
 -- 60 deg, spacing 16, 12, 8 m in turn) and a cross set at right angles (`cross_spacing`, default
 -- 16 m as in scripts/examples/jointed_cavern.lua), zoned uniformly at `edge` (default 4 m),
--- elastic rock and Coulomb joints of `set` ("P", the default, or "M": seed.P, seed.M), gravity,
+-- elastic rock and Coulomb joints of `set` ("P", the default, "S" or "M": seed.P, seed.S, seed.M), gravity,
 -- in-situ stress with the cavern roof (y = 24) `depth` below the ground (default 158 m) and K0
 -- (default 0.6), rollers on the sides and the base, the top loaded by the in-situ stress.
 --
@@ -32,21 +32,64 @@
 --   seed.region{ regions = c.stages, near = { c.outline }, edge = 1.5, far = 10 }
 local seed = {}
 
--- Set P, the physically consistent prototype (VERIFICATION.md S.3): the model material's stresses
--- times 17.86, joint stiffnesses times 0.04465 (kn: the third stage, 1880 MPa/m in the lab).
+-- The seed's similarity law: its physical model is the prototype at 1/400 (C_L, lengths) with
+-- stresses at 1/17.86 (C_sigma). The values the seed lists are the model material's own test
+-- results, so a full-scale model takes stresses x 17.86, lengths x 400 and stiffnesses per
+-- length (stress / length) x 17.86 / 400; angles, Poisson's ratio and K0 are as listed.
+seed.stress_scale, seed.length_scale = 17.86, 400
+
+-- Set P, the physically consistent prototype, the study's reading:
+--   rock: young, cohesion, tension x 17.86 (415.5 MPa, 0.143 MPa, 0.0546 MPa listed); friction 34
+--     and poisson 0.136 as listed; density 2688 kg/m3, the prototype's unit weight 26.88 kN/m3
+--     that 17.86 = 26.88 / 1.505 x 10 was built from (the listed 1505 is the model material's);
+--   joints: the seed's lab curve sn = f(v) (kn_law "seed-cubic") read at prototype scale,
+--     sn(v) = 17.86 f(v / 400): its three stages 260 / 940 / 1880 MPa/m become 11.6 / 42.0 /
+--     83.9 MPa/m, 5 to 8 cm of closure under the cavern's in-situ stress; ks 80.7 MPa/m x 17.86 /
+--     400 = 3.60 MPa/m; friction 31.2, no cohesion or tension, as listed.
+-- Bolts are full-scale steel in the seed already (E 190 GPa, 446 mm2): no set scales them.
 seed.P = {
   rock = { density = 2688, young = 7.421e9, poisson = 0.136, cohesion = 2.554e6, friction = 34,
            tension = 0.975e6 },
-  joint = { kn = 83.9e6, ks = 3.60e6, friction = 31.2 },
+  joint = { kn_law = "seed-cubic", stress_scale = 17.86, closure_scale = 400, ks = 3.60e6, friction = 31.2 },
 }
 
--- Set M, "reproduce the paper's numbers" (VERIFICATION.md S.3): the values the seed lists for its
--- numerical model, at full geometry. Its joints close by the seed's lab curve (kn_law "seed-cubic").
+-- Set S, a sensitivity: Set P with the joints' stiffness scaled by 17.86 only (a common
+-- shortcut that leaves closures at lab size): sn(v) = 17.86 f(v), kn 4.6 to 34 GPa/m over the
+-- three stages, ks 80.7 MPa/m x 17.86 = 1.44 GPa/m. The joints are 400 times stiffer against the
+-- rock than in the physical model.
+seed.S = {
+  rock = seed.P.rock,
+  joint = { kn_law = "seed-cubic", stress_scale = 17.86, closure_scale = 1, ks = 80.7e6 * 17.86, friction = 31.2 },
+}
+
+-- Set M, a sensitivity: the values the seed lists for its numerical model, unscaled, at full
+-- geometry: the rock about ten times overstressed against the physical model (sigma_v / UCS 2.5
+-- to 4.3 at 158 m; scripts/paper/README.md, "The parameters"). Its joints close by the lab
+-- curve itself.
 seed.M = {
   rock = { density = 1505, young = 415.5e6, poisson = 0.136, cohesion = 0.143e6, friction = 34,
            tension = 0.0546e6 },
   joint = { kn_law = "seed-cubic", ks = 80.7e6, friction = 31.2 },
 }
+
+-- The secant normal stiffness of a set's joints at a normal stress [Pa/m]: stress over the
+-- closure the law gives it (the clamped lab curve of joint_material{ kn_law }, scaled). The
+-- prepass's interface elements take a constant kn; this is the seed's secant for them.
+function seed.secant_kn(joint, stress)
+  assert(stress > 0, "seed.secant_kn: stress must be > 0")
+  local S, L = (joint.stress_scale or 1) * 1e6, (joint.closure_scale or 1) * 1e-3  -- MPa and mm, scaled
+  local function f(v) return ((-4.302 * v + 7.688) * v - 0.123) * v end
+  local v0 = (-7.688 + math.sqrt(7.688 ^ 2 - 4 * 4.302 * 0.123)) / (2 * -4.302)  -- its zero crossing [mm]
+  -- The curve rises to its peak at v = 1.183 mm (3.49 MPa lab); past it the law is straight: a
+  -- stress beyond the peak's is out of this helper's reach.
+  local lo, hi = v0, 1.0
+  assert(stress <= S * f(hi), "seed.secant_kn: stress beyond the curve's rising part")
+  for _ = 1, 100 do
+    local mid = 0.5 * (lo + hi)
+    if S * f(mid) < stress then lo = mid else hi = mid end
+  end
+  return stress / ((0.5 * (lo + hi) - v0) * L)
+end
 
 -- The seed's three joint patterns (its Table 1): the main set's angle from +x (it dips towards -x,
 -- the cavern's left side rising to the right) and its spacings in turn; each with the cross set
@@ -63,8 +106,8 @@ function seed.region(t)
   local depth, k0 = t.depth or 158, t.k0 or 0.6
   local case = seed.cases[t.case or 3] or error(("seed.region: case must be 1, 2 or 3, got %s"):format(t.case), 2)
   local set = seed[t.set or "P"]
-  if t.set ~= nil and t.set ~= "P" and t.set ~= "M" then
-    error(("seed.region: set must be \"P\" or \"M\", got %s"):format(tostring(t.set)), 2)
+  if t.set ~= nil and t.set ~= "P" and t.set ~= "S" and t.set ~= "M" then
+    error(("seed.region: set must be \"P\", \"S\" or \"M\", got %s"):format(tostring(t.set)), 2)
   end
   local rock, joint = set.rock, set.joint
   if t.mirror ~= nil and type(t.mirror) ~= "boolean" then
@@ -87,7 +130,8 @@ function seed.region(t)
   zone{ edge = edge, near = t.near, far = t.far, growth = t.growth, sliver = t.sliver }
   material{ "rock", density = rock.density, young = rock.young, poisson = rock.poisson }
   assign{ material = "rock" }
-  joint_material{ "joint", kn = joint.kn, kn_law = joint.kn_law, ks = joint.ks, friction = joint.friction }
+  joint_material{ "joint", kn = joint.kn, kn_law = joint.kn_law, stress_scale = joint.stress_scale,
+                  closure_scale = joint.closure_scale, ks = joint.ks, friction = joint.friction }
   jassign{ material = "joint" }
   gravity{ 0, -9.81 }
   insitu{ surface = 24 + depth, density = rock.density, k0 = k0 }

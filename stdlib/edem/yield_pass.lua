@@ -100,7 +100,7 @@ function yield_pass.run(t)
       return solve{ ratio = ratio, max_cycles = release + max_cycles }
     end)
     if not ok then
-      result.failure = ("%s: %s"):format(name, tostring(r))
+      result.failure = ("%s: %s"):format(name, (tostring(r):gsub("^.-cycle %d+: ", "")))
       break
     end
     result.stages[k] = { name = name, cycles = r.cycles, ratio = r.ratio, converged = r.converged }
