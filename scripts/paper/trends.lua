@@ -239,7 +239,7 @@ end
 -- commas, with "at least" before those whose measuring point `point` fell. `points`: the measuring
 -- points (case.lua's names) the trend reads whose fall makes it "not shown". `means(got)`: the
 -- trend's comparisons for judge = means (see welch), or nil and why they cannot be made. `into`:
--- where the verdict goes, acceptance 1's trends [results] or the seed's other statements (others).
+-- where the verdict goes, the study's eleven trends [results] or the seed's other statements (others).
 local results, others = {}, {}
 local function trend(statement, needs, holds, describe, points, means, into)
   local got, why = {}, nil
@@ -455,7 +455,7 @@ for _, case in ipairs{ 1, 2, 3 } do
 end
 
 -- The seed's other statements that the rows can judge (§4.1, §4.2), judged as the trends are and
--- reported apart: acceptance 1 does not list them. The rest (where the prepass yields, key blocks
+-- reported apart from the trends. The rest (where the prepass yields, key blocks
 -- coming loose, a collapse) are judged in scripts/paper/README.md from the pictures and rows.
 trend("Case 1's new cracks gather on the right side, towards which the joints dip (§4.1)", { { 1, D, "none" } },
   function(r) return r.right > r.left end,
