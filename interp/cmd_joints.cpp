@@ -106,10 +106,10 @@ const Command& joint_material_command() {
                "a named normal law",
                "kn or kn_table",
                normal_laws},
-              {"stress_scale", Type::number, "", gt(0), kOptional,
+              {"stress_scale", Type::number, "-", gt(0), kOptional,
                "kn_law's stresses times this (default 1; its stiffnesses times stress_scale / "
                "closure_scale)"},
-              {"closure_scale", Type::number, "", gt(0), kOptional, "kn_law's closures times this (default 1)"},
+              {"closure_scale", Type::number, "-", gt(0), kOptional, "kn_law's closures times this (default 1)"},
               {"ks", Type::number, "Pa/m", gt(0), kRequired, "shear stiffness"},
               {"friction", Type::number, "deg", from_below(0, 90), "0", "friction angle"},
               {"cohesion", Type::number, "Pa", ge(0), "0", "cohesion, until it first slips or opens"},

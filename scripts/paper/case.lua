@@ -38,10 +38,11 @@
 --   threads   recorded in the table [OMP_NUM_THREADS, else default]
 --   strict    true: a step stopped by an error fails the script [false]
 -- Steps: the region with the case's joints and the cavern's steps cut as regions; the prepass
--- over all the steps; potential cracks where it yielded (crackseed{ auto }, 4.8 m apart, a tenth
--- of the cavern's height, with the set's intact strength); then elastic rock, the set's joints
--- and the potential cracks, the in-situ state solved, displacements reset, and each step dug,
--- solved to a ratio of 1e-5 and bolted. Blocks that come loose are mucked out every 200 cycles.
+-- (jointed: over the steps the run digs; continuum: over all 16); potential cracks where it
+-- yielded (crackseed{ auto }, 4.8 m apart, a tenth of the cavern's height, with the set's intact
+-- strength); then elastic rock, the set's joints and the potential cracks, the in-situ state
+-- solved, displacements reset, and each step dug, solved to a ratio of 1e-5 and bolted. Blocks
+-- that come loose are mucked out every 200 cycles.
 -- Writes: the result row (cracks, crown and walls, the settlement 5 m above the crown, bolts
 -- broken or at half their yield, steps short of their ratio, where a step stopped) and pictures:
 -- CASE_prepass_arch.png, CASE_prepass_step9.png, CASE_prepass.png (the seed's Figure 8),
@@ -173,10 +174,13 @@ local WINDOW = { -60, 60, -50, 60 }
 local pre, prepass_note
 if PREPASS == "jointed" then
   -- The seed's: the jointed mass, its joints slipping and opening, dug by the explicit solver
-  -- (edem.yield_pass), with pictures after the arch, after step 9 and after the last bench (the
-  -- seed's Figure 8); then the same model built again, undug, for the cracks.
-  local pictures = { [3] = "_prepass_arch.png", [9] = "_prepass_step9.png", [#names] = "_prepass.png" }
-  pre = yield_pass.run{ stages = names, release = 100, damping = DAMPING, after_stage = function(k)
+  -- (edem.yield_pass), over the steps the run digs, with pictures after the arch, after step 9 and
+  -- after the last step (the seed's Figure 8); then the same model built again, undug, for the
+  -- cracks.
+  local dug = {}
+  for k = 1, math.min(STAGES, #names) do dug[k] = names[k] end
+  local pictures = { [3] = "_prepass_arch.png", [9] = "_prepass_step9.png", [#dug] = "_prepass.png" }
+  pre = yield_pass.run{ stages = dug, release = 100, damping = DAMPING, after_stage = function(k)
     if pictures[k] then plot{ file = tag .. pictures[k], show = { "plastic", "blocks" }, window = WINDOW } end
   end }
   prepass_note = pre.failure and ("stopped in " .. pre.failure:sub(1, 160):gsub('"', "'")) or "complete"
