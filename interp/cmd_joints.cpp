@@ -109,7 +109,8 @@ const Command& joint_material_command() {
               {"stress_scale", Type::number, "-", gt(0), kOptional,
                "kn_law's stresses times this (default 1; its stiffnesses times stress_scale / "
                "closure_scale)"},
-              {"closure_scale", Type::number, "-", gt(0), kOptional, "kn_law's closures times this (default 1)"},
+              {"closure_scale", Type::number, "-", gt(0), kOptional,
+               "kn_law's closures times this (default 1)"},
               {"ks", Type::number, "Pa/m", gt(0), kRequired, "shear stiffness"},
               {"friction", Type::number, "deg", from_below(0, 90), "0", "friction angle"},
               {"cohesion", Type::number, "Pa", ge(0), "0", "cohesion, until it first slips or opens"},
@@ -129,8 +130,8 @@ const Command& joint_material_command() {
       .usage =
           "joint_material{ \"joint\", kn = 1.2e7, ks = 3.6e6, friction = 31.2 }\n"
           "joint_material{ \"seed\", kn_law = \"seed-cubic\", ks = 8.07e7, friction = 31.2 }\n"
-          "joint_material{ \"prototype\", kn_law = \"seed-cubic\", stress_scale = 17.86, closure_scale = 400, "
-          "ks = 3.6e6, friction = 31.2 }\n"
+          "joint_material{ \"prototype\", kn_law = \"seed-cubic\", stress_scale = 17.86, "
+          "closure_scale = 400, ks = 3.6e6, friction = 31.2 }\n"
           "joint_material{ \"cohesive\", kn = 1.88e9, ks = 1.88e9, friction = 34, "
           "cohesion = 0.143e6, tension = 0.0546e6, fracture_energy = 20, "
           "shear_fracture_energy = 100 }",

@@ -110,8 +110,10 @@ JointParams joint_params(const JointMaterialDef& def) {
   const bool scaled = def.law_stress_scale != 1.0 || def.law_closure_scale != 1.0;
   if (scaled && def.law != NormalLaw::seed_cubic)
     fail("stress_scale and closure_scale scale a named law: give kn_law, or leave them out");
-  for (auto [value, key] : {std::pair{def.law_stress_scale, "stress_scale"}, {def.law_closure_scale, "closure_scale"}})
-    if (!(std::isfinite(value) && value > 0.0)) fail("{} must be a finite number > 0, got {}", key, value);
+  for (auto [value, key] :
+       {std::pair{def.law_stress_scale, "stress_scale"}, {def.law_closure_scale, "closure_scale"}})
+    if (!(std::isfinite(value) && value > 0.0))
+      fail("{} must be a finite number > 0, got {}", key, value);
   p.law_stress_scale = def.law_stress_scale;
   p.law_closure_scale = def.law_closure_scale;
   switch (def.law) {
@@ -224,7 +226,8 @@ double closure_at(const JointParams& p, double stress) {
       // Monotone: bisection to machine precision on a bracket that holds the answer, on the
       // unscaled curve.
       const double lab_stress = stress / p.law_stress_scale;
-      double lo = 0.0, hi = lab_stress / (p.kn_zero * p.law_closure_scale / p.law_stress_scale) + 1e-3;
+      const double lab_kn_zero = p.kn_zero * p.law_closure_scale / p.law_stress_scale;
+      double lo = 0.0, hi = lab_stress / lab_kn_zero + 1e-3;
       while (cubic_stress(hi) < lab_stress) hi *= 2.0;
       for (int i = 0; i < 200 && hi - lo > 1e-15 * hi; ++i) {
         const double mid = 0.5 * (lo + hi);
