@@ -36,7 +36,6 @@ local seed = {}
 -- stresses at 1/17.86 (C_sigma). The values the seed lists are the model material's own test
 -- results, so a full-scale model takes stresses x 17.86, lengths x 400 and stiffnesses per
 -- length (stress / length) x 17.86 / 400; angles, Poisson's ratio and K0 are as listed.
-seed.stress_scale, seed.length_scale = 17.86, 400
 
 -- Set P, the physically consistent prototype, the study's reading:
 --   rock: young, cohesion, tension x 17.86 (415.5 MPa, 0.143 MPa, 0.0546 MPa listed); friction 34
@@ -71,25 +70,6 @@ seed.M = {
            tension = 0.0546e6 },
   joint = { kn_law = "seed-cubic", ks = 80.7e6, friction = 31.2 },
 }
-
--- The secant normal stiffness of a set's joints at a normal stress [Pa/m]: stress over the
--- closure the law gives it (the clamped lab curve of joint_material{ kn_law }, scaled). The
--- prepass's interface elements take a constant kn; this is the seed's secant for them.
-function seed.secant_kn(joint, stress)
-  assert(stress > 0, "seed.secant_kn: stress must be > 0")
-  local S, L = (joint.stress_scale or 1) * 1e6, (joint.closure_scale or 1) * 1e-3  -- MPa and mm, scaled
-  local function f(v) return ((-4.302 * v + 7.688) * v - 0.123) * v end
-  local v0 = (-7.688 + math.sqrt(7.688 ^ 2 - 4 * 4.302 * 0.123)) / (2 * -4.302)  -- its zero crossing [mm]
-  -- The curve rises to its peak at v = 1.183 mm (3.49 MPa lab); past it the law is straight: a
-  -- stress beyond the peak's is out of this helper's reach.
-  local lo, hi = v0, 1.0
-  assert(stress <= S * f(hi), "seed.secant_kn: stress beyond the curve's rising part")
-  for _ = 1, 100 do
-    local mid = 0.5 * (lo + hi)
-    if S * f(mid) < stress then lo = mid else hi = mid end
-  end
-  return stress / ((0.5 * (lo + hi) - v0) * L)
-end
 
 -- The seed's three joint patterns (its Table 1): the main set's angle from +x (it dips towards -x,
 -- the cavern's left side rising to the right) and its spacings in turn; each with the cross set
