@@ -8,6 +8,8 @@
 --   depth     m from the ground to the crown [158]
 --   bolts     none, 1 (5 m bolts at 1.5 m on the rock each step exposes) or 2 (pattern 1, and 15 m
 --             bolts between them on the seed's weak sidewalls: upper right A, lower left B) [none]
+--   bolt_at   solved (a step's bolts laid once it is solved) or dug (as soon as its rock is out,
+--             before its load comes off: they hold what the step loosens) [solved]
 --   set       P (the prototype), S (P with joint stiffness x 17.86 only) or M (the seed's listed
 --             values unscaled): edem.seed [P]
 --   prepass   jointed (the seed's: Mohr-Coulomb blocks and slipping joints dug by the explicit
@@ -95,6 +97,10 @@ local FIRST = tostring(setting("first", "left"))
 if FIRST ~= "left" and FIRST ~= "right" then
   error(("first must be left or right, got %s"):format(FIRST), 0)
 end
+local BOLT_AT = tostring(setting("bolt_at", "solved"))
+if BOLT_AT ~= "solved" and BOLT_AT ~= "dug" then
+  error(("bolt_at must be solved or dug, got %s"):format(BOLT_AT), 0)
+end
 local MIRROR = setting("mirror", false)
 if type(MIRROR) ~= "boolean" then
   error(("mirror must be true or false, got %s"):format(MIRROR), 0)
@@ -123,7 +129,7 @@ local columns = { "case", "set", "depth", "bolts", "release", "steps", "cracks",
                   "slipped", "fallen", "bolts_laid", "bolts_skipped", "bolts_broken", "bolts_over_half_yield",
                   "cuts_left_out", "threads", "seconds", "prepass_stopped", "unconverged", "stopped",
                   "points_fallen", "edge_m", "far_m", "first", "muck", "damping", "mirror", "crack_length_m",
-                  "origin_x_m", "origin_y_m", "judge", "judgments", "prepass" }
+                  "origin_x_m", "origin_y_m", "judge", "judgments", "prepass", "bolt_at" }
 for _, file in ipairs{ TABLE, STEPS_TABLE } do
   local existing = io.open(file, "r")
   if existing then
@@ -147,6 +153,7 @@ if COHESIVE then tag = tag .. "_cohesive" end
 if JUDGE_RADIUS ~= 0 then tag = tag .. "_radius" end
 if ORIGIN then tag = tag .. ("_origin%g_%g"):format(ORIGIN_X, ORIGIN_Y) end
 if PREPASS == "continuum" then tag = tag .. "_continuum" end
+if BOLT_AT == "dug" then tag = tag .. "_bolted_when_dug" end
 local started = os.time()
 
 local c = cavern.warhead{}
@@ -491,7 +498,8 @@ local function result_row()
                 prepass_note == "complete" and '""' or ('"' .. prepass_note .. '"'),
                 '"' .. table.concat(unconverged, " ") .. '"',
                 '"' .. stopped:gsub('"', "'") .. '"', '"' .. points_fallen() .. '"', EDGE, FAR, FIRST, MUCK,
-                DAMPING, MIRROR, ("%.2f"):format(r.length), ORIGIN_X or "", ORIGIN_Y or "", JUDGE_AT, judgments, PREPASS }
+                DAMPING, MIRROR, ("%.2f"):format(r.length), ORIGIN_X or "", ORIGIN_Y or "", JUDGE_AT, judgments, PREPASS,
+                BOLT_AT }
   for i, v in ipairs(row) do row[i] = tostring(v) end
   return r, table.concat(row, ",")
 end
@@ -534,6 +542,7 @@ for i, s in ipairs(c.stages) do
   -- to excavate, and the step is only solved.
   local ok_excavate, why = pcall(excavate, { region = s.name, release = RELEASE })
   if not ok_excavate and not tostring(why):find("was excavated already", 1, true) then error(why, 0) end
+  if BOLTS ~= "none" and BOLT_AT == "dug" then bolt_step(s) end
   -- The ratio is judged once the load is off: 40,000 cycles from there.
   local ok, result = pcall(solve, { ratio = 1e-5, max_cycles = RELEASE + 40000 })
   -- Judged at equilibrium, a step short of its ratio has not been judged: rock creeping on soft
@@ -555,7 +564,7 @@ for i, s in ipairs(c.stages) do
   end
   if not result.converged then unconverged[#unconverged + 1] = i end
   judgments = judgments + result.judgments
-  if BOLTS ~= "none" then bolt_step(s) end
+  if BOLTS ~= "none" and BOLT_AT == "solved" then bolt_step(s) end
   done = i
   print(("  %5d %-20s %7d %9.2e %10.4f %7d %6d %6d %6d%s"):format(i, s.name, result.cycles, result.ratio,
     settlement(), info().cracks, result.judgments, fallen, os.time() - started,
