@@ -123,7 +123,7 @@ inline void keep_state(Contact& c, const Contact& old, const JointParams& p) {
   const double dus = (rvx * sx + rvy * sy) * dt;
   // The state the last step left, for what this one dissipates.
   const double closure_before = c.closure, sn_before = c.sn, fs_before = c.fs;
-  const double length_before = c.share * carrying_length(c, last_overlap(c));
+  const double length_before = last_carrying_length(c);
   const bool open_before = c.state == ContactState::open, intact_before = c.intact;
   c.t = t;
   c.share = share;
@@ -206,7 +206,7 @@ struct ContactEnergy {
 inline ContactEnergy contact_energy(const Contact& c, const JointParams& p) {
   if (c.state == ContactState::open) return {};
   const double overlap = last_overlap(c);
-  const double length = c.share * carrying_length(c, overlap);
+  const double length = last_carrying_length(c);
   if (!(length > 0.0)) return {};
   ContactEnergy e;
   e.shear = c.fs * c.fs / (2.0 * p.ks * length);

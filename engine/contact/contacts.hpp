@@ -42,7 +42,9 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "geom/block_set.hpp"
@@ -137,6 +139,20 @@ inline double last_overlap(const Contact& c) { return c.closure - c.closure0 - c
 // own, or a tip's, which grows with the overlap up to the watchdog's limit.
 inline double carrying_length(const Contact& c, double overlap) {
   return std::max(c.length, c.wedge * std::clamp(overlap, 0.0, c.limit));
+}
+
+// The length that carried the contact's force at its last cycle [m], its corner's share taken.
+// The overlap it is read at comes back from the closure, which holds the in-situ closure (some
+// centimetres) beside it: an overlap below that sum's round-off is not known, and a tip whose
+// length grows from nothing with it would read a length off by orders of magnitude, and through
+// it a shear stress of ~1e19 Pa (a shear force rescaled by length_now / length_then). Such a tip
+// carries no force worth keeping: it reads 0, and its shear spring starts afresh.
+inline double last_carrying_length(const Contact& c) {
+  const double overlap = last_overlap(c);
+  const double round_off = 64.0 * std::numeric_limits<double>::epsilon() *
+                           (std::fabs(c.closure) + std::fabs(c.closure0) + std::fabs(c.dilation));
+  if (c.wedge * round_off > c.length && overlap <= round_off) return 0.0;
+  return c.share * carrying_length(c, overlap);
 }
 
 std::string_view to_string(ContactState state);

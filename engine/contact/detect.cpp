@@ -692,7 +692,7 @@ void book_prestress(Mechanics& m, const ContactEnergy& now, const ContactEnergy&
 void inherit_faces(const Mechanics& m, Contact& c, const JointParams& p, const Contact& from, double gap, Vec2 s) {
   const ContactEdge& e = m.faces.edges[static_cast<size_t>(from.edge)];
   const Vec2 from_s = (1.0 / norm(at(m, e.b) - at(m, e.a))) * (at(m, e.b) - at(m, e.a));
-  const double from_length = from.share * carrying_length(from, last_overlap(from));
+  const double from_length = last_carrying_length(from);
   const double length = carrying_length(c, -gap);
   if (!(from_length > 0.0) || !(length > 0.0)) return;
   const double side = from.other == c.other ? 1.0 : -1.0;  // the same block's faces, or the other's
