@@ -36,10 +36,10 @@ printf '%s\n' "${scripts[@]}" | OMP_NUM_THREADS=1 xargs -P "$(nproc)" -I{} sh -c
 
 Each problem below is a script in this folder, run by ctest (`ctest -L verification`); it
 prints every measured value beside the closed-form or published one, the error and the
-tolerance (VERIFICATION.md gives the references and why each tolerance). This chapter is what
-those scripts wrote the last time `bash scripts/make-docs.sh` ran: the table of checks, and a
-chart of each check's error over its tolerance (below 1 passes). Scripts under `long/` take
-minutes and run with `ctest -L long`.
+tolerance; its opening comment, the text of its section below, names the source of the closed
+form and why the tolerance is what it is. This chapter is what those scripts wrote the last time
+`bash scripts/make-docs.sh` ran: the table of checks, and a chart of each check's error over its
+tolerance (below 1 passes). Scripts under `long/` take minutes and run with `ctest -L long`.
 
 HEAD
   for script in "${scripts[@]}"; do

@@ -1,6 +1,6 @@
-// Grouted bolts and cables: the physics kernel (DESIGN.md §5), in the spirit of Itasca's cable
-// element. A bolt is a line of nodes joined by axial segments; a grout spring-slider ties each
-// node to the rock at that point, along the bolt's axis.
+// Grouted bolts and cables: the physics kernel, in the spirit of Itasca's cable element. A bolt is
+// a line of nodes joined by axial segments; a grout spring-slider ties each node to the rock at
+// that point, along the bolt's axis.
 //
 // Per metre of thickness. The model is plane strain: it carries one metre of tunnel, and a bolt
 // row repeats every `spacing` metres out of the plane. So every force, stiffness and mass here is

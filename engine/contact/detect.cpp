@@ -254,12 +254,11 @@ constexpr double kAlongFace = 0.17364817766693033;
 // span at the watchdog's depth, the length a face of them would have.
 // At a convex corner of the block as built (ContactEdge::corner_a, corner_b), an edge along the
 // face, up to kAlongFace into it, lies over the face all its length once pressed in: its tangent
-// is infinite, and the tip has that most. Before session 32 such an edge made no tip when it
-// turned the least bit into the face: a corner pressed 4 cm into the face of the block diagonally
-// across a slipped joint crossing was dropped whenever its edge along the joint rocked past
-// parallel, and found again when it rocked back; 2 to 5 MN/m on and off every few dozen cycles
-// kept Case 2's crossings from settling (scripts/paper/README.md, "Results", session 32). Elsewhere
-// on a face the rule is as it was: a face's gridpoint carries its half-edges' length, not a tip's.
+// is infinite, and the tip has that most. Were such an edge no tip once it turned the least bit
+// into the face, a corner pressed into the face of the block diagonally across a slipped joint
+// crossing would be dropped whenever its edge along the joint rocked past parallel and found again
+// when it rocked back, its force going on and off every few dozen cycles, and the crossing would
+// not settle. Elsewhere on a face a gridpoint carries its half-edges' length, not a tip's.
 // An edge clearly into the face is no tip's either: the face beside a tip's apex would take the
 // tip's far edge, its line run on past the apex, as a face to press on (wedge_tip.lua).
 double tip_wedge(const Mechanics& m, size_t k, Vec2 p, Vec2 own_normal, const Found& to, double reach) {

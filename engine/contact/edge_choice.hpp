@@ -7,12 +7,11 @@
 //
 // The edge the contact had before (`held`) is kept while it is offered, the gridpoint still
 // projects onto it (not past its ends: a gridpoint sliding along a face goes on to the next
-// edge, as before), and it faces the boundary within kHeldFacing of the best. A corner pressed
-// into the corner of the block diagonally across a crossing of two joints faces that block's
-// two edges equally (they are its own edges' continuations); choosing afresh at each search
-// swung its force between their normals, some 100 degrees apart, as the blocks' small rotations
-// reordered them: a limit cycle that kept the seed cavern's walls from settling
-// (scripts/paper/README.md, "Run times", session 26).
+// edge), and it faces the boundary within kHeldFacing of the best. A corner pressed into the
+// corner of the block diagonally across a crossing of two joints faces that block's two edges
+// equally (they are its own edges' continuations); choosing afresh at each search would swing
+// its force between their normals, some 100 degrees apart, as the blocks' small rotations
+// reorder them: a limit cycle that keeps the walls of the seed cavern from settling.
 #pragma once
 
 #include <algorithm>

@@ -1,9 +1,9 @@
 // The seed's cubic, sn = -4.302 v^3 + 7.688 v^2 - 0.123 v (MPa, v in mm), is a lab curve with
-// two defects (VERIFICATION.md S.4): it gives tension (down to -0.0005 MPa) for v < 0.0161 mm and
-// its tangent falls to zero at v = 1.183 mm and turns negative beyond. Clamped here so that the
-// stiffness is always positive and the polynomial never gives tension:
-//   * the curve starts at its zero crossing v0 = 0.0161 mm: sn(c) = f(c + v0), tangent 122 MPa/m
-//     at c = 0 (the "offset" of S.4);
+// two defects: it gives tension (down to -0.0005 MPa) for v < 0.0161 mm and its tangent falls
+// to zero at v = 1.183 mm and turns negative beyond, where no time step would be stable. Clamped
+// here so that the stiffness is always positive and the polynomial never gives tension:
+//   * the curve starts at its zero crossing v0 = 0.0161 mm, offset by it: sn(c) = f(c + v0),
+//     tangent 122 MPa/m at c = 0;
 //   * past the point of the descending branch where the tangent is back down to 1880 MPa/m (the
 //     third stage of the seed's three-stage fit, reached at v = 1.042 mm, sn = 3.35 MPa), it goes
 //     on straight with that stiffness.

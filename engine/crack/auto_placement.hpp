@@ -1,4 +1,4 @@
-// Potential cracks placed where a prepass found the rock yielding (the seed's §2.2, DESIGN.md §6):
+// Potential cracks placed where a prepass found the rock yielding (the seed paper's §2.2):
 // the yielded zones grouped into regions of one failure mode and one principal direction, and in
 // each region two sets of parallel cuts, clipped to the region's zones.
 //
@@ -9,9 +9,8 @@
 // none is left to add; then the next region starts. As the seed has it (its §2.2), regions are
 // those of one principal direction, and each is a tension region where tension is the principal
 // reason: where its tension zones cover more than half its area; else a shear region. With
-// `by_mode`, a region also keeps to the mode of its first zone (EDEM's grouping until 2026-11-23):
-// then a few zones of the other mode carve a region into ragged pieces whose outlines, glued, break
-// the cuts near an opening's wall.
+// `by_mode`, a region also keeps to the mode of its first zone: then a few zones of the other mode
+// carve a region into ragged pieces whose outlines, glued, break the cuts near an opening's wall.
 //
 // Orientation, from the region's mean principal direction (area-weighted, as axes): the major
 // principal plane is normal to the most compressive stress. Shear regions get two sets at

@@ -1,6 +1,6 @@
-// When a potential-crack section fails (DESIGN.md §4, VERIFICATION.md §0.1), from its in-plane
-// principal stresses s1 <= s3 (compression negative: s1 the most compressive) and the rock's
-// strength:
+// When a potential-crack section fails (the seed paper's §2.3, one sign corrected), from its
+// in-plane principal stresses s1 <= s3 (compression negative: s1 the most compressive) and the
+// rock's strength:
 //   shear    f_s = (1 - sin phi) s1 - (1 + sin phi) s3 + 2 c cos phi,  fails when f_s < 0;
 //   tension  f_t = sigma_t - s3,                                      fails when f_t < 0.
 // (The seed prints "- 2 c cos phi" in f_s; with compression negative that cannot be right:

@@ -1,6 +1,6 @@
-// Judging potential-crack sections (seed paper §2.3-2.4, DESIGN.md §4): the stress at each
-// intact section's calculation point (section_stress.hpp), the criteria (criteria.hpp) or a
-// user's, and breaking the sections that fail.
+// Judging potential-crack sections (seed paper §2.3-2.4): the stress at each intact section's
+// calculation point (section_stress.hpp), the criteria (criteria.hpp) or a user's, and breaking the
+// sections that fail.
 #pragma once
 
 #include "geom/mesh.hpp"

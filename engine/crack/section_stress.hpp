@@ -1,6 +1,6 @@
-// The stress at a potential-crack section (seed paper §2, DESIGN.md §4): an equilibrium-
-// satisfying linear stress field fitted by least squares to the stresses of the zones around
-// the section's calculation point, evaluated at the point.
+// The stress at a potential-crack section (seed paper §2.3): an equilibrium-satisfying linear
+// stress field fitted by least squares to the stresses of the zones around the section's
+// calculation point, evaluated at the point.
 //
 // The field comes from an Airy stress function with quadratic and cubic terms,
 //   Phi = a1 x^2 + a2 x y + a3 y^2 + b1 x^3 + b2 x^2 y + b3 x y^2 + b4 y^3,

@@ -1,4 +1,4 @@
-// Potential-crack sections (seed paper §2.4, DESIGN.md §4).
+// Potential-crack sections (seed paper §2.4).
 //
 // A potential crack is a cut through intact rock (crackseed{}) whose two faces are tied: their
 // gridpoints, which zoning places at the same points on both faces, are one solver node, so

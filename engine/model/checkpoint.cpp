@@ -121,9 +121,9 @@ template <class Ar> void fields(Ar& ar, Contact& c) {
   ar("leads_past_b", c.leads_past_b);
   ar("opened", c.opened);
 }
-// Schema-1 files written before tips had their own length lack it (and had no tips); those
-// written before session 33 lack the leads_past flags (their tips faded past any corner), and
-// those before session 42 a softening bond's opening (they had none).
+// Older schema-1 files may lack these, read then at their defaults: a tip's own length (such
+// files have no tips), the leads_past flags (their tips fade past any corner) and a softening
+// bond's opening (they have no softening bonds).
 std::vector<const char*> later_members(const Contact*) {
   return {"wedge", "leads_past_a", "leads_past_b", "opened"};
 }

@@ -49,7 +49,7 @@ struct CrackDef {
   Vec2 from, to;  // [m]
 };
 
-// Potential cracks (DESIGN.md §4): sets of parallel cuts with the intact rock's strength,
+// Potential cracks (seed paper §2.2): sets of parallel cuts with the intact rock's strength,
 // tied shut until a section of them fails (crack/sections.hpp).
 struct CrackSeedDef {
   RegionRef region;            // only inside this region (empty: everywhere)

@@ -1,5 +1,5 @@
-// A SUNDIALS linear solver over Eigen's sparse direct solvers, for KINSOL (DESIGN.md §8): it
-// factors the SUNSparseMatrix (CSC) KINSOL fills with the tangent, in place, without copying.
+// A SUNDIALS linear solver over Eigen's sparse direct solvers, for KINSOL: it factors the
+// SUNSparseMatrix (CSC) KINSOL fills with the tangent, in place, without copying.
 //   lu:   Eigen::SparseLU (COLAMD ordering), for any tangent (non-associated flow makes it unsymmetric)
 //   ldlt: Eigen::SimplicialLDLT (AMD ordering), for symmetric tangents only (elastic zones, or
 //         associated flow), reading the lower triangle

@@ -1,4 +1,4 @@
-// The static elastoplastic problem the prepass solves (DESIGN.md §6), on the solver's arrays: the
+// The static elastoplastic problem the prepass (prepass.hpp) solves, on the solver's arrays: the
 // live zones as the explicit cycle sees them (plain constant-strain triangles, small strain, plane
 // strain), their materials, the model's weight and boundary loads, its supports. The unknowns are
 // the free displacement components. A load step integrates each zone's stress from the step's

@@ -1,6 +1,7 @@
-// The implicit elastoplastic prepass (DESIGN.md §6): the model solved statically, implicitly,
-// from its present state through excavation stages, to find where the rock yields and how the
-// principal stresses point, before the explicit run (which it leaves untouched).
+// The implicit elastoplastic prepass (the seed paper's prior analysis, its §2.2): the model solved
+// statically, implicitly, from its present state through excavation stages, to find where the
+// rock yields and how the principal stresses point, before the explicit run (which it leaves
+// untouched).
 #pragma once
 
 #include <cstdint>

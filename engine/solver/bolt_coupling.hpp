@@ -1,6 +1,6 @@
 // Bolts in a zoned model: each bolt node tied to a material point of a host zone, the grout's
 // reaction spread back over that zone's nodes, the bolts' share of the time step, and their
-// part of a cycle (DESIGN.md §5; the laws are bolt/bolt_law.hpp).
+// part of a cycle (the laws are bolt/bolt_law.hpp).
 //
 // Across its axis a bolt node moves with its host point (a 2D bolt has no bending stiffness, so
 // nothing else would hold it there); along the axis it slides against the point, by `slide`,

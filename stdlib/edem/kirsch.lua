@@ -1,5 +1,5 @@
 -- edem.kirsch: Kirsch's circular hole in an elastic plate under biaxial far-field stress
--- (VERIFICATION.md §1), for verification scripts.
+-- (Kirsch 1898; in Jaeger & Cook, Fundamentals of Rock Mechanics), for verification scripts.
 --
 --   local kirsch = require "edem.kirsch"
 --   local hole = kirsch.new{ a = 1, p1 = 30e6, p2 = 15e6, shear = 2.8e9, bulk = 3.9e9 }

@@ -1,6 +1,8 @@
 -- edem.salencon: the circular tunnel in an elastic-perfectly plastic Mohr-Coulomb medium
--- (Salençon 1969; VERIFICATION.md §2), its standard model and closed form, for verification
--- scripts and benchmarks.
+-- (Salençon 1969, "Contraction quasi-statique d'une cavité à symétrie sphérique ou cylindrique
+-- dans un milieu élasto-plastique", Ann. Ponts Chaussées), its standard model (Itasca's
+-- verification problem "Cylindrical hole in an infinite Mohr-Coulomb material") and closed form,
+-- for verification scripts and benchmarks.
 --
 --   local salencon = require "edem.salencon"
 --   local s = salencon                          -- a, R, P0, G, K, c, phi, nu, Kp, sc, H, Pcr, R0
@@ -41,7 +43,10 @@ function salencon.stresses(r)
 end
 
 -- Inward wall displacement under a support pressure Pi (default 0), dilation angle psi [deg]:
--- elastic above Pcr, else VERIFICATION.md §2's plastic-zone formula at r = a.
+-- elastic above Pcr, else the plastic-zone displacement at r = a. That one integrates the
+-- compatibility e_r = d(r e_t)/dr with the flow rule e_r^p + Kpsi e_t^p = 0, the elastic strains in
+-- the plastic zone taken from the stress change through Hooke's law: the variant FLAC and UDEC
+-- reproduce (Park & Kim 2006, IJRMMS 43:616-622, list three).
 function salencon.wall_displacement(psi, Pi)
   Pi = Pi or 0
   if Pi >= Pcr then return (P0 - Pi) * a / (2 * G) end

@@ -1,4 +1,7 @@
 -- edem.seed: the seed paper's jointed region and its parameter sets, scaled as its similarity law says.
+-- The seed paper: Jiang et al., "Simulation of Cracking near a Large Underground Cavern in a
+-- Discontinuous Rock Mass using the Expanded Distinct Element Method"; its §3.2 lists the rock's
+-- and the joints' values, its §4.2 the bolts'.
 --
 --   local seed = require "edem.seed"
 --   seed.region{ cross_spacing = 16, edge = 4 }   -- builds, zones, loads; returns info()

@@ -1,16 +1,17 @@
-// The explicit solver on a jointed model: what the contacts cost (issue 4, item 7). Results go
-// to tests/bench/RESULTS.md.
+// The explicit solver on a jointed model: what the contacts cost. Results go to
+// tests/bench/RESULTS.md.
 //
 // B4: the main example's region (tests/scenes.hpp: 200 m x 180 m, Case 3 joints, the glued
 //     warhead "cavern") zoned to about 50k zones, built through the Model as a script would:
-//     elastic rock and joints of the physically consistent prototype (Set P of VERIFICATION.md
-//     S.3, as tests/verification/seed_region_joints.lua), jassigned to every joint, in-situ
-//     stress with the cavern roof 158 m deep (K0 = 0.6), roller sides and base, the top loaded
-//     by the in-situ stress, gravity, static mode. The in-situ state is in balance, so nothing
-//     moves much and contacts are found once: this is the steady cost of the contact forces. After a warm-up of kWarmUp cycles (prepare, first
-//     contact detection), kBatches batches of kBatch cycles are timed, on 1 and 2 threads: the
-//     same cycles every run, since the motion after the in-situ start (and with it how often
-//     contacts are found again) changes as the model settles.
+//     elastic rock and joints of the physically consistent prototype (Set P of
+//     stdlib/edem/seed.lua, as tests/verification/seed_region_joints.lua), jassigned to every
+//     joint, in-situ stress with the cavern roof 158 m deep (K0 = 0.6), roller sides and base,
+//     the top loaded by the in-situ stress, gravity, static mode. The in-situ state is in
+//     balance, so nothing moves much and contacts are found once: this is the steady cost of the
+//     contact forces. After a warm-up of kWarmUp cycles (prepare, first contact detection),
+//     kBatches batches of kBatch cycles are timed, on 1 and 2 threads: the same cycles every
+//     run, since the motion after the in-situ start (and with it how often contacts are found
+//     again) changes as the model settles.
 //   * BM_B4_JointedRegion: the jointed model; zone-cycles/s include the contact passes (forces,
 //     gather) and every re-detection the motion asks for.
 //   * BM_B4_JointedRegionLoaded: the same, with the top load raised by a fifth after the

@@ -1,5 +1,4 @@
-// The explicit solver with potential cracks (issue 5, item 7). Results go to
-// tests/bench/RESULTS.md.
+// The explicit solver with potential cracks. Results go to tests/bench/RESULTS.md.
 //
 // B5: B1's unit square (zones of edge 1/200, about as many as B1's 200 x 200 cells) with
 //     potential cracks every two zone edges in both directions (crackseed angles 0 and 90,

@@ -1,5 +1,5 @@
--- Speed against accuracy for the choices a user makes on the seed's cavern (issue 61, build item
--- 4): judging mode, release, damping and zone size near the opening. Reads the tables
+-- Speed against accuracy for the choices a user makes on the seed's cavern: judging mode,
+-- release, damping and zone size near the opening. Reads the tables
 -- tests/bench/judging_independence.sh writes and draws two charts, run time against the change in
 -- crack count and against the change in crown settlement, each relative to the most careful run of
 -- its kind:

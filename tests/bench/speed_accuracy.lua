@@ -1,6 +1,6 @@
--- Speed against accuracy, implicit prepass against the explicit solver (issue 7, build item 4):
--- two charts and a table for tests/bench/RESULTS.md.
---   1. Salencon (VERIFICATION.md §2, psi = 0) over mesh sizes: the relative error of the wall
+-- Speed against accuracy, implicit prepass against the explicit solver: two charts and a table
+-- for tests/bench/RESULTS.md.
+--   1. Salencon (stdlib/edem/salencon.lua, psi = 0) over mesh sizes: the relative error of the wall
 --      displacement against the run time. Implicit: prepass{ steps = 1 } (1, 10 and 100 steps agree
 --      within 0.3 %: tests/verification/salencon_implicit.lua). Explicit: solve{} from the same
 --      state to a ratio of 1e-5 and of 1e-6.

@@ -177,7 +177,7 @@ TEST_F(Checkpoint, RestoredRunWithACohesiveCrackSofteningGoesOnBitForBit) {
   ASSERT_FALSE(expected.empty());
   {
     // Counted after the save: a contacts() between cycle()s finds the contacts then, which can
-    // change the run (the closing note of session 42).
+    // change the run.
     Interpreter first({.quiet = true, .threads = 1, .stdlib_dirs = {}});
     expect_runs(first, bar + back + "save('" + file("mid.h5") + "')\n" + softening);
     EXPECT_GT(std::stoi(global(first, "softening")), 0) << "no bond is softening at the save";

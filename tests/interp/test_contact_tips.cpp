@@ -1,10 +1,9 @@
 // A corner pressed into a face while one of its edges lies along that face: where a joint
 // crossing has slipped, the corner of one block is pushed into the face of the block diagonally
 // across, its edge along the joint lying on that face and its half-edge carried by the block
-// beside it. Only the tip rule (contacts.hpp) keeps it out; before session 32 the corner was no
-// tip whenever that edge turned the least bit into the face, and its contact came and went as
-// the edge rocked about parallel (Case 2 of the paper study: scripts/paper/README.md, "Results",
-// session 32).
+// beside it. Only the tip rule (contacts.hpp) keeps it out: were the corner no tip whenever that
+// edge turned the least bit into the face, its contact would come and go as the edge rocked about
+// parallel (as at the joint crossings of the seed's Case 2).
 #include "interp_test.hpp"
 
 namespace edem::test {
@@ -68,10 +67,9 @@ TEST(ContactTips, ACornerWithAnEdgeAlongTheFaceIsATipWhicheverWayThatEdgeLeans) 
 // Four blocks at a joint crossing whose upper half has slipped by OFFSET along the horizontal
 // joint, pressed down by 2 MPa: upper_right's corner stands OFFSET to the right of lower_left's
 // corner, on lower_right. lower_left's face line, run on past its corner, lies over that corner,
-// but nothing of lower_left is there: the corner's edges both lead away from it. Until session 33
-// the force past a corner faded over about one edge whatever way the gridpoint's edges led, and
-// lower_left pushed that corner up with 42 % more force than lower_right, which really carries
-// it (scripts/paper/README.md, "Results", session 33).
+// but nothing of lower_left is there: the corner's edges both lead away from it. Were the force
+// past a corner to fade over about one edge whatever way the gridpoint's edges led, lower_left
+// would push that corner up, harder than lower_right, which really carries it.
 TEST(ContactTips, ACornerBesideTheDiagonalBlockIsNotPushedByThatBlocksFaceRunOnPastItsCorner) {
   Interpreter interpreter;
   interpreter.context().quiet = true;

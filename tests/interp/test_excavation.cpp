@@ -281,8 +281,8 @@ TEST(Excavation, RockTheReleaseStillPushesOnIsNotLoose) {
 }
 
 // A block mucked out while its step's load comes off takes its share of the load with it: its
-// nodes are no longer cycled, and their last velocity went on counting the share's work (the
-// balance's error was 98 % of its largest term here).
+// nodes are no longer cycled, and their last velocity would otherwise go on counting the share's
+// work (the balance's error would be 98 % of its largest term here).
 TEST(Excavation, MuckingOutDuringAReleaseTakesTheBlocksShare) {
   Interpreter interpreter;
   interpreter.context().quiet = true;

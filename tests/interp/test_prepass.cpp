@@ -151,9 +151,9 @@ TEST(Prepass, AStageWithNoStaticStateEndsThePrepassWhenKept) {
 // The same weak rock with 30 iterations a load step: a failed step's line search stops once it has
 // given the same out-of-balance force, to the last bit, four iterations in a row (it no longer
 // moves the iterate), instead of repeating it up to its 30th iteration. Six of the 17 failed load
-// steps end so (one did before, for KINSOL's own reasons), 814 iterations in all against 897, and
-// the steps are cut back exactly as before: the same 17 cut-backs, the same factor reached (one
-// attempt at the stage: restarts = 0).
+// steps end so (one of them would anyway, for KINSOL's own reasons), 814 iterations in all
+// against 897 without the stop, and the steps are cut back as they would be without it: the same
+// 17 cut-backs, the same factor reached (one attempt at the stage: restarts = 0).
 TEST(Prepass, AStuckLineSearchGivesUpAndTheStepIsCutBack) {
   Interpreter interpreter;
   interpreter.context().quiet = true;

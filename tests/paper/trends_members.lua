@@ -78,7 +78,7 @@ expect(found, "The side the joints dip towards (right) moves more (Case 2)", "wi
 expect(found, "Case 2's cracks on the right side sit higher than Case 1's", "within the spread (3 of 6 pairings)")
 assert(text:find("Case 2 10.0, 10.5, 13.0 m (100, 105, 120 cracks)", 1, true), "the swapped side's count and height")
 
--- Rows with the broken sections' length (case.lua since session 41): the two count trends give it
+-- Rows with the broken sections' length (case.lua's crack_length_m): the two count trends give it
 -- after the counts, and still judge on the counts (Case 3 has more cracks, 320 against 300, but
 -- less length, 380 against 390 m). Rows without the column give no length (above).
 assert(not text:find("broken length", 1, true), "no length from rows without it")

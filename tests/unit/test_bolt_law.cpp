@@ -1,6 +1,7 @@
 // The bolt/cable law (engine/bolt): its parameters, the segment and grout laws one at a time, a
-// set's geometry, equilibrium and time step, and the pull-out of VERIFICATION.md §7a in rigid
-// ground, relaxed to equilibrium by a small damped explicit loop here in the test:
+// set's geometry, equilibrium and time step, and the pull-out of a fully grouted bolt from rigid
+// ground (the shear-lag closed form, as tests/verification/bolt_pullout.lua), relaxed to
+// equilibrium by a small damped explicit loop here in the test:
 //   * elastic F(x) and head stiffness against the closed form (and the exact answer of the
 //     discrete chain of 40 segments, solved directly);
 //   * displacement control at the head, driven at a slow constant speed and read without stopping
@@ -25,10 +26,12 @@
 namespace edem {
 namespace {
 
-// VERIFICATION.md §7a: E = 190 GPa, A = 446 mm^2, k_b = 50 MN/m/m, s_b = 0.2 MN/m, spacing 1.
+// The bolt of the seed paper (Jiang et al., §4.2: E = 190 GPa, A = 446 mm^2) in a reference
+// grout, k_b = 50 MN/m/m, s_b = 0.2 MN/m; spacing 1.
 constexpr double kYoung = 190e9, kArea = 446e-6, kBondStiffness = 50e6, kBondStrength = 0.2e6;
 constexpr double kEA = kYoung * kArea;  // 84.74 MN
-constexpr double kSeedYield = 0.156e6;  // 446 mm^2 x ~350 MPa (VERIFICATION.md S.3, "Bolts")
+// The seed's "yield strength 1.55 MPa" is almost certainly a force, 1.55e5 N: 446 mm^2 x ~350 MPa.
+constexpr double kSeedYield = 0.156e6;
 constexpr double kSeedFailureStrain = 0.035;
 constexpr int kSegments = 40;
 
@@ -370,9 +373,9 @@ TEST(BoltTimeStep, NodeStiffnessAndMass) {
   EXPECT_DOUBLE_EQ(after[2], 2.0 * seg + 2.0 * grout);
 }
 
-// VERIFICATION.md §10 "Watch the bolts": a 0.5 m segment of the seed bolt, density 6083 kg/m^3,
-// m = 1.357 kg, k = EA/L = 1.695e8 N/m. §10 quotes 2 sqrt(m/k) = 1.79e-4 s, the single-spring
-// value; a chain of such segments, with the segment's mass lumped on each interior node, is
+// A 0.5 m segment of the seed bolt, density 6083 kg/m^3 (the seed paper's §4.2): m = 1.357 kg,
+// k = EA/L = 1.695e8 N/m. A single mass on that spring is stable up to 2 sqrt(m/k) = 1.79e-4 s;
+// a chain of such segments, with the segment's mass lumped on each interior node, is
 // stable only up to sqrt(m/k) = 8.95e-5 s, half of it.
 TEST(BoltTimeStep, SeedBoltChainStepIsHalfTheSingleSpringValue) {
   BoltParams p = seed_params();
@@ -386,7 +389,7 @@ TEST(BoltTimeStep, SeedBoltChainStepIsHalfTheSingleSpringValue) {
   const double step = bolt_critical_step(set);
   std::printf(
       "seed bolt, 0.5 m segments: critical step %.4g s; sqrt(m/k) = %.4g s; "
-      "2 sqrt(m/k) = %.4g s (VERIFICATION.md §10 quotes 1.79e-4 s)\n",
+      "2 sqrt(m/k) = %.4g s (the single-spring value, 1.79e-4 s)\n",
       step, std::sqrt(m / k), 2.0 * std::sqrt(m / k));
   EXPECT_LT(step, std::sqrt(m / k));
   EXPECT_GT(step, 0.9 * std::sqrt(m / k));  // the grout (2 k_b dx against 4 EA/dx) lowers it 4%
@@ -423,7 +426,7 @@ TEST(BoltTimeStep, CriticalStepIsSafeAndTight) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// Pull-out in rigid ground (VERIFICATION.md §7a)
+// Pull-out in rigid ground
 
 // The closed form, F0 at the head of a grouted length L, elastic bond.
 double closed_ratio(double L, double x) {
@@ -576,7 +579,7 @@ struct Pullout {
 };
 
 // Elastic stage at half the slip-onset load: F(x)/F0, the head stiffness, against the closed form
-// and the discrete chain.
+// (and `table`, values of it worked by hand, to their rounding) and the discrete chain.
 void check_elastic(double L, const double (&x)[3], const double (&table)[3],
                    double table_stiffness) {
   Pullout bolt(L, seed_params(1e9, 1.0));
@@ -607,7 +610,7 @@ void check_elastic(double L, const double (&x)[3], const double (&table)[3],
     std::printf("  F(%.4g)/F0: measured %.5f, closed form %.5f, table %.4f: error %+.2e of F0\n",
                 x[j], measured, closed, table[j], measured - closed);
     EXPECT_NEAR(measured, closed, 0.02);
-    EXPECT_NEAR(measured, closed, 0.005);   // VERIFICATION.md's "ambitious" column
+    EXPECT_NEAR(measured, closed, 0.005);   // and within the tighter 0.5 % of F0
     EXPECT_NEAR(closed, table[j], 0.0006);  // the table's values, to their rounding
   }
 }
@@ -680,7 +683,7 @@ CurveError against_closed_form(const Curve& c, double L, double upto) {
   return e;
 }
 
-// Peak within 1% of `capacity` (and 0.1%, the "ambitious" column), and the last `plateau`
+// Peak within 1% of `capacity` (and within the tighter 0.1%), and the last `plateau`
 // records at it.
 void check_peak_and_plateau(const Curve& c, double capacity, size_t plateau, const char* what) {
   const double peak = c.peak();
@@ -697,7 +700,7 @@ void check_peak_and_plateau(const Curve& c, double capacity, size_t plateau, con
   EXPECT_NEAR(peak, capacity, 0.01 * capacity);
   EXPECT_NEAR(peak, capacity, 0.001 * capacity);
   EXPECT_NEAR(spread, 0.0, 0.001 * capacity);
-  EXPECT_LT(c.largest_energy_ratio(), 1e-4);  // VERIFICATION.md §7a: slow enough
+  EXPECT_LT(c.largest_energy_ratio(), 1e-4);  // slow enough: kinetic below 1e-4 of strain energy
 }
 
 // Bond failure: L = 5 m with a bolt strong enough (F_y = 1.5 MN > s_b L = 1 MN). The curve

@@ -1,6 +1,6 @@
-// The main example's geometry and zoning meet the acceptance: block areas sum to the
-// region area, and every zone has positive area, meets the angle rule, respects the size
-// field, and the zones of a block sum to its area.
+// The main example's geometry and zoning are sound: block areas sum to the region area, and every
+// zone has positive area, meets the angle rule, respects the size field, and the zones of a block
+// sum to its area.
 #include <gtest/gtest.h>
 
 #include <algorithm>

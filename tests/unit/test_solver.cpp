@@ -371,7 +371,8 @@ TEST(Static, GravityColumnMatchesRhoGDepth) {
   // A zone's stress is nearly that of its row of cells at mid-height (the 1D answer), so the
   // zones of a cell average to rho g depth at the cell centre, and each zone is off by about
   // rho g h / 6 (h the cell height). Not exactly: the top corners carry different weights
-  // (one triangle at the left, two at the right), which disturbs the field by ~0.25 % of rho g H here; VERIFICATION.md asks 0.5 %.
+  // (one triangle at the left, two at the right), which disturbs the field by ~0.25 % of rho g H
+  // here; the check allows 0.5 %, as tests/verification/gravity_column.lua does.
   const double scale = rho * g * side, h = side / 10;
   for (size_t z = 0; z < m.stress.size(); z += 2) {
     const Vec2 c = 0.5 * (mesh.zone_centroid(static_cast<int>(z)) + mesh.zone_centroid(static_cast<int>(z) + 1));

@@ -1,6 +1,6 @@
--- Issue 7, acceptance 2: VERIFICATION.md §13e, the plane-strain biaxial element test by the
--- implicit prepass: constant s3, axial strain driven past yield. Checks (1 %): peak
--- s1 = Kp s3 + sigma_c, and the plastic strain ratio d eps3_p / d eps1_p = -K_psi
+-- The plane-strain biaxial element test (Mohr-Coulomb, non-associated flow) by the implicit
+-- prepass: constant s3, axial strain driven past yield. Checks (1 %): peak s1 = Kp s3 + sigma_c,
+-- and the plastic strain ratio d eps3_p / d eps1_p = -K_psi
 -- (K_psi = (1 + sin psi) / (1 - sin psi): 1, 1.4203, 2.0396, 3.0 for psi = 0, 10, 20, 30 deg).
 --
 -- A 1 m x 2 m sample of Mohr-Coulomb rock (the seed's c = 0.143 MPa, phi = 34 deg), E = 1 GPa,

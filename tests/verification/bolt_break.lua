@@ -1,5 +1,5 @@
 -- A bolt across an opening joint, strained past its failure strain: it yields, breaks, and then
--- carries nothing, in tension or in compression (issue 6, acceptance 2; DESIGN.md §5).
+-- carries nothing, in tension or in compression (the law: engine/bolt/bolt_law.hpp).
 --
 -- Two blocks of rock 1 m long, 0.5 m high, with a joint between them at x = 1 that has no tensile
 -- strength. A 1.8 m bolt lies across it along y = 0 (segments 0.05 m long, the one across the

@@ -1,4 +1,4 @@
--- stdlib/edem/bolts.lua: bolting patterns along excavated walls (issue 6, build item 4).
+-- stdlib/edem/bolts.lua: bolting patterns along excavated walls.
 --
 -- A 60 m x 60 m block of elastic rock around a 12 m x 24 m warhead cavern (arch rise 4 m, three
 -- arch stages and four benches) cut as regions and zoned; the stages are excavated one by one

@@ -1,11 +1,14 @@
--- VERIFICATION.md §7a: pull-out of a fully grouted bolt from rigid ground.
+-- Pull-out of a fully grouted bolt from rigid ground: the shear-lag closed form of a bolt whose
+-- grout is a spring-slider (Itasca's cable element; the exponential decay of a long bolt's load
+-- is Farmer's, 1975, IJRMMS 12:347-351).
 --
 -- Closed form (elastic bond, free far end), x from the loaded head:
 --   lambda = sqrt(k_b / EA), F(x) = F0 sinh(lambda (L - x)) / sinh(lambda L),
 --   K_head = EA lambda tanh(lambda L), slip starts at F0 = (s_b / lambda) tanh(lambda L),
 --   capacity min(s_b L, F_y).
--- Reference values: E = 190 GPa, A = 446 mm^2, k_b = 50 MN/m/m, s_b = 0.2 MN/m; one bolt per
--- metre of thickness (spacing 1), so the model's forces are the bolt's.
+-- Reference values: the seed's bolt (the seed paper, Jiang et al., §4.2: E = 190 GPa,
+-- A = 446 mm^2) in a reference grout, k_b = 50 MN/m/m, s_b = 0.2 MN/m; one bolt per metre of
+-- thickness (spacing 1), so the model's forces are the bolt's.
 --
 -- Set-up: a thin strip of rock whose every gridpoint is held (the rigid host), the bolt laid along
 -- its axis with 40 grouted segments from the hole's mouth (x = 0) to x = L, and a free tail of

@@ -1,4 +1,4 @@
--- stdlib/edem/cavern.lua: excavation outlines and stages (issue 6, build item 2).
+-- stdlib/edem/cavern.lua: excavation outlines and stages.
 --
 -- For each shape: the outline's area against its closed form, the stages' areas adding up to
 -- the outline's (1e-9 relative), every stage counter-clockwise, and the stages tiling the

@@ -1,4 +1,4 @@
--- Potential cracks around a circular opening in elastic-brittle rock (issue 5, acceptance 4-6).
+-- Potential cracks around a circular opening in elastic-brittle rock.
 --
 -- Right half of a plate (symmetry about the vertical axis: x held on it), a = 1 m, plate 8 a
 -- high each way, far-field stress p = 10 MPa vertical and K0 p horizontal as insitu{} and as

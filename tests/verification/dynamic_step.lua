@@ -1,4 +1,4 @@
--- VERIFICATION.md §10: the explicit cycle as a time integrator, in dynamic mode (real masses,
+-- The explicit cycle as a time integrator (central differences), in dynamic mode (real masses,
 -- no damping).
 --
 -- A triangle (0,0) (1,0) (0,1), zoned, every gridpoint fixed but the top corner, which moves in

@@ -1,6 +1,6 @@
 -- The energy balance (energy()): the work done on the model against what it stores, dissipates
 -- and loses to excavation, as PFC and 3DEC keep it. What is left is energy the method made or
--- lost; it must stay below 1 % of the largest term (issue 60, acceptance 1), in dynamic mode with
+-- lost; it must stay below 1 % of the largest term, in dynamic mode with
 -- no damping, where any energy made would show as motion:
 --   * a 2 m x 1 m deformable block sliding on a 40 deg slope with friction 20 deg (fast), and on
 --     a 30 deg slope with friction 29.9 deg (at the threshold), both from rest after settling

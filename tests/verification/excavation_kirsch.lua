@@ -1,5 +1,5 @@
--- VERIFICATION.md §1 reached by excavation, and §13c elastic path independence (issue 6,
--- acceptance 3 and 4).
+-- Kirsch's hole (kirsch.lua) reached by excavation, and elastic path independence: one stage
+-- or four give the same final state.
 --
 -- Quarter model of a plate 40 a wide with a = 1 m, symmetry rollers on the axes, the far field
 -- (p1 = 30 MPa vertical, p2 = K0 p1 horizontal) as in-situ stress and as traction on the outer

@@ -1,4 +1,4 @@
--- VERIFICATION.md §12: gravity column and in-situ stress with K0.
+-- Gravity column and in-situ stress with K0.
 --
 -- 1. An elastic column (H = 100 m, rho = 2650 kg/m3, E = 10 GPa, nu = 0.25), roller sides,
 --    fixed base, gravity switched on from zero stress: sv = rho g z, sh = nu/(1-nu) sv and the

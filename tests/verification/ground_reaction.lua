@@ -1,5 +1,5 @@
--- Issue 7, acceptance 3: VERIFICATION.md §13h, the ground reaction curve of the Salençon tunnel
--- (§2's model, psi = 0): the wall's support pressure Pi lowered from P0 to 0, the wall's inward
+-- The ground reaction curve of the Salençon tunnel (Salençon 1969; salencon.lua's model,
+-- psi = 0): the wall's support pressure Pi lowered from P0 to 0, the wall's inward
 -- displacement at Pi / P0 = 0.8, 0.6, 0.4, 0.2 and 0 against the closed form (3 %), by the implicit
 -- prepass and by the explicit solver.
 --   Implicit: for each Pi, prepass{} from the in-situ state (it leaves the model as it was).

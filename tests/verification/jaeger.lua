@@ -1,4 +1,4 @@
--- VERIFICATION.md §3: Jaeger's single plane of weakness.
+-- Jaeger's single plane of weakness (Jaeger 1960; Jaeger, Cook & Zimmerman 2007, §4.7).
 --
 -- A sample with one through-going joint of dip beta' (the angle between sigma1, vertical, and the
 -- joint's normal) slips on the joint when (compression positive, mu = tan phi_j)
@@ -13,7 +13,8 @@
 --       c_j = 2 kPa, phi_j = 30; beta (from sigma1 to the PLANE) = 10 .. 60, beta' = 90 - beta
 --       (intact 8.578 kPa governs at beta = 10, 45, 50, 60). E = 10 MPa, nu = 0.2 (the strength
 --       does not depend on them); joint kn = ks = 1 GPa/m, 25 times E over the zone size.
--- The closed form is printed next to VERIFICATION.md's table.
+-- The closed form is printed next to tabulated values: Itasca's for (a), worked by hand for (b)
+-- (table_a, table_b below).
 --
 -- Sample: plane strain, W = 1 m by H = 3.5 m, the joint through the centre; tan(beta') W/2 < H/2
 -- up to beta' = 74, so the joint leaves through the sides and the upper block is free to slide
@@ -44,8 +45,8 @@
 -- Joint slip: slip share > 0.5 and yielded < 0.1. Intact: slip share < 0.1 and yielded > 0.25.
 -- Anything else is "mixed" and counts as the wrong mode.
 --
--- Tolerances: peak sigma1 within 2 % of min(joint, intact) ("good" in VERIFICATION.md), and the
--- mode right, for every case. What limits the accuracy (measured):
+-- Tolerances: peak sigma1 within 2 % of min(joint, intact), and the mode right, for every case.
+-- The stress is homogeneous, so what limits the accuracy is only this (measured):
 --   * geometry: contacts act along the joint's current direction, which the elastic strain
 --     turns (0.12 deg at beta' = 45 with the seed's E, strain 0.4 %), and the side loads act on
 --     the sides' original lengths, while the zones keep the original geometry. The joint-slip
@@ -181,7 +182,7 @@ local function run(label, rock, joint, s3, beta, table_value, unit, scale)
   local expected = math.min(intact, slip)
   local expected_mode = slip < intact and "joint" or "intact"
   local peak, mode = run_case{ label = label, rock = rock, joint = joint, s3 = s3, beta = beta }
-  print(("%s: joint %s %s (VERIFICATION.md %s), intact %.5g; peak %.5g at u = %.4g mm"):format(
+  print(("%s: joint %s %s (tabulated %s), intact %.5g; peak %.5g at u = %.4g mm"):format(
     label, slip < math.huge and ("%.5g"):format(slip / scale) or "inf", unit,
     table_value and ("%.5g"):format(table_value) or "-", intact / scale, peak.s1 / scale, peak.u * 1e3))
   print(("  mode %s (expected %s): slip share %.3f (slip %.3g mm, inelastic shortening %.3g mm), yielded %.3f; %.1f s"):format(

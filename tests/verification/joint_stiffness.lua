@@ -1,4 +1,5 @@
--- VERIFICATION.md §5: joint normal and shear stiffness, two stacked blocks.
+-- Joint normal and shear stiffness (the joint element of Goodman, Taylor & Brekke 1968: closure
+-- sigma_n / kn, elastic shear tau / ks, then Coulomb slip), two stacked blocks.
 --
 -- A 1 m x 2 m column cut by one horizontal joint at mid-height, E = 10 GPa, nu = 0.25; joint
 -- kn = 10 GPa/m, ks = 1 GPa/m, friction 30, no cohesion. Static mode, solved to ratio 1e-10.

@@ -1,4 +1,4 @@
--- A block sliding a metre along a loaded joint, past a joint crossing it (issue 60, acceptance 3):
+-- A block sliding a metre along a loaded joint, past a joint crossing it:
 -- contacts made during the slide carry the joint's stress at once.
 --
 -- A 6 m x 1 m block (x from -4 to 2) on a base 16 m x 3 m cut in two by a vertical joint at
@@ -9,7 +9,7 @@
 -- one, and the right one's come under its leading end: each new contact takes the state of the
 -- faces already pressed together there (closure at zero gap and shear traction), so the joint's
 -- normal stress is the applied 3 MPa all along, as its equilibrium needs (the held top keeps the
--- block from tilting). Made with nothing, they carried 0.05 to 0.1 MPa until sunk in by the
+-- block from tilting). Made with nothing, they would carry 0.05 to 0.1 MPa until sunk in by the
 -- joint's closure, while the rest of the joint carried their share.
 -- Checks, every 0.1 m of the slide: every pressed contact along the joint within 10 % of 3 MPa;
 -- no contact deeper than 1.5 sigma_n / kn into its face beyond its prestress (the sinking a

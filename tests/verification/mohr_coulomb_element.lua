@@ -1,10 +1,10 @@
--- VERIFICATION.md §8a: a Mohr-Coulomb sample in plane-strain uniaxial and triaxial
--- compression yields at UCS = 2 c cos(phi) / (1 - sin(phi)) and s1 = Kp s3 + UCS.
+-- A Mohr-Coulomb sample in plane-strain uniaxial and triaxial compression yields at
+-- UCS = 2 c cos(phi) / (1 - sin(phi)) and s1 = Kp s3 + UCS.
 --
--- Seed values c = 0.143 MPa, phi = 34 deg, tension 0.0546 MPa; a 1 m x 2 m sample on a
--- frictionless base (rollers), pressed by a top platen moving down slowly (rollers too), the
--- sides free or under a confining stress s3. The axial stress follows the elastic line, then
--- stays on the yield surface: its plateau is the strength.
+-- Seed values (the seed paper, Jiang et al., §3.2) c = 0.143 MPa, phi = 34 deg, tension 0.0546 MPa;
+-- a 1 m x 2 m sample on a frictionless base (rollers), pressed by a top platen moving down slowly
+-- (rollers too), the sides free or under a confining stress s3. The axial stress follows the
+-- elastic line, then stays on the yield surface: its plateau is the strength.
 local check = require "edem.check"
 
 local c, phi, tension = 0.143e6, 34.0, 0.0546e6

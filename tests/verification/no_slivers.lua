@@ -1,11 +1,11 @@
--- No slivers (issue 60, acceptance 4): cutting never leaves a block edge shorter than zone{ sliver }
+-- No slivers: cutting never leaves a block edge shorter than zone{ sliver }
 -- (a tenth by default) of the zone edge there. Where two cuts would make one (a joint crossing
 -- another just past a vertex, a region's outline passing close to a joint's end), they are bent
 -- together through the vertex, at most that far; info().snapped counts those bends, and
 -- info().shortest_edge is the shortest block edge over the zone edge at its midpoint. Required cuts
 -- crossing at a shallow angle may not bend clear: there, within a spot of 8 tolerances, the model's
 -- own tolerance holds and the slivers are kept, counted by info().slivers_kept (optional cuts, the
--- automatic potential cracks, are left out there instead, as before).
+-- automatic potential cracks, are left out there instead).
 --   * checked: the seed's region with its cavern's stages, zoned as scripts/paper/case.lua zones
 --     it (1.5 m at the cavern growing to 10 m), each of the seed's three joint patterns; and every
 --     tutorial in scripts/examples, as it is zoned;

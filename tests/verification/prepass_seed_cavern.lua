@@ -1,4 +1,4 @@
--- Issue 7, acceptance 4: the seed cavern (Case 3, H = 158 m, edem.seed's Set P rock as Mohr-Coulomb,
+-- The seed cavern (Case 3, H = 158 m, edem.seed's Set P rock as Mohr-Coulomb,
 -- the warhead's 16 stages), solved through all stages by the implicit prepass and by the explicit
 -- solver: their plastic zones after the final stage overlap (intersection over union >= 0.8); and
 -- crackseed{ auto } puts potential cracks only in the zones the prepass found yielding, at the

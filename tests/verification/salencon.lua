@@ -1,13 +1,15 @@
--- VERIFICATION.md §2: circular tunnel in an elastic-perfectly plastic Mohr-Coulomb medium
--- (Salençon 1969), explicit solver.
+-- Circular tunnel in an elastic-perfectly plastic Mohr-Coulomb medium (Salençon 1969; the closed
+-- form and the standard inputs are stdlib/edem/salencon.lua's), explicit solver.
 --
 -- Quarter model, a = 1 m, outer boundary at 40 a loaded with P0 = 30 MPa, symmetry rollers on
 -- the axes, Pi = 0; G = 2.8 GPa, K = 3.9 GPa, c = 3.45 MPa, phi = 30 deg, psi = 0 and 30 deg.
 -- Checks: plastic radius R0 (3 %), stresses averaged over rings of zones at r = 1.25, 1.5, 2
 -- and 3 a (3 % of P0; the worst single zone is printed), wall displacement (5 % for psi = 0,
--- 8 % for psi = 30). The closed form assumes szz stays the intermediate stress; with
--- szz = -P0 initially it becomes the major one within r < ~1.27 a, where the zones sit on the
--- corner of the yield surface, so the first ring differs a little for a physical reason.
+-- 8 % for psi = 30): what explicit codes such as FLAC and UDEC reach on this problem, the wall
+-- displacement the most sensitive, the more so with dilation. The closed form assumes szz stays
+-- the intermediate stress; with szz = -P0 initially it becomes the major one within
+-- r < ~1.27 a, where the zones sit on the corner of the yield surface, so the first ring differs
+-- a little for a physical reason.
 -- Plain triangles (the default): with psi = 0 the mixed discretisation localises more readily
 -- and lands farther from the closed form (measured in engine/solver/cycle.cpp's header).
 local check = require "edem.check"

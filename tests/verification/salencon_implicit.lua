@@ -1,5 +1,5 @@
--- Issue 7, acceptance 1: VERIFICATION.md §2, the circular tunnel in an elastic-perfectly plastic
--- Mohr-Coulomb medium (Salençon 1969), solved by the implicit prepass (prepass{}).
+-- The circular tunnel in an elastic-perfectly plastic Mohr-Coulomb medium (Salençon 1969;
+-- stdlib/edem/salencon.lua), solved by the implicit prepass (prepass{}).
 --
 -- The explicit test's model (tests/verification/salencon.lua): quarter model, a = 1 m, outer
 -- boundary at 40 a loaded with P0 = 30 MPa, rollers on the axes, Pi = 0; G = 2.8 GPa, K = 3.9 GPa,

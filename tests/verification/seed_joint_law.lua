@@ -1,5 +1,6 @@
--- VERIFICATION.md §S.4: the seed paper's cubic joint law, sn = -4.302 v^3 + 7.688 v^2 - 0.123 v
--- (MPa, mm), on a two-block joint loaded from 0 to 6 MPa and back.
+-- The cubic joint law of the seed paper (Jiang et al., §3.2, eq. 7),
+-- sn = -4.302 v^3 + 7.688 v^2 - 0.123 v (MPa, mm), on a two-block joint loaded from 0 to 6 MPa and
+-- back.
 --
 -- The raw polynomial gives tension below v = 0.0161 mm and a negative stiffness past
 -- v = 1.183 mm (3.49 MPa), so 6 MPa is out of its reach; kn_law = "seed-cubic" starts it at its

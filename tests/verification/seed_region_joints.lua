@@ -1,7 +1,7 @@
--- VERIFICATION.md §12, test 3: the seed's 200 m x 180 m region with the Case 3 joints (60 deg,
--- spacing 16, 12, 8 m in turn, and a cross set at right angles every 16 m, as in
+-- In-situ stress in a jointed model: the seed's 200 m x 180 m region with the Case 3 joints
+-- (60 deg, spacing 16, 12, 8 m in turn, and a cross set at right angles every 16 m, as in
 -- scripts/examples/jointed_cavern.lua), physically consistent prototype properties (Set P of
--- VERIFICATION.md S.3: E = 7.421 GPa, nu = 0.136, rho = 2688 kg/m3; joints kn = 83.9 MPa/m,
+-- stdlib/edem/seed.lua: E = 7.421 GPa, nu = 0.136, rho = 2688 kg/m3; joints kn = 83.9 MPa/m,
 -- ks = 3.60 MPa/m, phi = 31.2, c = 0), the cavern roof 158 m deep (ground surface at y = 182),
 -- gravity, K0 = 0.6. insitu{} gives the zones their stresses and the joints the consistent
 -- tractions: the initial unbalanced-force ratio is at most 1e-6 without cycling, and after

@@ -1,8 +1,9 @@
--- VERIFICATION.md §4: a block on an inclined plane, dynamic mode, no damping.
+-- A block on an inclined plane, dynamic mode, no damping (the sliding block of Itasca's 3DEC
+-- verification problems; Wyllie & Mah 2004, Rock Slope Engineering).
 --
 -- The plane is a fixed base block, the slope is made by tilting gravity by theta (the same
 -- mechanics as a tilted plane, with straight edges). A deformable block rests on it through a
--- Coulomb joint, mass 5300 kg/m and base A = 2 m as in VERIFICATION.md. Each case settles in
+-- Coulomb joint, mass 5300 kg/m and base A = 2 m. Each case settles in
 -- static mode (with friction 89 deg where the block is to slide: the contacts then carry its
 -- weight, normal and shear), takes its own joint properties and runs dynamically from rest;
 -- accelerations from a fit s = s0 + v0 t + a t^2 / 2 (t from 0.2 s), against
@@ -15,7 +16,7 @@
 --     cohesion kept after slip (residual_cohesion = cohesion), 1.05 c_crit is stable, 0.95 c_crit
 --     slides, 0.5 c_crit slides at the closed-form rate within 1 %; with the default brittle
 --     cohesion (residual zero), 0.95 c_crit fails and slides as with no cohesion, within 1 %.
---   * threshold for any shape and joint stiffness (issue 60, acceptance 2): blocks 2 m wide and
+--   * threshold for any shape and joint stiffness: blocks 2 m wide and
 --     0.04, 0.2 and 2 m high (height / width 0.02 to 1) on joints of 0.1, 1 and 10 GPa/m, with
 --     phi = 30.1 on the 30 deg slope, settled at that friction: each stays put (displacement
 --     over 2 s below 10 x the elastic shear-spring value).
@@ -143,7 +144,7 @@ check.report("theta = 30, phi = 29.9: acceleration [m/s2]", fit_acceleration(sam
              acceleration(30, 29.9), 0.01)
 
 local c_crit = mass * acceleration(30, 20) / width
-print(("  critical cohesion %.1f Pa (VERIFICATION.md: 4804)"):format(c_crit))
+print(("  critical cohesion %.1f Pa (worked by hand: 4804)"):format(c_crit))
 -- Cohesion kept after slip (residual_cohesion = cohesion): limit equilibrium of the whole block.
 samples = run_case{ theta = 30, phi = 20, settle_friction = 89, cohesion = 1.05 * c_crit, keep_cohesion = true,
                     height = flat, kn = soft, seconds = 2.0 }

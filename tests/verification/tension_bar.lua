@@ -1,4 +1,4 @@
--- VERIFICATION.md §13f: a bar pulled in tension through a potential crack.
+-- A bar pulled in tension through a potential crack.
 --
 -- Expected: the crack forms at sigma_t; the load drops to zero; the open crack carries no
 -- tension (its contacts' normal force exactly 0 while open); pushed back, the faces close and

@@ -1,4 +1,4 @@
--- Robustness (issue 4, acceptance 6): the seed region of tests/verification/seed_region_joints.lua
+-- Robustness: the seed region of tests/verification/seed_region_joints.lua
 -- with a finer jointing (the Case 3 main set, 60 deg at 16, 12, 8 m, and cross joints every
 -- 2 m: about 1700 blocks, 55,000 zones), in its K0 = 0.6 in-situ state, takes a sudden load
 -- change: the top stress raised by a fifth at once (sides on rollers, so the stress ratio and
