@@ -1,11 +1,10 @@
 // Materials of the zones: material{} defines one, assign{} gives it to zones.
-#include <fmt/format.h>
+#include <utility>
 
 #include <lua.hpp>
 
 #include "commands.hpp"
 #include "context.hpp"
-#include "core/error.hpp"
 
 namespace edem {
 namespace {
@@ -21,59 +20,21 @@ MaterialModel model_of(const std::string& name) {
   return MaterialModel::elastic;
 }
 
-// Exactly one pair of elastic constants, both of it (a null material needs none).
-void elastic_constants(const Args& args, MaterialDef& def) {
-  const bool young = args.has("young"), poisson = args.has("poisson");
-  const bool bulk = args.has("bulk"), shear = args.has("shear");
-  if ((young || poisson) && (bulk || shear))
-    fail("give young and poisson, or bulk and shear, not both pairs");
-  if (young != poisson)
-    fail("{} needs {} too (or give bulk and shear)", young ? "young" : "poisson",
-         young ? "poisson" : "young");
-  if (bulk != shear)
-    fail("{} needs {} too (or give young and poisson)", bulk ? "bulk" : "shear",
-         bulk ? "shear" : "bulk");
-  if (!young && !bulk) {
-    if (def.model == MaterialModel::null) return;
-    fail("missing elastic constants: give young and poisson, or bulk and shear");
-  }
-  if (young) {
-    def.young = args.number("young");
-    def.poisson = args.number("poisson");
-  } else {
-    def.bulk = args.number("bulk");
-    def.shear = args.number("shear");
-  }
-}
-
-// Strength belongs to the Mohr-Coulomb model: given to another, it would be silently unused.
-void strength(const Args& args, const std::string& model, MaterialDef& def) {
-  std::vector<std::string> given;
-  for (const char* key : {"cohesion", "friction", "dilation", "tension"})
-    if (args.has(key)) given.emplace_back(key);
-  if (def.model != MaterialModel::mohr) {
-    if (!given.empty())
-      fail("{} need{} model = \"mohr\" (this material's model is \"{}\")", fmt::join(given, ", "),
-           given.size() == 1 ? "s" : "", model);
-    return;
-  }
-  if (args.has("cohesion")) def.cohesion = args.number("cohesion");
-  if (args.has("friction")) def.friction = args.number("friction");
-  if (args.has("dilation")) def.dilation = args.number("dilation");
-  if (args.has("tension")) def.tension = args.number("tension");
-  if (def.dilation > def.friction)
-    fail("dilation must be <= friction ({}), got {}", def.friction, def.dilation);
+// The keys as given, unset where not: the engine checks them (material_params).
+void optional_number(const Args& args, const char* key, double& into) {
+  if (args.has(key)) into = args.number(key);
 }
 
 int run_material(lua_State*, Context& context, const Args& args) {
   MaterialDef def;
   def.name = args.string("name");
-  if (def.name.empty()) fail("name must not be empty");
-  const std::string& model = args.string("model");
-  def.model = model_of(model);
+  def.model = model_of(args.string("model"));
   def.density = args.number("density");
-  elastic_constants(args, def);
-  strength(args, model, def);
+  for (const auto& [key, into] : {std::pair{"young", &def.young}, std::pair{"poisson", &def.poisson},
+                                  std::pair{"bulk", &def.bulk}, std::pair{"shear", &def.shear},
+                                  std::pair{"cohesion", &def.cohesion}, std::pair{"friction", &def.friction},
+                                  std::pair{"dilation", &def.dilation}, std::pair{"tension", &def.tension}})
+    optional_number(args, key, *into);
   context.model().add_material(def);
   return 0;
 }

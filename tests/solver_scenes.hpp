@@ -44,7 +44,7 @@ inline Mesh square_mesh(int n, double side) {
 // Mechanics for `mesh` with every zone of one material.
 inline Mechanics mechanics_for(const Mesh& mesh, const MaterialDef& def) {
   Mechanics m;
-  m.materials = {def};
+  m.materials = {with_strength_defaults(def)};
   m.params = {material_params(def)};
   reset_for_mesh(m, mesh);
   m.zone_material.assign(static_cast<size_t>(mesh.zone_count()), 0);

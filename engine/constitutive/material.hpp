@@ -24,8 +24,12 @@ struct MaterialParams {
   double tension = 0.0;    // tensile strength, capped at c / tan(phi) [Pa]
 };
 
-// Checks a definition (finite, physical values; exactly one elastic pair) and derives the
-// parameters. Throws edem::Error naming the key and the bad value.
+// Checks a definition (a name; finite, physical values; exactly one elastic pair, both of it;
+// strength only for model mohr) and derives the parameters. Throws edem::Error naming the key
+// and the bad value. The one place a material is checked: material{} passes its message on.
 MaterialParams material_params(const MaterialDef& def);
+
+// The definition with the strengths left unset read as 0, as the model keeps it.
+MaterialDef with_strength_defaults(MaterialDef def);
 
 }  // namespace edem

@@ -22,8 +22,7 @@ struct ContactLoss {
 // Coulomb's limit on a contact's shear force over `length` [N/m] at normal stress `sn`: its
 // cohesion (as far as it has softened) while intact, its residual strength after.
 inline double shear_limit(const Contact& c, const JointParams& p, double sn, double cohesion, double length) {
-  return std::max(0.0, (c.intact ? cohesion + p.tan_friction * sn : p.residual_cohesion + p.tan_residual_friction * sn) *
-                           length);
+  return std::max(0.0, coulomb_strength(p, c.intact, sn, cohesion) * length);
 }
 
 // What a contact's shear force can be at most over `length` [N/m]: Coulomb's limit at its closure

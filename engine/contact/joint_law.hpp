@@ -63,6 +63,16 @@ double closure_at(const JointParams& p, double stress);
 // (its closure's negative) and the plastic slip `slip` since it formed [m].
 double bond_left(const JointParams& p, double opened, double slip);
 
+// Coulomb's shear strength of a joint [Pa] under the normal stress `compression` (positive in
+// compression): `cohesion` plus friction while intact (cohesion: as far as a bond has softened),
+// the residual strength once broken. Negative where tension exceeds what cohesion holds: the
+// caller decides what that means. The explicit contacts and the prepass's interfaces both slip
+// by it.
+inline double coulomb_strength(const JointParams& p, bool intact, double compression, double cohesion) {
+  return intact ? cohesion + p.tan_friction * compression
+                : p.residual_cohesion + p.tan_residual_friction * compression;
+}
+
 // The seed paper's curve itself, unclamped, in SI: sn [Pa] at closure v [m] (for tests).
 double seed_cubic_raw(double v);
 

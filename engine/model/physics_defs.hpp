@@ -31,10 +31,11 @@ struct MaterialDef {
   double poisson = kUnset;  // [-]
   double bulk = kUnset;     // bulk modulus [Pa]
   double shear = kUnset;    // shear modulus [Pa]
-  double cohesion = 0.0;    // [Pa] (mohr)
-  double friction = 0.0;    // [deg] (mohr)
-  double dilation = 0.0;    // [deg] (mohr), at most friction
-  double tension = 0.0;     // tensile strength [Pa] (mohr); capped at cohesion / tan(friction)
+  // Strength, mohr only (unset: 0; the model keeps it so, with_strength_defaults).
+  double cohesion = kUnset;  // [Pa]
+  double friction = kUnset;  // [deg]
+  double dilation = kUnset;  // [deg], at most friction
+  double tension = kUnset;   // tensile strength [Pa]; capped at cohesion / tan(friction)
 };
 
 // How a joint's normal stress grows with closure.

@@ -111,9 +111,8 @@ InterfaceState interface_trial(const JointParams& p, const InterfacePair& pair, 
     now.broken = true;
     return now;
   }
-  const double cohesion = start.broken ? p.residual_cohesion : p.cohesion;
   const double friction = start.broken ? p.tan_residual_friction : p.tan_friction;
-  const double limit = cohesion - now.sn * friction;  // sn <= 0 in compression
+  const double limit = coulomb_strength(p, !start.broken, -now.sn, p.cohesion);  // sn <= 0 in compression
   if (std::abs(now.ss) > limit) {
     now.ss = std::copysign(std::max(limit, 0.0), now.ss);
     now.mode = kShearNow;

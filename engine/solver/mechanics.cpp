@@ -58,8 +58,8 @@ std::string zone_state_name(std::uint8_t state) {
 // ---- inputs -----------------------------------------------------------------------------------
 
 void Model::add_material(const MaterialDef& def) {
-  if (def.name.empty()) fail("a material needs a name");
   const MaterialParams params = material_params(def);
+  const MaterialDef kept = with_strength_defaults(def);
   Mechanics& m = *mechanics_;
   for (size_t i = 0; i < m.materials.size(); ++i) {
     if (m.materials[i].name != def.name) continue;
@@ -69,12 +69,12 @@ void Model::add_material(const MaterialDef& def) {
           fail("material '{}' is assigned to zones; it cannot change to or from model \"null\" "
                "(assign the zones another material instead)", def.name);
     }
-    m.materials[i] = def;
+    m.materials[i] = kept;
     m.params[i] = params;
     m.dirty = true;
     return;
   }
-  m.materials.push_back(def);
+  m.materials.push_back(kept);
   m.params.push_back(params);
 }
 
