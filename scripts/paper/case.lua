@@ -9,7 +9,7 @@
 --   bolts     none, 1 (5 m bolts at 1.5 m on the rock each step exposes) or 2 (pattern 1, and 15 m
 --             bolts between them on the seed's weak sidewalls: upper right A, lower left B) [none]
 --   bolt_at   solved (a step's bolts laid once it is solved) or dug (as soon as its rock is out,
---             before its load comes off: they hold what the step loosens) [solved]
+--             before its load comes off, so that they act on what the step loosens) [solved]
 --   set       P (the prototype), S (P with joint stiffness x 17.86 only) or M (the seed's listed
 --             values unscaled): edem.seed [P]
 --   prepass   jointed (the seed's: Mohr-Coulomb blocks and slipping joints dug by the explicit

@@ -93,8 +93,8 @@ TEST(ContactForce, ATipPressedInCarriesOverALengthGrowingWithItsDepth) {
 // A tip pressed in less than the round-off of its closure (a prestressed joint holds centimetres
 // of it): the overlap its last cycle left reads back as 0, so its length then reads as its own,
 // almost nothing, and scaling its shear force by length now / length then would give it a shear
-// stress of ~1e19 Pa, all of it "dissipated" by slip (the seed cavern's Case 1 mirrored ended its
-// balance at 7.5e16 J/m so). It carries nothing worth keeping: its shear spring starts afresh.
+// stress of ~1e19 Pa, all of it "dissipated" by slip (in the seed cavern's Case 1, mirrored,
+// 7.5e16 J/m). It carries nothing worth keeping: its shear spring starts afresh.
 TEST(ContactForce, ATipPressedInBelowTheRoundOffOfItsClosureMakesNoEnergy) {
   Corner c;
   c.joint.tan_friction = c.joint.tan_residual_friction = 0.6;
