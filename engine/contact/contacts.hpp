@@ -149,9 +149,11 @@ inline double carrying_length(const Contact& c, double overlap) {
 // carries no force worth keeping: it reads 0, and its shear spring starts afresh.
 inline double last_carrying_length(const Contact& c) {
   const double overlap = last_overlap(c);
-  const double round_off = 64.0 * std::numeric_limits<double>::epsilon() *
-                           (std::fabs(c.closure) + std::fabs(c.closure0) + std::fabs(c.dilation));
-  if (c.wedge * round_off > c.length && overlap <= round_off) return 0.0;
+  if (c.wedge > 0.0) {  // a tip (a face's length does not hang on its overlap)
+    const double round_off = 64.0 * std::numeric_limits<double>::epsilon() *
+                             (std::fabs(c.closure) + std::fabs(c.closure0) + std::fabs(c.dilation));
+    if (c.wedge * round_off > c.length && overlap <= round_off) return 0.0;
+  }
   return c.share * carrying_length(c, overlap);
 }
 

@@ -22,6 +22,7 @@
 
 #include "bolt/bolt_law.hpp"
 #include "core/error.hpp"
+#include "error_of.hpp"
 
 namespace edem {
 namespace {
@@ -56,14 +57,7 @@ BoltParams seed_params(double yield = kSeedYield, double failure_strain = kSeedF
 // ---------------------------------------------------------------------------------------------
 // Parameters
 
-std::string rejection(const BoltParams& p) {
-  try {
-    bolt_law(p);
-  } catch (const Error& error) {
-    return error.what();
-  }
-  return "";
-}
+std::string rejection(const BoltParams& p) { return error_of([&] { bolt_law(p); }); }
 
 TEST(BoltParams, SeedValuesAreAccepted) {
   EXPECT_EQ(rejection(seed_params()), "");

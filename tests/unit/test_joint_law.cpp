@@ -12,6 +12,7 @@
 
 #include "contact/joint_law.hpp"
 #include "core/error.hpp"
+#include "error_of.hpp"
 
 namespace edem {
 namespace {
@@ -60,14 +61,7 @@ double seed_v1_mm() {
 }
 
 // The message joint_params rejects `def` with; empty when it accepts it.
-std::string rejection(const JointMaterialDef& def) {
-  try {
-    joint_params(def);
-  } catch (const Error& error) {
-    return error.what();
-  }
-  return "";
-}
+std::string rejection(const JointMaterialDef& def) { return error_of([&] { joint_params(def); }); }
 
 // `def` is rejected with a message holding each of `parts` (the bad key and value).
 void expect_rejected(const JointMaterialDef& def, std::initializer_list<const char*> parts) {
