@@ -16,7 +16,7 @@
 #include <functional>
 #include <string>
 
-#include "model/physics_defs.hpp"
+#include "core/physics_defs.hpp"
 
 struct lua_State;
 

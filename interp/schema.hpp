@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "core/vec2.hpp"
-#include "model/defs.hpp"
+#include "core/defs.hpp"
 
 struct lua_State;
 

@@ -5,9 +5,10 @@
 #include <cmath>
 #include <vector>
 
+#include "constitutive/material.hpp"
 #include "geom/mesh.hpp"
-#include "solver/mechanics.hpp"
 #include "solver/prepare.hpp"
+#include "state/mechanics.hpp"
 
 namespace edem::scenes {
 

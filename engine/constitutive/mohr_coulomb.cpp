@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "model/physics_defs.hpp"
+#include "core/physics_defs.hpp"
 
 namespace edem {
 

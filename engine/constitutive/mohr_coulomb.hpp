@@ -11,14 +11,9 @@
 #include <cstdint>
 
 #include "constitutive/material.hpp"
+#include "state/stress.hpp"
 
 namespace edem {
-
-struct Stress {
-  double xx = 0.0, yy = 0.0, xy = 0.0, zz = 0.0;  // [Pa]
-};
-
-inline double mean_stress(const Stress& s) { return (s.xx + s.yy + s.zz) * (1.0 / 3.0); }
 
 inline void elastic_update(const MaterialParams& m, Stress& s, double dexx, double deyy,
                            double dgxy, double dezz = 0.0) {

@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "contact/contacts.hpp"
+#include "state/contacts.hpp"
 #include "contact/joint_law.hpp"
 
 namespace edem {

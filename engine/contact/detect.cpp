@@ -14,8 +14,7 @@
 #include "contact/edge_choice.hpp"
 #include "core/error.hpp"
 #include "geom/polygon.hpp"
-#include "solver/loads.hpp"
-#include "solver/prepare.hpp"
+#include "state/insitu.hpp"
 
 namespace edem {
 namespace {

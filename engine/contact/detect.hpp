@@ -3,12 +3,12 @@
 #pragma once
 
 #include "geom/mesh.hpp"
-#include "solver/mechanics.hpp"
+#include "state/mechanics.hpp"
 
 namespace edem {
 
 // The touchable boundary of every block, with solver nodes (m.gp_node must be set); edges
-// flagged in edge_glued (per flat loop edge, crack/sections.hpp) are not touchable.
+// flagged in edge_glued (per flat loop edge, state/sections.hpp) are not touchable.
 ContactBoundary contact_boundary(const Mesh& mesh, const std::vector<char>& edge_glued,
                                  const std::vector<int>& gp_node,
                                  const std::vector<double>& position);

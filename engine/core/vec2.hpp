@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cmath>
+#include <vector>
 
 namespace edem {
 
@@ -19,5 +20,9 @@ inline double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
 // Plain sqrt, not std::hypot: hypot guards against an overflow no model coordinate comes near
 // and is several times slower (it was the largest single cost of contact detection).
 inline double norm(Vec2 a) { return std::sqrt(a.x * a.x + a.y * a.y); }
+
+// A simple polygon: an open list of vertices (the last joins the first); geom/polygon.hpp
+// measures and checks it.
+using Polygon = std::vector<Vec2>;
 
 }  // namespace edem

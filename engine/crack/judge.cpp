@@ -7,8 +7,8 @@
 #include "contact/detect.hpp"
 #include "core/error.hpp"
 #include "core/names.hpp"
+#include "crack/criteria.hpp"
 #include "crack/section_stress.hpp"
-#include "solver/prepare.hpp"
 
 namespace edem {
 namespace {
@@ -265,7 +265,6 @@ int judge_sections(Mechanics& m, const Mesh& mesh) {
     m.cracks.push_back(c);
   }
   m.fresh_cracks = true;
-  reconnect(m, mesh);
   return static_cast<int>(failed.size());
 }
 

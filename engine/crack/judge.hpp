@@ -4,7 +4,7 @@
 #pragma once
 
 #include "geom/mesh.hpp"
-#include "solver/mechanics.hpp"
+#include "state/mechanics.hpp"
 
 namespace edem {
 
@@ -17,7 +17,8 @@ void fit_sections(Mechanics& m, const Mesh& mesh);
 SectionView section_view(const Mechanics& m, int section);
 
 // Judges every intact section whose zones are active, all against the same state, then breaks
-// those that fail (crack records, ties released, nodes reconnected). Returns how many broke.
+// those that fail (crack records, ties released). Returns how many broke: the caller then
+// reconnects the nodes across them (solver/prepare.hpp, reconnect).
 // Exceptions from a user's criterion pass through, with nothing broken.
 int judge_sections(Mechanics& m, const Mesh& mesh);
 

@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "geom/cutter.hpp"
-#include "model/defs.hpp"
+#include "core/defs.hpp"
 
 namespace edem {
 

@@ -11,8 +11,6 @@
 
 namespace edem {
 
-using Polygon = std::vector<Vec2>;
-
 // Positive when counter-clockwise [m^2].
 double signed_area(const Polygon& polygon);
 Vec2 centroid(const Polygon& polygon);

@@ -14,7 +14,7 @@
 #include "io/checkpoint_file.hpp"
 #include "io/h5_archive.hpp"
 #include "model/model.hpp"
-#include "solver/mechanics.hpp"
+#include "state/mechanics.hpp"
 #include "solver/prepare.hpp"
 
 namespace edem {

@@ -6,7 +6,7 @@
 #include "core/error.hpp"
 #include "io/field_output.hpp"
 #include "model/model.hpp"
-#include "solver/mechanics.hpp"
+#include "state/mechanics.hpp"
 
 namespace edem {
 namespace {

@@ -7,7 +7,7 @@
 #include "core/names.hpp"
 #include "geom/cutter.hpp"
 #include "geom/joint_set.hpp"
-#include "solver/mechanics.hpp"
+#include "state/mechanics.hpp"
 #include "solver/prepare.hpp"
 
 namespace edem {

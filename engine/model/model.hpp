@@ -17,14 +17,14 @@
 #include "geom/block_set.hpp"
 #include "geom/mesh.hpp"
 #include "geom/zoning.hpp"
-#include "model/defs.hpp"
-#include "model/physics_defs.hpp"
+#include "core/defs.hpp"
+#include "core/physics_defs.hpp"
 #include "prepass/prepass.hpp"
 #include "solver/energy.hpp"
 
 namespace edem {
 
-struct Mechanics;  // solver/mechanics.hpp: materials, loads and the solver's arrays
+struct Mechanics;  // state/mechanics.hpp: materials, loads and the solver's arrays
 struct FieldFrame;  // io/field_output.hpp
 
 class Model {
@@ -41,7 +41,7 @@ class Model {
   int add_joint_set(const JointSetDef& def);  // returns the set's index (0-based)
   void add_crack(const CrackDef& def);
   void add_region(const RegionDef& def);
-  void add_crackseed(const CrackSeedDef& def);  // potential cracks (crack/sections.hpp)
+  void add_crackseed(const CrackSeedDef& def);  // potential cracks (state/sections.hpp)
   // Potential cracks where a prepass found yielding (crack/auto_placement.hpp), in one rebuild: one
   // crack seed per group of yielded zones. Returns the groups placed.
   std::vector<CrackRegion> add_auto_crackseed(const AutoCrackSeedDef& def);
@@ -58,13 +58,13 @@ class Model {
   int region_index(std::string_view name) const;  // throws, with a did-you-mean hint
   Polygon resolve(const RegionRef& ref) const;     // the polygon of a name or polygon
   // Zones of a region: of the blocks inside a named region, or whose centroid lies inside a
-  // polygon; every zone for an empty reference (solver/mechanics.cpp).
+  // polygon; every zone for an empty reference (model/model_mechanics.cpp).
   std::vector<int> zones_in(const RegionRef& ref) const;
 
   int joint_set_count() const { return static_cast<int>(inputs_.joint_sets.size()); }
   double tolerance() const;  // absolute geometric tolerance [m]
 
-  // ---- Mechanics (solver/mechanics.cpp). Commands given before the first cycle are replayed
+  // ---- Mechanics (model/model_mechanics.cpp). Commands given before the first cycle are replayed
   // on the new zones when a geometry command re-zones the model; geometry commands after the
   // first cycle are an error. Each call validates everything before it changes anything.
 
@@ -82,12 +82,12 @@ class Model {
   // `report` is called during cycle() and solve{} each time `every_seconds` of wall clock have
   // passed (never for a shorter run); a null function or 0 seconds: no reports.
   void set_progress(std::function<void(const RunProgress&)> report, double every_seconds);
-  // Excavation (solver/excavation.cpp): the zones of a region turn null and the stage count
+  // Excavation (model/model_excavation.cpp): the zones of a region turn null and the stage count
   // goes up; fill{} gives excavated zones of a region a material again, stress-free.
   void excavate(const ExcavateDef& def);
   void fill(const FillDef& def);
   int stage() const;  // excavations so far (0: none)
-  // Bolts (bolt/model_bolts.cpp). A bolt is laid in the rock as it stands now, and goes out of
+  // Bolts (model/model_bolts.cpp). A bolt is laid in the rock as it stands now, and goes out of
   // service when its ground is excavated; forces are per metre of thickness (/ spacing).
   void add_bolt_material(const BoltMaterialDef& def);  // redefining a name is an error
   int add_bolt(const BoltDef& def);                    // returns the bolt's index (0-based)
@@ -108,7 +108,7 @@ class Model {
   // Exceptions thrown by callbacks and history samplers pass through unchanged.
   void cycle(long count);
   SolveResult solve(const SolveDef& def);
-  // The implicit elastoplastic prepass (prepass/model_prepass.cpp): solves the present state and
+  // The implicit elastoplastic prepass (model/model_prepass.cpp): solves the present state and
   // then each stage excavated in turn, on copies; the model itself is left as it was.
   PrepassResult prepass(const PrepassDef& def);
   // Per mesh zone, the yield bits (kShearNow | kTensionNow) the last prepass{} found over all its
@@ -170,7 +170,7 @@ class Model {
   // The model as it stands, for field output (model/field_frame.cpp, io/field_output.hpp).
   FieldFrame field_frame() const;
 
-  // ---- Potential cracks (crack/model_cracks.cpp).
+  // ---- Potential cracks (model/model_cracks.cpp).
   void judge(const JudgeDef& def);     // how and how often sections are judged
   int section_count() const;           // potential-crack sections (known once zoned)
   SectionView section(int id) const;   // with the fitted stress of now (prepares the model)

@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 
+#include "constitutive/mohr_coulomb.hpp"
+
 namespace edem {
 namespace {
 

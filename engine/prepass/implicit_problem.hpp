@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "prepass/interfaces.hpp"
-#include "solver/mechanics.hpp"
+#include "state/mechanics.hpp"
 
 namespace edem {
 

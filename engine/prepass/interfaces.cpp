@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 
+#include "contact/joint_law.hpp"
 #include "core/error.hpp"
 
 namespace edem {

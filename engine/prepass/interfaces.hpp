@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "core/vec2.hpp"
-#include "solver/mechanics.hpp"
+#include "state/mechanics.hpp"
 
 namespace edem {
 

@@ -10,7 +10,7 @@
 
 #include "constitutive/mohr_coulomb.hpp"
 #include "core/vec2.hpp"
-#include "model/defs.hpp"
+#include "core/defs.hpp"
 
 namespace edem {
 

@@ -34,9 +34,10 @@
 #include <array>
 #include <cmath>
 
+#include "bolt/bolt_coupling.hpp"
+#include "constitutive/mohr_coulomb.hpp"
 #include "contact/contact_force.hpp"
 #include "contact/detect.hpp"
-#include "solver/bolt_coupling.hpp"
 #include "solver/excavation.hpp"
 
 namespace edem {

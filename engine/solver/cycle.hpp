@@ -2,41 +2,14 @@
 // forces), then nodes (sum forces, damping, integrate).
 #pragma once
 
-#include "solver/mechanics.hpp"
+#include "state/mechanics.hpp"
+#include "state/motion.hpp"
 
 namespace edem {
-
-// Velocity update coefficients of one cycle (the damping), for the rock's nodes and the bolts'.
-struct Motion {
-  double dt = 1.0;
-  bool local = false;   // local damping
-  double alpha = 0.0;   // its coefficient
-  double keep = 1.0;    // viscous: v' = keep v + push F / m
-  double push = 1.0;
-  bool damped = false;  // takes energy out (local, or viscous with keep < 1)
-};
-
-// What the last cycle of a batch measured.
-struct Measure {
-  double unbalanced = 0.0;   // sum of |F| over free components [N/m]
-  double applied = 0.0;      // sum of |zone corner forces| + |weight| + |load| [N/m]
-  double kinetic = 0.0;      // 1/2 sum m v^2 with the cycling masses [J/m]
-  double rayleigh_num = 0.0; // sum du . (r_start - r)
-  double rayleigh_den = 0.0; // sum m du^2
-  int inverted_zone = -1;    // lowest mesh zone turned inside out, or -1
-  int fastest_node = -1;     // node with the largest speed
-  int overlapping = -1;      // lowest contact whose overlap is beyond its limit, or -1
-  double overlap = 0.0;      // that overlap [m]
-  bool finite = true;        // every force and velocity finite
-};
 
 // Runs `count` cycles (>= 1) on prepared mechanics, each taking its step off a running release;
 // the last one measures. Deterministic: the same bits for any thread count.
 Measure run_cycles(Mechanics& m, int count);
-
-}  // namespace edem
-
-namespace edem {
 
 // Measures the current state without moving anything: the unbalanced forces of the current
 // stresses and loads (for the ratio before any cycle).

@@ -5,18 +5,12 @@
 #include <cmath>
 #include <initializer_list>
 
+#include "bolt/bolt_law.hpp"
+#include "constitutive/mohr_coulomb.hpp"
 #include "contact/contact_force.hpp"
-#include "solver/mechanics.hpp"
+#include "state/mechanics.hpp"
 
 namespace edem {
-
-StoredEnergy operator+(const StoredEnergy& a, const StoredEnergy& b) {
-  return {a.kinetic + b.kinetic, a.strain + b.strain, a.normal + b.normal, a.shear + b.shear, a.bolt + b.bolt};
-}
-
-StoredEnergy operator-(const StoredEnergy& a, const StoredEnergy& b) {
-  return {a.kinetic - b.kinetic, a.strain - b.strain, a.normal - b.normal, a.shear - b.shear, a.bolt - b.bolt};
-}
 
 namespace {
 

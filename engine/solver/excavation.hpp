@@ -1,9 +1,24 @@
-// Excavation's part in cycling (the commands are Model::excavate and Model::fill).
+// Excavation on the solver's arrays: zones taken out or put back, and the release of the
+// excavated zones' pull on the new surface while cycling (the commands: model/model_excavation.cpp).
 #pragma once
+
+#include <vector>
+
+#include "geom/mesh.hpp"
 
 namespace edem {
 
 struct Mechanics;
+
+// Excavates `zones` (checked: in place, with material): null from now on, their stress gone, and
+// their forces on the rock left held and taken off over `release` cycles (0: at once). Glued
+// edges that now face the opening come apart, and the energy the zones held is booked as dug
+// out. `new_stage`: counts as an excavation stage (mucking out a fallen block does not).
+void excavate_zones(Mechanics& m, const Mesh& mesh, const std::vector<int>& zones, long release,
+                    bool new_stage);
+
+// Puts rock of `material` back into the excavated `zones`, unstressed.
+void fill_zones(Mechanics& m, const std::vector<int>& zones, int material);
 
 // Cycles the running excavate{ release = n } still has to go; 0 when none runs.
 long release_cycles_left(const Mechanics& m);

@@ -12,7 +12,7 @@
 #include "contact/detect.hpp"
 #include "core/union_find.hpp"
 #include "crack/judge.hpp"
-#include "solver/bolt_coupling.hpp"
+#include "bolt/bolt_coupling.hpp"
 #include "solver/loads.hpp"
 #include "solver/zone_groups.hpp"
 
@@ -207,19 +207,6 @@ void update_masses(Mechanics& m) {
       m.mass[n] = amplification * m.stiffness[n] / (4.0 * fraction * fraction);
   }
   m.info.step = m.step;
-}
-
-// Threads as asked (all the machine's by default), but no more than the model can keep busy:
-// each cycle ends in two barriers, and a thread with less than this much work (zones and
-// boundary gridpoints that may touch) waits more than it works; on a loaded machine a barrier
-// can cost a scheduler time slice, and a model of a few hundred zones then runs many times
-// slower on two threads than on one. Results do not depend on the thread count.
-constexpr size_t kWorkPerThread = 1000;
-
-int thread_count(const Mechanics& m) {
-  const int wanted = m.threads > 0 ? m.threads : std::max(1, omp_get_max_threads());
-  const size_t work = m.active.size() + (m.faces.touchable_blocks > 1 ? m.faces.nodes.size() : 0);
-  return static_cast<int>(std::clamp<size_t>(work / kWorkPerThread, 1, static_cast<size_t>(wanted)));
 }
 
 void reset_for_mesh(Mechanics& m, const Mesh& mesh) {

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "geom/mesh.hpp"
-#include "solver/mechanics.hpp"
+#include "state/mechanics.hpp"
 
 namespace edem {
 
@@ -24,9 +24,6 @@ void prepare(Mechanics& m, const Mesh& mesh);
 // Masses and time step from the zone and contact stiffness (after prepare(), and again after
 // every contact detection).
 void update_masses(Mechanics& m);
-
-// The number of threads cycling will use.
-int thread_count(const Mechanics& m);
 
 // Splits the active zones and the nodes among thread_count(m) threads (m.partition, m.acc_force).
 void split_among_threads(Mechanics& m);

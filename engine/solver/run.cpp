@@ -11,7 +11,7 @@
 #include "core/error.hpp"
 #include "contact/detect.hpp"
 #include "crack/judge.hpp"
-#include "solver/bolt_coupling.hpp"
+#include "bolt/bolt_coupling.hpp"
 #include "solver/cycle.hpp"
 #include "solver/energy.hpp"
 #include "solver/excavation.hpp"
@@ -157,6 +157,13 @@ bool any_intact(const Mechanics& m) {
   return static_cast<long>(m.cracks.size()) < static_cast<long>(m.sections.size());
 }
 
+// Judges the sections; those that broke release their ties: the nodes are reconnected.
+int broken_and_reconnected(Mechanics& m, const Mesh& mesh) {
+  const int broke = judge_sections(m, mesh);
+  if (broke > 0) reconnect(m, mesh);
+  return broke;
+}
+
 // Sections are judged every n cycles (judge{ at = "cycles" }) while any is intact.
 bool judging(const Mechanics& m) { return m.judge.at == JudgeAt::cycles && any_intact(m); }
 
@@ -165,7 +172,7 @@ bool judging(const Mechanics& m) { return m.judge.at == JudgeAt::cycles && any_i
 bool stands_judged(Mechanics& m, const Mesh& mesh, SolveResult& result) {
   if (m.judge.at != JudgeAt::equilibrium || !any_intact(m)) return true;
   ++result.judgments;
-  const int broke = judge_sections(m, mesh);
+  const int broke = broken_and_reconnected(m, mesh);
   result.broke += broke;
   return broke == 0;
 }
@@ -182,7 +189,7 @@ long next_due(const Mechanics& m, long cycle) {
 // sections broke; `commands_pending` is set when callbacks ran (what they changed is booked as
 // commands' once the model is prepared again).
 bool run_due(Mechanics& m, const Mesh& mesh, long cycle, bool& commands_pending) {
-  const bool broke = judging(m) && cycle % m.judge.every == 0 && judge_sections(m, mesh) > 0;
+  const bool broke = judging(m) && cycle % m.judge.every == 0 && broken_and_reconnected(m, mesh) > 0;
   for (History& h : m.histories)
     if (cycle % h.every == 0) {
       const double value = h.sample();

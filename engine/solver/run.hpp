@@ -2,7 +2,7 @@
 #pragma once
 
 #include "geom/mesh.hpp"
-#include "solver/mechanics.hpp"
+#include "state/mechanics.hpp"
 
 namespace edem {
 

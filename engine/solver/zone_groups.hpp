@@ -6,7 +6,7 @@
 #include <array>
 #include <vector>
 
-#include "solver/mechanics.hpp"
+#include "state/mechanics.hpp"
 
 namespace edem {
 

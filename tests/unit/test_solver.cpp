@@ -8,6 +8,7 @@
 #include <numbers>
 #include <random>
 
+#include "constitutive/mohr_coulomb.hpp"
 #include "core/error.hpp"
 #include "solver/cycle.hpp"
 #include "solver/run.hpp"

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "core/vec2.hpp"
-#include "crack/criteria.hpp"
+#include "core/physics_defs.hpp"
 #include "geom/mesh.hpp"
 
 namespace edem {

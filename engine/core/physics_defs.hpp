@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "core/vec2.hpp"
-#include "model/defs.hpp"
+#include "core/defs.hpp"
 
 namespace edem {
 
@@ -249,7 +249,7 @@ struct GridpointView {
   bool fixed_x = false, fixed_y = false;
 };
 
-// A contact between a gridpoint and the edge of another block (contact/contacts.hpp).
+// A contact between a gridpoint and the edge of another block (state/contacts.hpp).
 struct ContactView {
   int id = -1;            // 0-based
   Vec2 position;          // the gridpoint's current position [m]

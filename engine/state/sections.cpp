@@ -1,4 +1,4 @@
-#include "crack/sections.hpp"
+#include "state/sections.hpp"
 
 #include <cmath>
 #include <map>

@@ -4,7 +4,7 @@
 #include "core/error.hpp"
 #include "crack/judge.hpp"
 #include "model/model.hpp"
-#include "solver/mechanics.hpp"
+#include "state/mechanics.hpp"
 #include "solver/prepare.hpp"
 
 namespace edem {

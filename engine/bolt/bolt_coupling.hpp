@@ -10,8 +10,9 @@
 // joints and cracks. One drawn out of the rock loses its grout.
 #pragma once
 
-#include "solver/cycle.hpp"
-#include "solver/mechanics.hpp"
+#include "bolt/bolt_law.hpp"
+#include "state/mechanics.hpp"
+#include "state/motion.hpp"
 
 namespace edem {
 

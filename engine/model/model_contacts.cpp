@@ -3,11 +3,12 @@
 #include <cmath>
 
 #include "contact/detect.hpp"
+#include "contact/joint_law.hpp"
 #include "core/error.hpp"
 #include "core/names.hpp"
 #include "model/model.hpp"
-#include "solver/mechanics.hpp"
 #include "solver/prepare.hpp"
+#include "state/mechanics.hpp"
 
 namespace edem {
 namespace {

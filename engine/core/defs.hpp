@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "geom/polygon.hpp"
+#include "core/vec2.hpp"
 
 namespace edem {
 
@@ -50,7 +50,7 @@ struct CrackDef {
 };
 
 // Potential cracks (seed paper §2.2): sets of parallel cuts with the intact rock's strength,
-// tied shut until a section of them fails (crack/sections.hpp).
+// tied shut until a section of them fails (state/sections.hpp).
 struct CrackSeedDef {
   RegionRef region;            // only inside this region (empty: everywhere)
   std::vector<double> angles;  // one set of parallel cuts per angle, from +x [deg]
@@ -130,7 +130,7 @@ struct ModelInfo {
   int regions = 0;
   int joint_sets = 0;
   int crack_seeds = 0;      // crackseed{} inputs
-  int sections = 0;         // potential-crack sections (crack/sections.hpp)
+  int sections = 0;         // potential-crack sections (state/sections.hpp)
   int intact_sections = 0;  // of them, not yet broken
   int cracks = 0;           // sections broken, in either mode
   int shear_cracks = 0;

@@ -1,6 +1,6 @@
 // The Model's mechanical commands: materials, loads, cycling with the watchdog, callbacks,
 // histories and the read-only views.
-#include "solver/mechanics.hpp"
+#include "state/mechanics.hpp"
 
 #include <fmt/format.h>
 
@@ -11,15 +11,16 @@
 #include <fstream>
 #include <map>
 
+#include "bolt/bolt_coupling.hpp"
 #include "core/error.hpp"
 #include "core/names.hpp"
 #include "core/union_find.hpp"
 #include "io/temp_file.hpp"
 #include "model/model.hpp"
-#include "solver/bolt_coupling.hpp"
 #include "solver/loads.hpp"
 #include "solver/prepare.hpp"
 #include "solver/run.hpp"
+#include "state/insitu.hpp"
 
 namespace edem {
 namespace {

@@ -1,7 +1,7 @@
 // Bolts tied to the rock: host zones found in the current configuration through a bucket grid,
 // the grout's reaction gathered by the rock's nodes in a fixed order (the same bits for any
 // thread count), the bolt nodes integrated along their axes.
-#include "solver/bolt_coupling.hpp"
+#include "bolt/bolt_coupling.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -16,15 +16,15 @@
 #include <string>
 #include <vector>
 
-#include "bolt/bolt_law.hpp"
-#include "constitutive/material.hpp"
-#include "constitutive/mohr_coulomb.hpp"
-#include "contact/contacts.hpp"
-#include "contact/joint_law.hpp"
-#include "crack/sections.hpp"
+#include "core/physics_defs.hpp"
 #include "geom/mesh.hpp"
-#include "model/physics_defs.hpp"
-#include "solver/energy.hpp"
+#include "state/bolts.hpp"
+#include "state/contacts.hpp"
+#include "state/energy.hpp"
+#include "state/joint_params.hpp"
+#include "state/material_params.hpp"
+#include "state/sections.hpp"
+#include "state/stress.hpp"
 
 namespace edem {
 
@@ -109,7 +109,7 @@ struct ReleaseLoad {
 // How a bolt's head is held (bolt_head{}).
 enum class HeadDrive : std::uint8_t { none, velocity, force };
 
-// The bolts' ties to the rock (solver/bolt_coupling.cpp). Each bolt node is tied to a material
+// The bolts' ties to the rock (bolt/bolt_coupling.cpp). Each bolt node is tied to a material
 // point of a host zone, at fixed shape-function weights: across the bolt's axis the node moves
 // with that point (a bolt has no bending stiffness of its own), along it the node slides against
 // it by `slide`, resisted by the grout. Per bolt node unless said otherwise.
@@ -185,11 +185,11 @@ struct Mechanics {
   ContactBoundary faces;   // the touchable block boundaries (per mesh)
   ContactSet contacts;
   // What a query from a callback saw while the contacts were not current: found on a copy, for
-  // the cycle `viewed_cycle` (contact/model_contacts.cpp). A cache, not state: not saved.
+  // the cycle `viewed_cycle` (model/model_contacts.cpp). A cache, not state: not saved.
   ContactSet viewed_contacts;
   long viewed_cycle = -1;
 
-  // ---- potential cracks (crack/sections.hpp, crack/judge.hpp)
+  // ---- potential cracks (state/sections.hpp, crack/judge.hpp)
   std::vector<CrackSeedDef> crack_seeds;  // the model's crackseed{} inputs
   std::vector<Section> sections;
   std::vector<int> edge_section;          // per flat loop edge: its section, or -1
@@ -201,7 +201,7 @@ struct Mechanics {
   int stage = 0;                          // excavation stage (0: before any)
   std::vector<int> zone_excavated;        // per mesh zone: the stage that excavated it (0: none)
   ReleaseLoad release;
-  // ---- bolts (bolt/bolt_law.hpp, solver/bolt_coupling.cpp)
+  // ---- bolts (state/bolts.hpp, bolt/bolt_coupling.cpp)
   std::vector<BoltMaterialDef> bolt_materials;  // same order as bolts.laws
   BoltSet bolts;
   BoltHosts bolt_hosts;
@@ -244,7 +244,11 @@ struct Mechanics {
   std::function<void(const RunProgress&)> progress;  // reports a long run (Model::set_progress)
   double progress_every = 0.0;                       // [s] between reports; 0: none
   std::vector<History> histories;
-  EnergyLedger energy;  // the energy balance (solver/energy.hpp)
+  EnergyLedger energy;  // the energy balance (state/energy.hpp)
 };
+
+// The number of threads cycling will use: OpenMP's (or the model's own) for a model with
+// enough work for them.
+int thread_count(const Mechanics& m);
 
 }  // namespace edem

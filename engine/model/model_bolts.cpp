@@ -2,11 +2,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "bolt/bolt_coupling.hpp"
+#include "bolt/bolt_law.hpp"
 #include "core/error.hpp"
 #include "core/names.hpp"
 #include "model/model.hpp"
-#include "solver/bolt_coupling.hpp"
-#include "solver/mechanics.hpp"
+#include "state/mechanics.hpp"
 
 namespace edem {
 namespace {
