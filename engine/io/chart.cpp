@@ -14,7 +14,6 @@
 
 #include "core/error.hpp"
 #include "io/cairo_file.hpp"
-#include "io/plot.hpp"
 
 namespace edem {
 namespace {
@@ -44,10 +43,7 @@ void check_values(const std::string& series, char axis, const std::vector<double
 }
 
 void check_def(const ChartDef& def) {
-  for (const int size : {def.width, def.height})
-    if (size < kPlotMinSize || size > kPlotMaxSize)
-      fail("size {{{}, {}}} is out of range: width and height must be {} to {}", def.width,
-           def.height, kPlotMinSize, kPlotMaxSize);
+  check_size(def.width, def.height);
   if (def.series.empty()) fail("no series to draw: give at least one, with its x and y values");
   for (std::size_t i = 0; i < def.series.size(); ++i) {
     const ChartSeries& s = def.series[i];

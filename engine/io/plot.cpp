@@ -65,13 +65,6 @@ Layers layers_of(const std::vector<std::string>& show) {
   return layers;
 }
 
-void check_size(int width, int height) {
-  for (const int size : {width, height})
-    if (size < kPlotMinSize || size > kPlotMaxSize)
-      fail("size {{{}, {}}} is out of range: width and height must be {} to {}", width, height,
-           kPlotMinSize, kPlotMaxSize);
-}
-
 // ---------------------------------------------------------------------------------------
 // Geometry gathered from the model, in metres.
 

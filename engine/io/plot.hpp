@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "io/cairo_file.hpp"  // kPlotMinSize, kPlotMaxSize
+
 namespace edem {
 
 class Model;
@@ -17,8 +19,8 @@ class Model;
 struct PlotDef {
   std::string file;                                   // .png, .svg or .pdf (any case)
   std::vector<std::string> show{"blocks", "joints"};  // any of plot_layers()
-  int width = 1200;                                   // [px] (points for SVG/PDF)
-  int height = 900;                                   // [px]
+  int width = 1200;  // [px] (points for SVG/PDF), kPlotMinSize to kPlotMaxSize
+  int height = 900;  // [px]
   // {x0, x1, y0, y1} [m]: draw only this part of the model, fitted to the canvas; none: all of it
   std::optional<std::array<double, 4>> window;
   // Zones in place filled by this quantity in 8 equal bands, with the bands in the legend (as
@@ -46,10 +48,6 @@ const std::vector<std::string>& plot_layers();
 // The quantities `colour` accepts: zone stresses sxx, syy, sxy, szz, s1, s3 [Pa]; gridpoint
 // displacements ux, uy and their magnitude u [m], averaged over each zone's corners.
 const std::vector<std::string>& plot_colours();
-
-// Smallest and largest accepted width or height [px].
-inline constexpr int kPlotMinSize = 64;
-inline constexpr int kPlotMaxSize = 16384;
 
 // Draws the model. Throws edem::Error, leaving no file, for an unknown layer or extension,
 // a size out of range, a window that is not x0 < x1, y0 < y1 (finite), a model without blocks,
