@@ -14,8 +14,9 @@
 #include <unordered_set>
 
 #include "core/error.hpp"
-#include "io/cairo_file.hpp"
 #include "core/names.hpp"
+#include "io/cairo_file.hpp"
+#include "io/canvas.hpp"
 #include "model/model.hpp"
 
 namespace edem {
@@ -201,21 +202,6 @@ std::optional<Box> extent_of(const BlockSet& set) {
 // ---------------------------------------------------------------------------------------
 // Styles. Widths and dashes are in units of the canvas scale (about a pixel at 800 px).
 
-struct Rgb {
-  double r, g, b;
-};
-
-constexpr Rgb rgb(unsigned hex) {
-  return {((hex >> 16) & 0xff) / 255.0, ((hex >> 8) & 0xff) / 255.0, (hex & 0xff) / 255.0};
-}
-
-struct Pen {
-  Rgb colour;
-  double width;
-  std::vector<double> dash;  // on, off, ...; empty: solid
-  bool round = true;         // round caps and joins; butt is much faster for many segments
-};
-
 // Qualitative colours for joint sets (no red: red means crack).
 constexpr std::array kSetColours{rgb(0x1f77b4), rgb(0xff7f0e), rgb(0x2ca02c), rgb(0x9467bd),
                                  rgb(0x8c564b), rgb(0xe377c2), rgb(0xbcbd22), rgb(0x17becf)};
@@ -224,7 +210,6 @@ constexpr std::array kRegionColours{rgb(0xb3cde3), rgb(0xfbb4ae), rgb(0xccebc5),
                                     rgb(0xfed9a6), rgb(0xffffcc), rgb(0xe5d8bd), rgb(0xfddaec)};
 // Yielded zones (plastic and prepass layers): shear, tension, both.
 constexpr std::array kYieldColours{rgb(0xf4a582), rgb(0x92c5de), rgb(0xc2a5cf)};
-constexpr Rgb kInk = rgb(0x202020);
 constexpr Rgb kCrack = rgb(0xd62728);
 constexpr Rgb kShearCrack = rgb(0x1a35d4);  // deeper than joint set 1's blue, and thicker
 
@@ -292,11 +277,7 @@ const Pen kBlockPen{rgb(0x404040), 0.8, {}, false};
 const Pen kZonePen{rgb(0xc4c4c4), 0.45, {}, false};
 
 // ---------------------------------------------------------------------------------------
-// Canvas: the cairo surface, the layout of its parts and the model-to-device mapping.
-
-struct Rect {
-  double x, y, w, h;  // device units, y down
-};
+// The model-to-device mapping and the batches of lines.
 
 // Model metres to device units: uniform scale, y up.
 struct View {
@@ -306,146 +287,62 @@ struct View {
   Vec2 operator()(Vec2 p) const { return {ox + k * (p.x - box.x0), oy + k * (box.y1 - p.y)}; }
 };
 
-class Painter {
- public:
-  Painter(cairo_t* cr, double scale) : cr_(cr), s_(scale) {}
-  double s() const { return s_; }
-  cairo_t* cr() const { return cr_; }
-
-  void set_pen(const Pen& pen) {
-    cairo_set_source_rgb(cr_, pen.colour.r, pen.colour.g, pen.colour.b);
-    cairo_set_line_width(cr_, pen.width * s_);
-    std::vector<double> dash = pen.dash;
-    for (double& d : dash) d *= s_;
-    cairo_set_dash(cr_, dash.data(), static_cast<int>(dash.size()), 0.0);
-    const bool round = pen.round && dash.empty();
-    cairo_set_line_cap(cr_, round ? CAIRO_LINE_CAP_ROUND : CAIRO_LINE_CAP_BUTT);
-    cairo_set_line_join(cr_, round ? CAIRO_LINE_JOIN_ROUND : CAIRO_LINE_JOIN_BEVEL);
-  }
-
-  // One path, one stroke for the whole batch.
-  void stroke(const Polylines& lines, const View& view, const Pen& pen) {
-    if (lines.empty()) return;
-    cairo_new_path(cr_);
-    for (std::size_t i = 0; i < lines.starts.size(); ++i) {
-      const std::size_t end =
-          i + 1 < lines.starts.size() ? lines.starts[i + 1] : lines.points.size();
-      const Vec2 a = view(lines.points[lines.starts[i]]);
-      cairo_move_to(cr_, a.x, a.y);
-      for (std::size_t j = lines.starts[i] + 1; j < end; ++j) {
-        const Vec2 b = view(lines.points[j]);
-        cairo_line_to(cr_, b.x, b.y);
-      }
+// One path, one stroke for the whole batch.
+void stroke(Canvas& p, const Polylines& lines, const View& view, const Pen& pen) {
+  if (lines.empty()) return;
+  cairo_t* cr = p.cr();
+  cairo_new_path(cr);
+  for (std::size_t i = 0; i < lines.starts.size(); ++i) {
+    const std::size_t end = i + 1 < lines.starts.size() ? lines.starts[i + 1] : lines.points.size();
+    const Vec2 a = view(lines.points[lines.starts[i]]);
+    cairo_move_to(cr, a.x, a.y);
+    for (std::size_t j = lines.starts[i] + 1; j < end; ++j) {
+      const Vec2 b = view(lines.points[j]);
+      cairo_line_to(cr, b.x, b.y);
     }
-    set_pen(pen);
-    cairo_stroke(cr_);
   }
+  p.pen(pen);
+  cairo_stroke(cr);
+}
 
-  // Many thin segments (zones): on a raster surface, filled as quads with coarser
-  // antialiasing, which rasterizes about twice as fast as a stroke and looks the same.
-  void hairlines(const Polylines& lines, const View& view, const Pen& pen) {
-    const bool raster = cairo_surface_get_type(cairo_get_target(cr_)) == CAIRO_SURFACE_TYPE_IMAGE;
-    if (!raster || !pen.dash.empty()) {
-      stroke(lines, view, pen);
-      return;
+// Many thin segments (zones): on a raster surface, filled as quads with coarser antialiasing,
+// which rasterizes about twice as fast as a stroke and looks the same.
+void hairlines(Canvas& p, const Polylines& lines, const View& view, const Pen& pen) {
+  cairo_t* cr = p.cr();
+  const bool raster = cairo_surface_get_type(cairo_get_target(cr)) == CAIRO_SURFACE_TYPE_IMAGE;
+  if (!raster || !pen.dash.empty()) {
+    stroke(p, lines, view, pen);
+    return;
+  }
+  if (lines.empty()) return;
+  const double half = 0.5 * pen.width * p.s();
+  cairo_new_path(cr);
+  for (std::size_t i = 0; i < lines.starts.size(); ++i) {
+    const std::size_t end = i + 1 < lines.starts.size() ? lines.starts[i + 1] : lines.points.size();
+    for (std::size_t j = lines.starts[i]; j + 1 < end; ++j) {
+      const Vec2 a = view(lines.points[j]), b = view(lines.points[j + 1]);
+      const double length = norm(b - a);
+      if (!(length > 0)) continue;
+      const Vec2 n{-(b.y - a.y) * half / length, (b.x - a.x) * half / length};
+      // Every quad turns the same way, so overlaps never cancel under the winding rule.
+      cairo_move_to(cr, a.x + n.x, a.y + n.y);
+      cairo_line_to(cr, b.x + n.x, b.y + n.y);
+      cairo_line_to(cr, b.x - n.x, b.y - n.y);
+      cairo_line_to(cr, a.x - n.x, a.y - n.y);
+      cairo_close_path(cr);
     }
-    if (lines.empty()) return;
-    const double half = 0.5 * pen.width * s_;
-    cairo_new_path(cr_);
-    for (std::size_t i = 0; i < lines.starts.size(); ++i) {
-      const std::size_t end =
-          i + 1 < lines.starts.size() ? lines.starts[i + 1] : lines.points.size();
-      for (std::size_t j = lines.starts[i]; j + 1 < end; ++j) {
-        const Vec2 a = view(lines.points[j]), b = view(lines.points[j + 1]);
-        const double length = norm(b - a);
-        if (!(length > 0)) continue;
-        const Vec2 n{-(b.y - a.y) * half / length, (b.x - a.x) * half / length};
-        // Every quad turns the same way, so overlaps never cancel under the winding rule.
-        cairo_move_to(cr_, a.x + n.x, a.y + n.y);
-        cairo_line_to(cr_, b.x + n.x, b.y + n.y);
-        cairo_line_to(cr_, b.x - n.x, b.y - n.y);
-        cairo_line_to(cr_, a.x - n.x, a.y - n.y);
-        cairo_close_path(cr_);
-      }
-    }
-    cairo_set_source_rgb(cr_, pen.colour.r, pen.colour.g, pen.colour.b);
-    cairo_set_fill_rule(cr_, CAIRO_FILL_RULE_WINDING);
-    cairo_set_antialias(cr_, CAIRO_ANTIALIAS_FAST);
-    cairo_fill(cr_);
-    cairo_set_antialias(cr_, CAIRO_ANTIALIAS_DEFAULT);
   }
-
-  void polygon_path(const Polygon& polygon, const View& view) {
-    cairo_new_path(cr_);
-    for (const Vec2 p : polygon) {
-      const Vec2 d = view(p);
-      cairo_line_to(cr_, d.x, d.y);
-    }
-    cairo_close_path(cr_);
-  }
-
-  enum class Align { left, centre, right };
-
-  double text_width(std::string_view text, double size, bool bold = false) {
-    font(size, bold);
-    cairo_text_extents_t ext;
-    cairo_text_extents(cr_, printable(text).c_str(), &ext);
-    return ext.x_advance;
-  }
-
-  // Text whose vertical centre is at y; a white halo keeps it legible over lines. Without a
-  // halo it stays real text in SVG and PDF (selectable, searchable).
-  void text(std::string_view text, double x, double y, double size, Align align, Rgb colour,
-            bool bold = false, bool halo = false) {
-    const std::string str = printable(text);
-    font(size, bold);
-    cairo_text_extents_t ext;
-    cairo_text_extents(cr_, str.c_str(), &ext);
-    cairo_font_extents_t fe;
-    cairo_font_extents(cr_, &fe);
-    double left = x;
-    if (align == Align::centre) left -= 0.5 * ext.x_advance;
-    if (align == Align::right) left -= ext.x_advance;
-    const double baseline = y + 0.5 * (fe.ascent - fe.descent);
-    cairo_new_path(cr_);
-    cairo_move_to(cr_, left, baseline);
-    if (!halo) {
-      cairo_set_source_rgb(cr_, colour.r, colour.g, colour.b);
-      cairo_show_text(cr_, str.c_str());
-      cairo_new_path(cr_);
-      return;
-    }
-    cairo_text_path(cr_, str.c_str());
-    cairo_set_source_rgba(cr_, 1, 1, 1, 0.85);
-    cairo_set_line_width(cr_, 0.25 * size);
-    cairo_set_dash(cr_, nullptr, 0, 0.0);
-    cairo_set_line_join(cr_, CAIRO_LINE_JOIN_ROUND);
-    cairo_stroke_preserve(cr_);
-    cairo_set_source_rgb(cr_, colour.r, colour.g, colour.b);
-    cairo_fill(cr_);
-  }
-
- private:
-  void font(double size, bool bold) {
-    cairo_select_font_face(cr_, "sans-serif", CAIRO_FONT_SLANT_NORMAL,
-                           bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
-    cairo_set_font_size(cr_, size);
-  }
-
-  cairo_t* cr_;
-  double s_;
-};
+  p.colour(pen.colour);
+  cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
+  cairo_set_antialias(cr, CAIRO_ANTIALIAS_FAST);
+  cairo_fill(cr);
+  cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
+}
 
 // ---------------------------------------------------------------------------------------
 // The picture's parts.
 
-struct LegendEntry {
-  std::string label;
-  Pen pen;
-};
-
 constexpr double kMargin = 14.0, kTitleHeight = 30.0, kFooterHeight = 30.0;
-constexpr double kLegendFont = 11.0, kLegendRow = 18.0, kLegendSwatch = 26.0, kLegendPad = 8.0;
 
 // Where each part goes. Title, model, scale bar and legend form one block centred on the
 // canvas; the legend goes right of the model or below it, whichever leaves the model larger.
@@ -460,12 +357,6 @@ struct Layout {
   bool has_legend() const { return legend.w > 0; }
 };
 
-double legend_column_width(Painter& p, const std::vector<LegendEntry>& entries) {
-  double text = 0.0;
-  for (const auto& e : entries) text = std::max(text, p.text_width(e.label, kLegendFont * p.s()));
-  return (2 * kLegendPad + kLegendSwatch + 6.0) * p.s() + text;
-}
-
 enum class LegendPlace { none, right, below };
 
 struct LegendPlan {
@@ -477,15 +368,15 @@ struct LegendPlan {
 
 // Right of the model (one column) or below it (as many columns as fit), whichever leaves the
 // model larger; no legend when either would shrink the model to less than half.
-LegendPlan plan_legend(Painter& p, const std::vector<LegendEntry>& legend, double free_w,
+LegendPlan plan_legend(Canvas& p, const std::vector<LegendEntry>& legend, double free_w,
                        double free_h, double ew, double eh) {
   auto scale = [&](double w, double h) { return w > 0 && h > 0 ? std::min(w / ew, h / eh) : 0.0; };
-  const double s = p.s(), margin = kMargin * s;
+  const double margin = kMargin * p.s();
   LegendPlan none{LegendPlace::none, 0.0, 0.0, 1, scale(free_w, free_h)};
   const auto n = static_cast<int>(legend.size());
   if (n == 0) return none;
-  const double col_w = legend_column_width(p, legend);
-  const auto height = [&](int rows) { return (2 * kLegendPad + kLegendRow * rows) * s; };
+  const double col_w = p.legend_column_width(legend, LegendStyle{});
+  const auto height = [&](int rows) { return p.legend_height(static_cast<std::size_t>(rows)); };
   const int columns = std::clamp(static_cast<int>(free_w / col_w), 1, n);
   const int rows = (n + columns - 1) / columns;
   const LegendPlan right{LegendPlace::right, col_w, height(n), 1,
@@ -496,7 +387,7 @@ LegendPlan plan_legend(Painter& p, const std::vector<LegendEntry>& legend, doubl
   return best.k >= 0.5 * none.k ? best : none;
 }
 
-Layout layout(Painter& p, const Box& box, double width, double height, bool has_title,
+Layout layout(Canvas& p, const Box& box, double width, double height, bool has_title,
               const std::vector<LegendEntry>& legend) {
   const double s = p.s(), margin = kMargin * s;
   const double title_h = has_title ? kTitleHeight * s : 0.0, footer_h = kFooterHeight * s;
@@ -527,35 +418,6 @@ Layout layout(Painter& p, const Box& box, double width, double height, bool has_
   return out;
 }
 
-void draw_legend(Painter& p, const Layout& lay, const std::vector<LegendEntry>& entries) {
-  cairo_t* cr = p.cr();
-  const double s = p.s();
-  const Rect& r = lay.legend;
-  cairo_new_path(cr);
-  cairo_rectangle(cr, r.x, r.y, r.w, r.h);
-  cairo_set_source_rgb(cr, 1, 1, 1);
-  cairo_fill_preserve(cr);
-  p.set_pen({rgb(0xb0b0b0), 0.8, {}});
-  cairo_stroke(cr);
-  const std::size_t columns = static_cast<std::size_t>(lay.legend_columns);
-  const std::size_t rows = (entries.size() + columns - 1) / columns;
-  const double col_w = r.w / static_cast<double>(columns);
-  for (std::size_t i = 0; i < entries.size(); ++i) {
-    const double row = static_cast<double>(i % rows), col = static_cast<double>(i / rows);
-    const double y = r.y + (kLegendPad + kLegendRow * (row + 0.5)) * s;
-    const double x = r.x + col * col_w + kLegendPad * s;
-    cairo_new_path(cr);
-    cairo_move_to(cr, x, y);
-    cairo_line_to(cr, x + kLegendSwatch * s, y);
-    Pen swatch = entries[i].pen;
-    swatch.width = std::max(swatch.width, 1.0);  // hairlines would vanish in the legend
-    p.set_pen(swatch);
-    cairo_stroke(cr);
-    p.text(entries[i].label, x + (kLegendSwatch + 6.0) * s, y, kLegendFont * s,
-           Painter::Align::left, kInk);
-  }
-}
-
 // The largest 1, 2 or 5 x 10^k not above `target` [m].
 double round_length(double target) {
   const double decade = std::pow(10.0, std::floor(std::log10(target)));
@@ -570,29 +432,26 @@ std::string length_label(double metres) {
   return fmt::format("{:g} m", metres);
 }
 
-// A bar about a fifth of the model's width, of a round length; returns its right end.
-double draw_scale_bar(Painter& p, const Layout& lay) {
+// A bar about a fifth of the model's width, of a round length; returns its label's right end.
+double draw_scale_bar(Canvas& p, const Layout& lay) {
   const double s = p.s();
   const double length = round_length(0.2 * lay.model.w / lay.view.k);
   if (!std::isfinite(length) || length <= 0) return lay.model.x;
   const double w = length * lay.view.k, h = 5.0 * s;
   const double x = lay.model.x, y = lay.footer_y - 0.5 * h;
-  cairo_t* cr = p.cr();
   for (int half = 0; half < 2; ++half) {
-    cairo_new_path(cr);
-    cairo_rectangle(cr, x + 0.5 * w * half, y, 0.5 * w, h);
+    p.rectangle({x + 0.5 * w * half, y, 0.5 * w, h});
     const double shade = half == 0 ? 0.12 : 1.0;
-    cairo_set_source_rgb(cr, shade, shade, shade);
-    cairo_fill(cr);
+    p.colour({shade, shade, shade});
+    cairo_fill(p.cr());
   }
-  cairo_new_path(cr);
-  cairo_rectangle(cr, x, y, w, h);
-  p.set_pen({kInk, 0.8, {}});
-  cairo_stroke(cr);
+  p.rectangle({x, y, w, h});
+  p.pen({kInk, 0.8, {}});
+  cairo_stroke(p.cr());
   const std::string label = length_label(length);
-  const double size = 11.0 * s, label_x = x + w + 6.0 * s;
-  p.text(label, label_x, lay.footer_y, size, Painter::Align::left, kInk);
-  return label_x + p.text_width(label, size);
+  const double label_x = x + w + 6.0 * s;
+  p.text(label, label_x, lay.footer_y, Align::left, {11.0});
+  return label_x + p.text_width(label, 11.0);
 }
 
 // The new cracks of one mode, each its section's segment [m].
@@ -853,7 +712,7 @@ std::vector<LegendEntry> legend_of(const Scene& scene) {
 
 // Zones filled in one colour as one path, each also outlined in it so that no hairline gaps show
 // between neighbours.
-void fill_zones(Painter& p, const std::vector<Polygon>& triangles, const View& view, Rgb c) {
+void fill_zones(Canvas& p, const std::vector<Polygon>& triangles, const View& view, Rgb c) {
   if (triangles.empty()) return;
   cairo_t* cr = p.cr();
   cairo_new_path(cr);
@@ -867,113 +726,96 @@ void fill_zones(Painter& p, const std::vector<Polygon>& triangles, const View& v
     }
     cairo_close_path(cr);
   }
-  p.set_pen({c, 0.5, {}});
+  p.pen({c, 0.5, {}});
   cairo_fill_preserve(cr);
   cairo_stroke(cr);
 }
 
-void draw_bands(Painter& p, const Scene& scene, const View& view) {
+void draw_bands(Canvas& p, const Scene& scene, const View& view) {
   for (std::size_t b = 0; b < scene.bands.size(); ++b) fill_zones(p, scene.bands[b], view, kBandColours[b]);
 }
 
-void draw_yielded(Painter& p, const Scene& scene, const View& view) {
+void draw_yielded(Canvas& p, const Scene& scene, const View& view) {
   for (std::size_t i = 0; i < scene.yielded.size(); ++i) fill_zones(p, scene.yielded[i], view, kYieldColours[i]);
 }
 
-void draw_regions(Painter& p, const Scene& scene, const View& view) {
+void draw_regions(Canvas& p, const Scene& scene, const View& view) {
   cairo_t* cr = p.cr();
   for (std::size_t i = 0; i < scene.regions.size(); ++i) {
     const Polygon& polygon = scene.regions[i].polygon;
     if (polygon.size() < 3) continue;
     const Rgb fill = kRegionColours[i % kRegionColours.size()];
-    p.polygon_path(polygon, view);
-    cairo_set_source_rgba(cr, fill.r, fill.g, fill.b, 0.7);
+    cairo_new_path(cr);
+    for (const Vec2 v : polygon) {
+      const Vec2 d = view(v);
+      cairo_line_to(cr, d.x, d.y);
+    }
+    cairo_close_path(cr);
+    p.colour(fill, 0.7);
     cairo_fill_preserve(cr);
-    p.set_pen({{fill.r * 0.6, fill.g * 0.6, fill.b * 0.6}, 0.8, {}});
+    p.pen({{fill.r * 0.6, fill.g * 0.6, fill.b * 0.6}, 0.8, {}});
     cairo_stroke(cr);
   }
 }
 
-void draw_region_labels(Painter& p, const Scene& scene, const View& view) {
+void draw_region_labels(Canvas& p, const Scene& scene, const View& view) {
   for (const RegionDef& region : scene.regions) {
     if (region.polygon.size() < 3 || region.name.empty()) continue;
     const Box box = bounding_box(region.polygon);
-    const double size = 11.0 * p.s();
     // A label much larger than its region would only hide the picture.
-    if (p.text_width(region.name, size) > 2.0 * view.k * (box.x1 - box.x0) ||
-        size > 2.0 * view.k * (box.y1 - box.y0))
+    if (p.text_width(region.name, 11.0) > 2.0 * view.k * (box.x1 - box.x0) ||
+        11.0 * p.s() > 2.0 * view.k * (box.y1 - box.y0))
       continue;
     const Vec2 c = view(centroid(region.polygon));
-    p.text(region.name, c.x, c.y, size, Painter::Align::centre, kInk, false, true);
+    p.text(region.name, c.x, c.y, Align::centre, {.size = 11.0, .halo = true});
   }
 }
 
 // The title, shrunk to fit the canvas; left out when it would be too small to read.
-void draw_title(Painter& p, const std::string& title, double width, double y) {
-  const double full = 16.0 * p.s(), room = width - 2 * kMargin * p.s();
-  const double tw = p.text_width(title, full, true);
-  const double size = tw > room ? full * room / tw : full;
-  if (size >= 6.0) p.text(title, 0.5 * width, y, size, Painter::Align::centre, kInk, true);
+void draw_title(Canvas& p, const std::string& title, double width, double y) {
+  const double size = p.fitted_size(title, 16.0, width - 2 * kMargin * p.s());
+  if (size * p.s() >= 6.0) p.text(title, 0.5 * width, y, Align::centre, {.size = size, .bold = true});
 }
 
-void draw_counts(Painter& p, const Scene& scene, const Layout& lay, double left_limit) {
+void draw_counts(Canvas& p, const Scene& scene, const Layout& lay, double left_limit) {
   std::string counts = fmt::format("{} block{}", scene.blocks, scene.blocks == 1 ? "" : "s");
   if (scene.zones && *scene.zones == 0) counts += ", not zoned";
   if (scene.zones && *scene.zones > 0)
     counts += fmt::format(", {} zone{}", *scene.zones, *scene.zones == 1 ? "" : "s");
-  const double size = 10.0 * p.s();
-  if (lay.right - p.text_width(counts, size) < left_limit + 12.0 * p.s()) return;  // no room
-  p.text(counts, lay.right, lay.footer_y, size, Painter::Align::right, rgb(0x707070));
+  if (lay.right - p.text_width(counts, 10.0) < left_limit + 12.0 * p.s()) return;  // no room
+  p.text(counts, lay.right, lay.footer_y, Align::right, {.size = 10.0, .colour = rgb(0x707070)});
 }
 
 void render(cairo_t* cr, const Scene& scene, const Layers& layers, double width, double height) {
-  const double s = std::clamp(std::min(width, height) / 800.0, 0.5, 4.0);
-  Painter p(cr, s);
+  Canvas p(cr, width, height);
   const std::vector<LegendEntry> legend = legend_of(scene);
   const Layout lay = layout(p, scene.box, width, height, !scene.title.empty(), legend);
   const View& view = lay.view;
 
-  cairo_set_source_rgb(cr, 1, 1, 1);
-  cairo_paint(cr);
+  p.paint(rgb(0xffffff));
 
   // The model, clipped to its extent (regions may reach outside the blocks).
   cairo_save(cr);
-  const double pad = 4.0 * s;
-  cairo_rectangle(cr, lay.model.x - pad, lay.model.y - pad, lay.model.w + 2 * pad,
-                  lay.model.h + 2 * pad);
-  cairo_clip(cr);
+  p.clip(lay.model.grown(4.0 * p.s()));
   if (layers.regions) draw_regions(p, scene, view);
   draw_bands(p, scene, view);
   draw_yielded(p, scene, view);
-  p.hairlines(scene.zone_lines, view, kZonePen);
-  p.stroke(scene.block_lines, view, kBlockPen);
-  for (const auto& [cls, lines] : scene.edges) p.stroke(lines, view, pen_of(cls));
-  for (const CrackBatch& batch : scene.new_cracks)
-    p.stroke(batch.lines, view, crack_pen(batch.mode));
-  p.stroke(scene.compression_ticks, view, kCompressionTick);
-  p.stroke(scene.tension_ticks, view, kTensionTick);
-  p.stroke(scene.bolts_out, view, kBoltOut);
-  p.stroke(scene.bolts_compression, view, kBoltCompression);
-  p.stroke(scene.bolts_tension, view, kBoltTension);
+  hairlines(p, scene.zone_lines, view, kZonePen);
+  stroke(p, scene.block_lines, view, kBlockPen);
+  for (const auto& [cls, lines] : scene.edges) stroke(p, lines, view, pen_of(cls));
+  for (const CrackBatch& batch : scene.new_cracks) stroke(p, batch.lines, view, crack_pen(batch.mode));
+  stroke(p, scene.compression_ticks, view, kCompressionTick);
+  stroke(p, scene.tension_ticks, view, kTensionTick);
+  stroke(p, scene.bolts_out, view, kBoltOut);
+  stroke(p, scene.bolts_compression, view, kBoltCompression);
+  stroke(p, scene.bolts_tension, view, kBoltTension);
   if (layers.regions) draw_region_labels(p, scene, view);
   cairo_restore(cr);
 
   if (!scene.title.empty()) draw_title(p, scene.title, width, lay.title_y);
-  if (lay.has_legend()) draw_legend(p, lay, legend);
+  if (lay.has_legend()) p.legend(lay.legend, legend, {.columns = lay.legend_columns});
   draw_counts(p, scene, lay, draw_scale_bar(p, lay));
 }
-
-}  // namespace
-
-#if defined(__SANITIZE_ADDRESS__)
-// fontconfig, loaded by cairo's text, keeps process-lifetime allocations that LeakSanitizer
-// reports at exit; they are not ours and cannot be freed from here.
-extern "C" const char* __lsan_default_suppressions() {
-  return "leak:libfontconfig.so\n";
-}
-#endif
-
-namespace {
 
 void check_window(const std::optional<std::array<double, 4>>& window) {
   if (!window) return;
