@@ -11,7 +11,6 @@
 #include "core/error.hpp"
 #include "core/names.hpp"
 #include "io/chart.hpp"
-#include "io/plot.hpp"
 #include "lua_util.hpp"
 
 namespace edem {

@@ -6,7 +6,7 @@
 #include "commands.hpp"
 #include "core/error.hpp"
 #include "context.hpp"
-#include "io/plot.hpp"
+#include "model/model_plot.hpp"
 
 namespace edem {
 namespace {

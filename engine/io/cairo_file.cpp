@@ -2,6 +2,7 @@
 
 #include <cairo-pdf.h>
 #include <cairo-svg.h>
+#include <cairo.h>
 
 #include <cctype>
 #include <filesystem>
@@ -70,6 +71,13 @@ PictureFormat picture_format(const std::string& file) {
   if (lower == ".pdf") return PictureFormat::pdf;
   if (ext.empty()) fail("file '{}' has no extension: use .png, .svg or .pdf", file);
   fail("unsupported file type '{}': use .png, .svg or .pdf", ext);
+}
+
+void check_size(int width, int height) {
+  for (const int size : {width, height})
+    if (size < kPlotMinSize || size > kPlotMaxSize)
+      fail("size {{{}, {}}} is out of range: width and height must be {} to {}", width, height, kPlotMinSize,
+           kPlotMaxSize);
 }
 
 void check_writable(const std::string& file) {

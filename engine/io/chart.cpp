@@ -14,7 +14,7 @@
 
 #include "core/error.hpp"
 #include "io/cairo_file.hpp"
-#include "io/plot.hpp"
+#include "io/canvas.hpp"
 
 namespace edem {
 namespace {
@@ -44,10 +44,7 @@ void check_values(const std::string& series, char axis, const std::vector<double
 }
 
 void check_def(const ChartDef& def) {
-  for (const int size : {def.width, def.height})
-    if (size < kPlotMinSize || size > kPlotMaxSize)
-      fail("size {{{}, {}}} is out of range: width and height must be {} to {}", def.width,
-           def.height, kPlotMinSize, kPlotMaxSize);
+  check_size(def.width, def.height);
   if (def.series.empty()) fail("no series to draw: give at least one, with its x and y values");
   for (std::size_t i = 0; i < def.series.size(); ++i) {
     const ChartSeries& s = def.series[i];
@@ -222,14 +219,6 @@ Ticks choose_ticks(const Axis& axis, const Measure& size, double gap, double min
 // ---------------------------------------------------------------------------------------
 // Styles. Sizes are in units of the canvas scale (about a pixel at 800 px).
 
-struct Rgb {
-  double r, g, b;
-};
-
-constexpr Rgb rgb(unsigned hex) {
-  return {((hex >> 16) & 0xff) / 255.0, ((hex >> 8) & 0xff) / 255.0, (hex & 0xff) / 255.0};
-}
-
 // Series colours, told apart in print and by most colour-blind readers together with the
 // marker shapes.
 constexpr std::array kSeriesColours{rgb(0x1f77b4), rgb(0xff7f0e), rgb(0x2ca02c), rgb(0xd62728),
@@ -237,16 +226,17 @@ constexpr std::array kSeriesColours{rgb(0x1f77b4), rgb(0xff7f0e), rgb(0x2ca02c),
 enum class Marker { circle, square, triangle, diamond, triangle_down };
 constexpr std::array kMarkers{Marker::circle, Marker::square, Marker::triangle, Marker::diamond,
                               Marker::triangle_down};
-constexpr Rgb kInk = rgb(0x202020);
 constexpr Rgb kGrid = rgb(0xe4e4e4);
 constexpr Rgb kFrame = rgb(0x606060);
 
 constexpr double kMargin = 14.0, kTitleHeight = 30.0, kLabelHeight = 26.0;
-constexpr double kTitleFont = 16.0, kLabelFont = 12.5, kTickFont = 11.0, kLegendFont = 11.0;
+constexpr double kTitleFont = 16.0, kLabelFont = 12.5, kTickFont = 11.0;
 constexpr double kTickLength = 5.0, kMinorLength = 3.0, kTickGap = 4.0;
 constexpr double kMinorRoom = 40.0;  // the shortest decade with minor ticks
 constexpr double kLineWidth = 1.8, kMarkerRadius = 5.0;
-constexpr double kLegendRow = 18.0, kLegendSwatch = 30.0, kLegendPad = 8.0, kLegendInset = 10.0;
+// Over the data, the legend's ground lets a little of it show through.
+constexpr LegendStyle kLegend{.swatch = 30.0, .ground = 0.9, .columns = 1};
+constexpr double kLegendInset = 10.0;  // from the frame
 
 Rgb colour_of(std::size_t series) {
   return kSeriesColours[series % kSeriesColours.size()];
@@ -256,117 +246,44 @@ Marker marker_of(std::size_t series) {
   return kMarkers[series % kMarkers.size()];
 }
 
+Pen line_pen(std::size_t series) {
+  return {colour_of(series), kLineWidth, {}};
+}
+
 // ---------------------------------------------------------------------------------------
 // Drawing.
 
-struct Rect {
-  double x, y, w, h;  // device units, y down
-  bool contains(double px, double py) const {
-    return px >= x && px <= x + w && py >= y && py <= y + h;
+void corners(cairo_t* cr, double x, double y,
+             std::initializer_list<std::array<double, 2>> offsets) {
+  for (const auto& [dx, dy] : offsets) cairo_line_to(cr, x + dx, y + dy);
+  cairo_close_path(cr);
+}
+
+void marker(Canvas& p, Marker shape, double x, double y, Rgb fill) {
+  cairo_t* cr = p.cr();
+  const double r = kMarkerRadius * p.s();
+  cairo_new_path(cr);
+  switch (shape) {
+    case Marker::circle:
+      cairo_arc(cr, x, y, r, 0, 2 * std::numbers::pi);
+      break;
+    case Marker::square:
+      cairo_rectangle(cr, x - 0.85 * r, y - 0.85 * r, 1.7 * r, 1.7 * r);
+      break;
+    case Marker::diamond:
+      corners(cr, x, y, {{0, -1.25 * r}, {1.0 * r, 0}, {0, 1.25 * r}, {-1.0 * r, 0}});
+      break;
+    case Marker::triangle:
+      corners(cr, x, y, {{0, -1.2 * r}, {1.1 * r, 0.8 * r}, {-1.1 * r, 0.8 * r}});
+      break;
+    case Marker::triangle_down:
+      corners(cr, x, y, {{0, 1.2 * r}, {1.1 * r, -0.8 * r}, {-1.1 * r, -0.8 * r}});
+      break;
   }
-};
-
-enum class Align { left, centre, right };
-
-class Pen {
- public:
-  Pen(cairo_t* cr, double scale) : cr_(cr), s_(scale) {}
-  double s() const { return s_; }
-  cairo_t* cr() const { return cr_; }
-
-  void colour(Rgb c) { cairo_set_source_rgb(cr_, c.r, c.g, c.b); }
-
-  void line(Rgb c, double width) {
-    colour(c);
-    cairo_set_line_width(cr_, width * s_);
-    cairo_set_line_cap(cr_, CAIRO_LINE_CAP_ROUND);
-    cairo_set_line_join(cr_, CAIRO_LINE_JOIN_ROUND);
-  }
-
-  void segment(double x0, double y0, double x1, double y1) {
-    cairo_move_to(cr_, x0, y0);
-    cairo_line_to(cr_, x1, y1);
-  }
-
-  // `text` must be printable(); sizes are in canvas-scale units.
-  double text_width(const std::string& text, double size, bool bold = false) {
-    font(size, bold);
-    cairo_text_extents_t ext;
-    cairo_text_extents(cr_, text.c_str(), &ext);
-    return ext.x_advance;
-  }
-
-  // Text whose vertical centre is at (x, y), turned by `angle` [rad] about that point; real
-  // text in SVG and PDF (selectable, searchable).
-  void text(const std::string& text, double x, double y, double size, Align align, Rgb c,
-            bool bold = false, double angle = 0.0) {
-    const double width = text_width(text, size, bold);
-    cairo_font_extents_t fe;
-    cairo_font_extents(cr_, &fe);
-    cairo_save(cr_);
-    cairo_translate(cr_, x, y);
-    cairo_rotate(cr_, angle);
-    const double left = align == Align::centre ? -0.5 * width : align == Align::right ? -width : 0;
-    cairo_new_path(cr_);
-    cairo_move_to(cr_, left, 0.5 * (fe.ascent - fe.descent));
-    colour(c);
-    cairo_show_text(cr_, text.c_str());
-    cairo_new_path(cr_);
-    cairo_restore(cr_);
-  }
-
-  void marker(Marker shape, double x, double y, Rgb fill) {
-    const double r = kMarkerRadius * s_;
-    cairo_new_path(cr_);
-    switch (shape) {
-      case Marker::circle:
-        cairo_arc(cr_, x, y, r, 0, 2 * std::numbers::pi);
-        break;
-      case Marker::square:
-        cairo_rectangle(cr_, x - 0.85 * r, y - 0.85 * r, 1.7 * r, 1.7 * r);
-        break;
-      case Marker::diamond:
-        polygon(x, y, {{0, -1.25 * r}, {1.0 * r, 0}, {0, 1.25 * r}, {-1.0 * r, 0}});
-        break;
-      case Marker::triangle:
-        polygon(x, y, {{0, -1.2 * r}, {1.1 * r, 0.8 * r}, {-1.1 * r, 0.8 * r}});
-        break;
-      case Marker::triangle_down:
-        polygon(x, y, {{0, 1.2 * r}, {1.1 * r, -0.8 * r}, {-1.1 * r, -0.8 * r}});
-        break;
-    }
-    colour(fill);
-    cairo_fill_preserve(cr_);
-    line(rgb(0xffffff), 0.8);
-    cairo_stroke(cr_);
-  }
-
- private:
-  void font(double size, bool bold) {
-    cairo_select_font_face(cr_, "sans-serif", CAIRO_FONT_SLANT_NORMAL,
-                           bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
-    cairo_set_font_size(cr_, size * s_);
-  }
-
-  void polygon(double x, double y, std::initializer_list<std::array<double, 2>> corners) {
-    for (const auto& [dx, dy] : corners) cairo_line_to(cr_, x + dx, y + dy);
-    cairo_close_path(cr_);
-  }
-
-  cairo_t* cr_;
-  double s_;
-};
-
-// The chart's text, made printable once.
-struct Texts {
-  std::string title, x_label, y_label;
-  std::vector<std::string> names;  // per series; "" for none
-};
-
-Texts texts_of(const ChartDef& def) {
-  Texts t{printable(def.title), printable(def.x_label), printable(def.y_label), {}};
-  for (const ChartSeries& s : def.series) t.names.push_back(printable(s.name));
-  return t;
+  p.colour(fill);
+  cairo_fill_preserve(cr);
+  p.pen({rgb(0xffffff), 0.8, {}});
+  cairo_stroke(cr);
 }
 
 // Where everything goes: the frame of the data, and both axes with their ticks. The y ticks
@@ -377,16 +294,16 @@ struct Layout {
   double title_y = 0.0;
 };
 
-Layout layout(Pen& p, const ChartDef& def, const Texts& texts, double width, double height) {
+Layout layout(Canvas& p, const ChartDef& def, double width, double height) {
   const double s = p.s(), margin = kMargin * s;
   Layout lay;
   lay.x = axis_of(def.series, true, def.log_x);
   lay.y = axis_of(def.series, false, def.log_y);
-  const double title_h = texts.title.empty() ? 0.0 : kTitleHeight * s;
+  const double title_h = def.title.empty() ? 0.0 : kTitleHeight * s;
   const double tick_room = (kTickLength + kTickGap + 1.3 * kTickFont) * s;
   const double top = margin + title_h + 4.0 * s;
   const double bottom =
-      height - margin - (texts.x_label.empty() ? 0.0 : kLabelHeight * s) - tick_room;
+      height - margin - (def.x_label.empty() ? 0.0 : kLabelHeight * s) - tick_room;
   lay.title_y = margin + 0.5 * title_h;
 
   lay.y.from = bottom;
@@ -398,7 +315,7 @@ Layout layout(Pen& p, const ChartDef& def, const Texts& texts, double width, dou
   for (const Tick& t : lay.y.ticks.major)
     label_w = std::max(label_w, p.text_width(t.label, kTickFont));
 
-  const double left = margin + (texts.y_label.empty() ? 0.0 : kLabelHeight * s) + label_w +
+  const double left = margin + (def.y_label.empty() ? 0.0 : kLabelHeight * s) + label_w +
                       (kTickLength + kTickGap) * s;
   const double right = width - margin - 18.0 * s;
   lay.x.from = left;
@@ -410,28 +327,25 @@ Layout layout(Pen& p, const ChartDef& def, const Texts& texts, double width, dou
   return lay;
 }
 
-void draw_grid(Pen& p, const Layout& lay) {
-  cairo_t* cr = p.cr();
+void draw_grid(Canvas& p, const Layout& lay) {
   const Rect& f = lay.frame;
-  cairo_new_path(cr);
+  cairo_new_path(p.cr());
   for (const Tick& t : lay.x.ticks.major)
     p.segment(lay.x.device(t.at), f.y, lay.x.device(t.at), f.y + f.h);
   for (const Tick& t : lay.y.ticks.major)
     p.segment(f.x, lay.y.device(t.at), f.x + f.w, lay.y.device(t.at));
-  p.line(kGrid, 0.8);
-  cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
-  cairo_stroke(cr);
+  p.pen({kGrid, 0.8, {}, false});
+  cairo_stroke(p.cr());
 }
 
 // Ticks outward from the bottom and left edges of the frame, then their labels.
-void draw_axes(Pen& p, const Layout& lay) {
+void draw_axes(Canvas& p, const Layout& lay) {
   cairo_t* cr = p.cr();
   const double s = p.s();
   const Rect& f = lay.frame;
-  cairo_new_path(cr);
-  cairo_rectangle(cr, f.x, f.y, f.w, f.h);
-  p.line(kFrame, 1.0);
-  cairo_set_line_join(cr, CAIRO_LINE_JOIN_MITER);
+  p.rectangle(f);
+  p.pen({kFrame, 1.0, {}});
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_MITER);  // square corners
   cairo_stroke(cr);
 
   const double bottom = f.y + f.h;
@@ -451,36 +365,36 @@ void draw_axes(Pen& p, const Layout& lay) {
       for (const Tick& t : lay.x.ticks.major) tick_x(t.at);
       for (const Tick& t : lay.y.ticks.major) tick_y(t.at);
     }
-    p.line(kFrame, minor ? 0.7 : 1.0);
-    cairo_set_line_cap(cr, CAIRO_LINE_CAP_BUTT);
+    p.pen({kFrame, minor ? 0.7 : 1.0, {}, false});
     cairo_stroke(cr);
   }
 
   const double label_y = bottom + (kTickLength + kTickGap + 0.6 * kTickFont) * s;
   for (const Tick& t : lay.x.ticks.major)
-    p.text(t.label, lay.x.device(t.at), label_y, kTickFont, Align::centre, kInk);
+    p.text(t.label, lay.x.device(t.at), label_y, Align::centre, {kTickFont});
   const double label_x = f.x - (kTickLength + kTickGap) * s;
   for (const Tick& t : lay.y.ticks.major)
-    p.text(t.label, label_x, lay.y.device(t.at), kTickFont, Align::right, kInk);
+    p.text(t.label, label_x, lay.y.device(t.at), Align::right, {kTickFont});
 }
 
-void draw_labels(Pen& p, const Layout& lay, const Texts& texts, double width, double height) {
+void draw_labels(Canvas& p, const Layout& lay, const ChartDef& def, double width, double height) {
   const double s = p.s();
   const Rect& f = lay.frame;
-  if (!texts.x_label.empty())
-    p.text(texts.x_label, f.x + 0.5 * f.w, height - kMargin * s - 0.6 * kLabelHeight * s,
-           kLabelFont, Align::centre, kInk);
-  if (!texts.y_label.empty())
-    p.text(texts.y_label, kMargin * s + 0.4 * kLabelHeight * s, f.y + 0.5 * f.h, kLabelFont,
-           Align::centre, kInk, false, -0.5 * std::numbers::pi);
-  if (texts.title.empty()) return;
+  if (!def.x_label.empty())
+    p.text(def.x_label, f.x + 0.5 * f.w, height - kMargin * s - 0.6 * kLabelHeight * s,
+           Align::centre, {kLabelFont});
+  if (!def.y_label.empty())
+    p.text(def.y_label, kMargin * s + 0.4 * kLabelHeight * s, f.y + 0.5 * f.h, Align::centre,
+           {.size = kLabelFont, .angle = -0.5 * std::numbers::pi});
+  if (def.title.empty()) return;
   // Centred over the frame, shrunk to fit the canvas; left out when too small to read.
   const double room = width - 2 * kMargin * s;
-  const double tw = p.text_width(texts.title, kTitleFont, true);
-  const double size = tw > room ? kTitleFont * room / tw : kTitleFont;
+  const double tw = p.text_width(def.title, kTitleFont, true);
+  const double size = p.fitted_size(def.title, kTitleFont, room);
   const double centre = std::clamp(f.x + 0.5 * f.w, kMargin * s + 0.5 * tw * size / kTitleFont,
                                    width - kMargin * s - 0.5 * tw * size / kTitleFont);
-  if (size * s >= 6.0) p.text(texts.title, centre, lay.title_y, size, Align::centre, kInk, true);
+  if (size * s >= 6.0)
+    p.text(def.title, centre, lay.title_y, Align::centre, {.size = size, .bold = true});
 }
 
 // Each series' points on the canvas.
@@ -494,42 +408,48 @@ std::vector<std::vector<std::array<double, 2>>> points_of(const ChartDef& def, c
   return out;
 }
 
-void draw_series(Pen& p, const Layout& lay,
+void draw_series(Canvas& p, const Layout& lay,
                  const std::vector<std::vector<std::array<double, 2>>>& points) {
   cairo_t* cr = p.cr();
   cairo_save(cr);
-  const double pad = 2.0 * kMarkerRadius * p.s();
-  cairo_rectangle(cr, lay.frame.x - pad, lay.frame.y - pad, lay.frame.w + 2 * pad,
-                  lay.frame.h + 2 * pad);
-  cairo_clip(cr);
+  p.clip(lay.frame.grown(2.0 * kMarkerRadius * p.s()));
   for (std::size_t i = 0; i < points.size(); ++i) {
     if (points[i].size() < 2) continue;
     cairo_new_path(cr);
     for (const auto& [x, y] : points[i]) cairo_line_to(cr, x, y);
-    p.line(colour_of(i), kLineWidth);
+    p.pen(line_pen(i));
     cairo_stroke(cr);
   }
   // Markers above every line, so that no line hides a point.
   for (std::size_t i = 0; i < points.size(); ++i)
-    for (const auto& [x, y] : points[i]) p.marker(marker_of(i), x, y, colour_of(i));
+    for (const auto& [x, y] : points[i]) marker(p, marker_of(i), x, y, colour_of(i));
   cairo_restore(cr);
+}
+
+// The named series, in order, as legend rows.
+struct Legend {
+  std::vector<LegendEntry> entries;
+  std::vector<std::size_t> series;  // of each entry
+};
+
+Legend legend_of(const ChartDef& def) {
+  Legend legend;
+  for (std::size_t i = 0; i < def.series.size(); ++i) {
+    if (def.series[i].name.empty()) continue;
+    legend.entries.push_back({def.series[i].name, line_pen(i)});
+    legend.series.push_back(i);
+  }
+  return legend;
 }
 
 // The legend's box in the corner of the frame that covers the fewest points and line samples
 // (top right first on a tie); nothing when no series has a name.
-std::optional<Rect> legend_box(Pen& p, const Layout& lay, const Texts& texts,
+std::optional<Rect> legend_box(Canvas& p, const Layout& lay, const Legend& legend,
                                const std::vector<std::vector<std::array<double, 2>>>& points) {
+  if (legend.entries.empty()) return std::nullopt;
   const double s = p.s();
-  double text_w = 0.0;
-  int rows = 0;
-  for (const std::string& name : texts.names) {
-    if (name.empty()) continue;
-    text_w = std::max(text_w, p.text_width(name, kLegendFont));
-    ++rows;
-  }
-  if (rows == 0) return std::nullopt;
-  const double w = (2 * kLegendPad + kLegendSwatch + 6.0) * s + text_w;
-  const double h = (2 * kLegendPad + kLegendRow * rows) * s;
+  const double w = p.legend_column_width(legend.entries, kLegend);
+  const double h = p.legend_height(legend.entries.size());
   const Rect& f = lay.frame;
   const double inset = kLegendInset * s;
   const double left = f.x + inset, right = f.x + f.w - inset - w;
@@ -539,7 +459,7 @@ std::optional<Rect> legend_box(Pen& p, const Layout& lay, const Texts& texts,
   // Points count most; each line is sampled along its segments.
   const double grow = kMarkerRadius * s;
   const auto covered = [&](const Rect& r) {
-    const Rect near{r.x - grow, r.y - grow, r.w + 2 * grow, r.h + 2 * grow};
+    const Rect near = r.grown(grow);
     int score = 0;
     for (const auto& series : points)
       for (std::size_t i = 0; i < series.size(); ++i) {
@@ -565,42 +485,22 @@ std::optional<Rect> legend_box(Pen& p, const Layout& lay, const Texts& texts,
   return *best;
 }
 
-void draw_legend(Pen& p, const Rect& r, const Texts& texts) {
-  cairo_t* cr = p.cr();
-  const double s = p.s();
-  cairo_new_path(cr);
-  cairo_rectangle(cr, r.x, r.y, r.w, r.h);
-  cairo_set_source_rgba(cr, 1, 1, 1, 0.9);
-  cairo_fill_preserve(cr);
-  p.line(rgb(0xb0b0b0), 0.8);
-  cairo_stroke(cr);
-  int row = 0;
-  for (std::size_t i = 0; i < texts.names.size(); ++i) {
-    if (texts.names[i].empty()) continue;
-    const double y = r.y + (kLegendPad + kLegendRow * (row++ + 0.5)) * s;
-    const double x = r.x + kLegendPad * s;
-    cairo_new_path(cr);
-    p.segment(x, y, x + kLegendSwatch * s, y);
-    p.line(colour_of(i), kLineWidth);
-    cairo_stroke(cr);
-    p.marker(marker_of(i), x + 0.5 * kLegendSwatch * s, y, colour_of(i));
-    p.text(texts.names[i], x + (kLegendSwatch + 6.0) * s, y, kLegendFont, Align::left, kInk);
-  }
-}
-
-void render(cairo_t* cr, const ChartDef& def, const Texts& texts, double width, double height) {
-  const double s = std::clamp(std::min(width, height) / 800.0, 0.5, 4.0);
-  Pen p(cr, s);
-  const Layout lay = layout(p, def, texts, width, height);
+void render(cairo_t* cr, const ChartDef& def, double width, double height) {
+  Canvas p(cr, width, height);
+  const Layout lay = layout(p, def, width, height);
   const auto points = points_of(def, lay);
 
-  cairo_set_source_rgb(cr, 1, 1, 1);
-  cairo_paint(cr);
+  p.paint(rgb(0xffffff));
   draw_grid(p, lay);
   draw_series(p, lay, points);
   draw_axes(p, lay);
-  draw_labels(p, lay, texts, width, height);
-  if (const auto box = legend_box(p, lay, texts, points)) draw_legend(p, *box, texts);
+  draw_labels(p, lay, def, width, height);
+  const Legend legend = legend_of(def);
+  if (const auto box = legend_box(p, lay, legend, points))
+    p.legend(*box, legend.entries, kLegend, [&](std::size_t entry, double x, double y) {
+      const std::size_t i = legend.series[entry];
+      marker(p, marker_of(i), x, y, colour_of(i));
+    });
 }
 
 }  // namespace
@@ -609,9 +509,8 @@ void chart(const ChartDef& def) {
   picture_format(def.file);  // checked before anything is computed
   check_def(def);
   check_writable(def.file);
-  const Texts texts = texts_of(def);
-  write_picture(def.file, def.width, def.height, texts.title,
-                [&](cairo_t* cr) { render(cr, def, texts, def.width, def.height); });
+  write_picture(def.file, def.width, def.height, def.title,
+                [&](cairo_t* cr) { render(cr, def, def.width, def.height); });
 }
 
 }  // namespace edem

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "io/cairo_file.hpp"  // kPlotMinSize, kPlotMaxSize
+
 namespace edem {
 
 struct ChartSeries {

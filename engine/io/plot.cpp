@@ -3,309 +3,22 @@
 #include <cairo.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <cstdint>
-#include <functional>
-#include <map>
-#include <numbers>
-#include <optional>
-#include <string_view>
-#include <unordered_set>
+#include <string>
 
 #include "core/error.hpp"
-#include "io/cairo_file.hpp"
-#include "core/names.hpp"
-#include "model/model.hpp"
 
 namespace edem {
-
-const std::vector<std::string>& plot_layers() {
-  static const std::vector<std::string> layers{"regions", "plastic", "prepass", "zones",  "blocks",
-                                               "joints",  "cracks",  "stress",  "bolts"};
-  return layers;
-}
-
-const std::vector<std::string>& plot_colours() {
-  static const std::vector<std::string> colours{"sxx", "syy", "sxy", "szz", "s1", "s3", "ux", "uy", "u"};
-  return colours;
-}
-
 namespace {
 
-// ---------------------------------------------------------------------------------------
-// What to draw, checked before anything is computed or written.
-
-struct Layers {
-  bool regions = false, plastic = false, prepass = false, zones = false, blocks = false, joints = false, cracks = false,
-       stress = false, bolts = false;
-};
-
-std::string join(const std::vector<std::string>& items) {
-  std::string out;
-  for (const auto& item : items) out += (out.empty() ? "" : ", ") + item;
-  return out;
-}
-
-Layers layers_of(const std::vector<std::string>& show) {
-  const auto& valid = plot_layers();
-  // The flag of each name in plot_layers(), in the same order.
-  constexpr std::array kFlags{&Layers::regions, &Layers::plastic, &Layers::prepass,
-                              &Layers::zones,   &Layers::blocks,  &Layers::joints,
-                              &Layers::cracks,  &Layers::stress,  &Layers::bolts};
-  static_assert(kFlags.size() == 9, "one flag per name in plot_layers()");
-  if (show.empty()) fail("show lists no layers: use any of {}", join(valid));
-  Layers layers;
-  for (const auto& name : show) {
-    const auto it = std::find(valid.begin(), valid.end(), name);
-    if (it == valid.end())
-      fail("unknown layer '{}'{}: layers are {}", name, did_you_mean(name, valid), join(valid));
-    layers.*kFlags[static_cast<std::size_t>(it - valid.begin())] = true;
-  }
-  return layers;
-}
-
-void check_size(int width, int height) {
-  for (const int size : {width, height})
-    if (size < kPlotMinSize || size > kPlotMaxSize)
-      fail("size {{{}, {}}} is out of range: width and height must be {} to {}", width, height,
-           kPlotMinSize, kPlotMaxSize);
-}
+// Sizes in units of the canvas scale.
+constexpr double kMargin = 14.0, kTitleHeight = 30.0, kFooterHeight = 30.0;
+constexpr double kTitleFont = 16.0, kLabelFont = 11.0, kNoteFont = 10.0;
 
 // ---------------------------------------------------------------------------------------
-// Geometry gathered from the model, in metres.
+// The scene's parts on the canvas.
 
-// Polylines stroked together: one cairo path per style, never one stroke per segment.
-struct Polylines {
-  std::vector<Vec2> points;
-  std::vector<std::size_t> starts;  // index in `points` where each polyline begins
-  void begin(Vec2 p) {
-    starts.push_back(points.size());
-    points.push_back(p);
-  }
-  void add(Vec2 p) { points.push_back(p); }
-  bool empty() const { return starts.empty(); }
-};
-
-// How a block edge is drawn. Tiers are in drawing order: later ones lie on top.
-enum class Tier : std::uint8_t { potential, region, joint, crack, boundary };
-
-struct EdgeClass {
-  Tier tier = Tier::boundary;
-  int set = -1;  // joint set, else -1
-  bool glued = false;
-  auto operator<=>(const EdgeClass&) const = default;
-};
-
-EdgeClass class_of(const EdgeOrigin& origin) {
-  switch (origin.kind) {
-    case EdgeKind::potential:
-      return {Tier::potential, -1, false};
-    case EdgeKind::region:
-      return {Tier::region, -1, origin.glued};
-    case EdgeKind::joint:
-      return {Tier::joint, origin.set, origin.glued};
-    case EdgeKind::crack:
-      return {Tier::crack, -1, origin.glued};
-    case EdgeKind::boundary:
-      break;
-  }
-  return {Tier::boundary, -1, false};
-}
-
-// An undirected edge, identical for both blocks that share it (vertices are shared exactly).
-struct EdgeKey {
-  Vec2 a, b;
-  bool operator==(const EdgeKey& o) const { return a == o.a && b == o.b; }
-};
-
-EdgeKey key_of(Vec2 p, Vec2 q) {
-  const bool ordered = p.x < q.x || (p.x == q.x && p.y <= q.y);
-  return ordered ? EdgeKey{p, q} : EdgeKey{q, p};
-}
-
-struct EdgeKeyHash {
-  std::size_t operator()(const EdgeKey& k) const {
-    std::size_t h = 0;
-    for (const double v : {k.a.x, k.a.y, k.b.x, k.b.y})
-      h = (h ^ std::hash<double>{}(v)) * 1099511628211ull;
-    return h;
-  }
-};
-
-using Classify = std::function<std::optional<EdgeClass>(const EdgeOrigin&)>;
-
-// Every block edge once, sorted into classes; consecutive edges of one class along a ring are
-// chained so that dash patterns run on across vertices.
-std::map<EdgeClass, Polylines> collect_edges(const BlockSet& set, const Classify& classify) {
-  std::map<EdgeClass, Polylines> out;
-  std::unordered_set<EdgeKey, EdgeKeyHash> seen;
-  auto walk = [&](const Ring& ring) {
-    const std::size_t n = ring.points.size();
-    if (n < 2 || ring.edges.size() != n) return;
-    Polylines* chain = nullptr;  // the class whose last polyline ends at the current vertex
-    for (std::size_t i = 0; i < n; ++i) {
-      const Vec2 a = ring.points[i], b = ring.points[(i + 1) % n];
-      const auto cls = classify(ring.edges[i]);
-      if (!cls || !seen.insert(key_of(a, b)).second) {
-        chain = nullptr;
-        continue;
-      }
-      Polylines& lines = out[*cls];
-      if (chain != &lines) lines.begin(a);
-      lines.add(b);
-      chain = &lines;
-    }
-  };
-  for (const Block& block : set.blocks) {
-    walk(block.outer);
-    for (const Ring& hole : block.holes) walk(hole);
-  }
-  return out;
-}
-
-// Each zone edge once (interior edges are shared by two zones).
-Polylines zone_edges(const Mesh& mesh) {
-  std::vector<std::uint64_t> keys;
-  keys.reserve(mesh.zone_gp.size() * 3);
-  const auto gp_count = static_cast<std::uint64_t>(mesh.gp_position.size());
-  for (const auto& zone : mesh.zone_gp) {
-    for (int i = 0; i < 3; ++i) {
-      const auto a = static_cast<std::uint64_t>(zone[i]);
-      const auto b = static_cast<std::uint64_t>(zone[(i + 1) % 3]);
-      if (a >= gp_count || b >= gp_count) continue;
-      keys.push_back(std::min(a, b) << 32 | std::max(a, b));
-    }
-  }
-  std::sort(keys.begin(), keys.end());
-  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-  Polylines lines;
-  lines.points.reserve(keys.size() * 2);
-  lines.starts.reserve(keys.size());
-  for (const std::uint64_t key : keys) {
-    lines.begin(mesh.gp_position[key >> 32]);
-    lines.add(mesh.gp_position[key & 0xffffffffu]);
-  }
-  return lines;
-}
-
-// Bounding box of every block's outer ring [m]; nullopt when there are no blocks.
-std::optional<Box> extent_of(const BlockSet& set) {
-  std::optional<Box> box;
-  for (const Block& block : set.blocks) {
-    for (const Vec2 p : block.outer.points) {
-      if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
-      if (!box) box = Box{p.x, p.x, p.y, p.y};
-      box->x0 = std::min(box->x0, p.x);
-      box->x1 = std::max(box->x1, p.x);
-      box->y0 = std::min(box->y0, p.y);
-      box->y1 = std::max(box->y1, p.y);
-    }
-  }
-  return box;
-}
-
-// ---------------------------------------------------------------------------------------
-// Styles. Widths and dashes are in units of the canvas scale (about a pixel at 800 px).
-
-struct Rgb {
-  double r, g, b;
-};
-
-constexpr Rgb rgb(unsigned hex) {
-  return {((hex >> 16) & 0xff) / 255.0, ((hex >> 8) & 0xff) / 255.0, (hex & 0xff) / 255.0};
-}
-
-struct Pen {
-  Rgb colour;
-  double width;
-  std::vector<double> dash;  // on, off, ...; empty: solid
-  bool round = true;         // round caps and joins; butt is much faster for many segments
-};
-
-// Qualitative colours for joint sets (no red: red means crack).
-constexpr std::array kSetColours{rgb(0x1f77b4), rgb(0xff7f0e), rgb(0x2ca02c), rgb(0x9467bd),
-                                 rgb(0x8c564b), rgb(0xe377c2), rgb(0xbcbd22), rgb(0x17becf)};
-// Light fills for regions, neighbours told apart.
-constexpr std::array kRegionColours{rgb(0xb3cde3), rgb(0xfbb4ae), rgb(0xccebc5), rgb(0xdecbe4),
-                                    rgb(0xfed9a6), rgb(0xffffcc), rgb(0xe5d8bd), rgb(0xfddaec)};
-// Yielded zones (plastic and prepass layers): shear, tension, both.
-constexpr std::array kYieldColours{rgb(0xf4a582), rgb(0x92c5de), rgb(0xc2a5cf)};
-constexpr Rgb kInk = rgb(0x202020);
-constexpr Rgb kCrack = rgb(0xd62728);
-constexpr Rgb kShearCrack = rgb(0x1a35d4);  // deeper than joint set 1's blue, and thicker
-
-Rgb set_colour(int set) {
-  return kSetColours[static_cast<std::size_t>(std::max(set, 0)) % kSetColours.size()];
-}
-
-// Joints coloured by set, cracks red, glued edges dashed, potential cracks dotted.
-Pen pen_of(const EdgeClass& cls) {
-  Pen pen{rgb(0x000000), 2.4, {}};  // boundary
-  switch (cls.tier) {
-    case Tier::potential:
-      pen = {rgb(0x8c8c8c), 0.7, {1.5, 2.0}};
-      break;
-    case Tier::region:
-      pen = {rgb(0x303030), 1.2, {}};
-      break;
-    case Tier::joint:
-      pen = {set_colour(cls.set), 1.3, {}};
-      break;
-    case Tier::crack:
-      pen = {kCrack, 1.8, {}};
-      break;
-    case Tier::boundary:
-      return pen;
-  }
-  if (cls.glued) pen.dash = {6.0, 3.5};
-  return pen;
-}
-
-// Joint sets are numbered from 1 in the order of the jset{} commands.
-std::string label_of(const EdgeClass& cls) {
-  const std::string glued = cls.glued ? ", glued" : "";
-  switch (cls.tier) {
-    case Tier::potential:
-      return "potential crack";
-    case Tier::region:
-      return "region outline" + glued;
-    case Tier::joint:
-      return fmt::format("joint set {}{}", cls.set + 1, glued);
-    case Tier::crack:
-      return "crack" + glued;
-    case Tier::boundary:
-      break;
-  }
-  return "boundary";
-}
-
-// New cracks by how they broke, as in the seed paper's Figure 9: thicker than any edge, so that
-// they read over the dotted potential crack they broke from.
-Pen crack_pen(CrackMode mode) {
-  return {mode == CrackMode::shear ? kShearCrack : kCrack, 3.2, {}};
-}
-
-std::string label_of(CrackMode mode, std::size_t count) {
-  return fmt::format("{} crack ({})", mode == CrackMode::shear ? "shear" : "tension", count);
-}
-
-const Pen kCompressionTick{rgb(0x202020), 0.9, {}, false};
-const Pen kTensionTick{rgb(0xd62728), 0.9, {}, false};
-const Pen kBoltTension{rgb(0xb2182b), 2.2, {}};
-const Pen kBoltCompression{rgb(0x2166ac), 2.2, {}};
-const Pen kBoltOut{rgb(0x9a9a9a), 1.6, {3.0, 2.0}};
-const Pen kBlockPen{rgb(0x404040), 0.8, {}, false};
-const Pen kZonePen{rgb(0xc4c4c4), 0.45, {}, false};
-
-// ---------------------------------------------------------------------------------------
-// Canvas: the cairo surface, the layout of its parts and the model-to-device mapping.
-
-struct Rect {
-  double x, y, w, h;  // device units, y down
-};
-
-// Model metres to device units: uniform scale, y up.
+// Scene metres to device units: uniform scale, y up.
 struct View {
   Box box{};
   double k = 1.0;             // device units per metre
@@ -313,152 +26,100 @@ struct View {
   Vec2 operator()(Vec2 p) const { return {ox + k * (p.x - box.x0), oy + k * (box.y1 - p.y)}; }
 };
 
-class Painter {
- public:
-  Painter(cairo_t* cr, double scale) : cr_(cr), s_(scale) {}
-  double s() const { return s_; }
-  cairo_t* cr() const { return cr_; }
-
-  void set_pen(const Pen& pen) {
-    cairo_set_source_rgb(cr_, pen.colour.r, pen.colour.g, pen.colour.b);
-    cairo_set_line_width(cr_, pen.width * s_);
-    std::vector<double> dash = pen.dash;
-    for (double& d : dash) d *= s_;
-    cairo_set_dash(cr_, dash.data(), static_cast<int>(dash.size()), 0.0);
-    const bool round = pen.round && dash.empty();
-    cairo_set_line_cap(cr_, round ? CAIRO_LINE_CAP_ROUND : CAIRO_LINE_CAP_BUTT);
-    cairo_set_line_join(cr_, round ? CAIRO_LINE_JOIN_ROUND : CAIRO_LINE_JOIN_BEVEL);
-  }
-
-  // One path, one stroke for the whole batch.
-  void stroke(const Polylines& lines, const View& view, const Pen& pen) {
-    if (lines.empty()) return;
-    cairo_new_path(cr_);
-    for (std::size_t i = 0; i < lines.starts.size(); ++i) {
-      const std::size_t end =
-          i + 1 < lines.starts.size() ? lines.starts[i + 1] : lines.points.size();
-      const Vec2 a = view(lines.points[lines.starts[i]]);
-      cairo_move_to(cr_, a.x, a.y);
-      for (std::size_t j = lines.starts[i] + 1; j < end; ++j) {
-        const Vec2 b = view(lines.points[j]);
-        cairo_line_to(cr_, b.x, b.y);
-      }
+// One path, one stroke for the whole batch.
+void stroke(Canvas& p, const Polylines& lines, const View& view, const Pen& pen) {
+  if (lines.empty()) return;
+  cairo_t* cr = p.cr();
+  cairo_new_path(cr);
+  for (std::size_t i = 0; i < lines.starts.size(); ++i) {
+    const std::size_t end = i + 1 < lines.starts.size() ? lines.starts[i + 1] : lines.points.size();
+    const Vec2 a = view(lines.points[lines.starts[i]]);
+    cairo_move_to(cr, a.x, a.y);
+    for (std::size_t j = lines.starts[i] + 1; j < end; ++j) {
+      const Vec2 b = view(lines.points[j]);
+      cairo_line_to(cr, b.x, b.y);
     }
-    set_pen(pen);
-    cairo_stroke(cr_);
   }
+  p.pen(pen);
+  cairo_stroke(cr);
+}
 
-  // Many thin segments (zones): on a raster surface, filled as quads with coarser
-  // antialiasing, which rasterizes about twice as fast as a stroke and looks the same.
-  void hairlines(const Polylines& lines, const View& view, const Pen& pen) {
-    const bool raster = cairo_surface_get_type(cairo_get_target(cr_)) == CAIRO_SURFACE_TYPE_IMAGE;
-    if (!raster || !pen.dash.empty()) {
-      stroke(lines, view, pen);
-      return;
+// Many thin segments (zones): on a raster surface, filled as quads with coarser antialiasing,
+// which rasterizes about twice as fast as a stroke and looks the same.
+void hairlines(Canvas& p, const Polylines& lines, const View& view, const Pen& pen) {
+  cairo_t* cr = p.cr();
+  const bool raster = cairo_surface_get_type(cairo_get_target(cr)) == CAIRO_SURFACE_TYPE_IMAGE;
+  if (!raster || !pen.dash.empty()) {
+    stroke(p, lines, view, pen);
+    return;
+  }
+  if (lines.empty()) return;
+  const double half = 0.5 * pen.width * p.s();
+  cairo_new_path(cr);
+  for (std::size_t i = 0; i < lines.starts.size(); ++i) {
+    const std::size_t end = i + 1 < lines.starts.size() ? lines.starts[i + 1] : lines.points.size();
+    for (std::size_t j = lines.starts[i]; j + 1 < end; ++j) {
+      const Vec2 a = view(lines.points[j]), b = view(lines.points[j + 1]);
+      const double length = norm(b - a);
+      if (!(length > 0)) continue;
+      const Vec2 n{-(b.y - a.y) * half / length, (b.x - a.x) * half / length};
+      // Every quad turns the same way, so overlaps never cancel under the winding rule.
+      cairo_move_to(cr, a.x + n.x, a.y + n.y);
+      cairo_line_to(cr, b.x + n.x, b.y + n.y);
+      cairo_line_to(cr, b.x - n.x, b.y - n.y);
+      cairo_line_to(cr, a.x - n.x, a.y - n.y);
+      cairo_close_path(cr);
     }
-    if (lines.empty()) return;
-    const double half = 0.5 * pen.width * s_;
-    cairo_new_path(cr_);
-    for (std::size_t i = 0; i < lines.starts.size(); ++i) {
-      const std::size_t end =
-          i + 1 < lines.starts.size() ? lines.starts[i + 1] : lines.points.size();
-      for (std::size_t j = lines.starts[i]; j + 1 < end; ++j) {
-        const Vec2 a = view(lines.points[j]), b = view(lines.points[j + 1]);
-        const double length = norm(b - a);
-        if (!(length > 0)) continue;
-        const Vec2 n{-(b.y - a.y) * half / length, (b.x - a.x) * half / length};
-        // Every quad turns the same way, so overlaps never cancel under the winding rule.
-        cairo_move_to(cr_, a.x + n.x, a.y + n.y);
-        cairo_line_to(cr_, b.x + n.x, b.y + n.y);
-        cairo_line_to(cr_, b.x - n.x, b.y - n.y);
-        cairo_line_to(cr_, a.x - n.x, a.y - n.y);
-        cairo_close_path(cr_);
-      }
+  }
+  p.colour(pen.colour);
+  cairo_set_fill_rule(cr, CAIRO_FILL_RULE_WINDING);
+  cairo_set_antialias(cr, CAIRO_ANTIALIAS_FAST);
+  cairo_fill(cr);
+  cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
+}
+
+// The polygons as one path, filled, then outlined: an outline in the fill's own colour leaves no
+// hairline gaps between neighbours.
+void draw_fill(Canvas& p, const Scene::Fill& fill, const View& view) {
+  if (fill.polygons.empty()) return;
+  cairo_t* cr = p.cr();
+  cairo_new_path(cr);
+  for (const Polygon& polygon : fill.polygons) {
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+      const Vec2 d = view(polygon[i]);
+      if (i == 0)
+        cairo_move_to(cr, d.x, d.y);
+      else
+        cairo_line_to(cr, d.x, d.y);
     }
-    cairo_set_source_rgb(cr_, pen.colour.r, pen.colour.g, pen.colour.b);
-    cairo_set_fill_rule(cr_, CAIRO_FILL_RULE_WINDING);
-    cairo_set_antialias(cr_, CAIRO_ANTIALIAS_FAST);
-    cairo_fill(cr_);
-    cairo_set_antialias(cr_, CAIRO_ANTIALIAS_DEFAULT);
+    cairo_close_path(cr);
   }
+  p.colour(fill.colour, fill.opacity);
+  cairo_fill_preserve(cr);
+  p.pen(fill.outline);
+  cairo_stroke(cr);
+}
 
-  void polygon_path(const Polygon& polygon, const View& view) {
-    cairo_new_path(cr_);
-    for (const Vec2 p : polygon) {
-      const Vec2 d = view(p);
-      cairo_line_to(cr_, d.x, d.y);
-    }
-    cairo_close_path(cr_);
+void draw_labels(Canvas& p, const std::vector<Scene::Label>& labels, const View& view) {
+  for (const Scene::Label& label : labels) {
+    const Box& box = label.extent;
+    // A label much larger than what it names would only hide the picture.
+    if (p.text_width(label.text, kLabelFont) > 2.0 * view.k * (box.x1 - box.x0) ||
+        kLabelFont * p.s() > 2.0 * view.k * (box.y1 - box.y0))
+      continue;
+    const Vec2 c = view(label.at);
+    p.text(label.text, c.x, c.y, Align::centre, {.size = kLabelFont, .halo = true});
   }
-
-  enum class Align { left, centre, right };
-
-  double text_width(std::string_view text, double size, bool bold = false) {
-    font(size, bold);
-    cairo_text_extents_t ext;
-    cairo_text_extents(cr_, printable(text).c_str(), &ext);
-    return ext.x_advance;
-  }
-
-  // Text whose vertical centre is at y; a white halo keeps it legible over lines. Without a
-  // halo it stays real text in SVG and PDF (selectable, searchable).
-  void text(std::string_view text, double x, double y, double size, Align align, Rgb colour,
-            bool bold = false, bool halo = false) {
-    const std::string str = printable(text);
-    font(size, bold);
-    cairo_text_extents_t ext;
-    cairo_text_extents(cr_, str.c_str(), &ext);
-    cairo_font_extents_t fe;
-    cairo_font_extents(cr_, &fe);
-    double left = x;
-    if (align == Align::centre) left -= 0.5 * ext.x_advance;
-    if (align == Align::right) left -= ext.x_advance;
-    const double baseline = y + 0.5 * (fe.ascent - fe.descent);
-    cairo_new_path(cr_);
-    cairo_move_to(cr_, left, baseline);
-    if (!halo) {
-      cairo_set_source_rgb(cr_, colour.r, colour.g, colour.b);
-      cairo_show_text(cr_, str.c_str());
-      cairo_new_path(cr_);
-      return;
-    }
-    cairo_text_path(cr_, str.c_str());
-    cairo_set_source_rgba(cr_, 1, 1, 1, 0.85);
-    cairo_set_line_width(cr_, 0.25 * size);
-    cairo_set_dash(cr_, nullptr, 0, 0.0);
-    cairo_set_line_join(cr_, CAIRO_LINE_JOIN_ROUND);
-    cairo_stroke_preserve(cr_);
-    cairo_set_source_rgb(cr_, colour.r, colour.g, colour.b);
-    cairo_fill(cr_);
-  }
-
- private:
-  void font(double size, bool bold) {
-    cairo_select_font_face(cr_, "sans-serif", CAIRO_FONT_SLANT_NORMAL,
-                           bold ? CAIRO_FONT_WEIGHT_BOLD : CAIRO_FONT_WEIGHT_NORMAL);
-    cairo_set_font_size(cr_, size);
-  }
-
-  cairo_t* cr_;
-  double s_;
-};
+}
 
 // ---------------------------------------------------------------------------------------
-// The picture's parts.
+// Layout: title, scene, scale bar and legend.
 
-struct LegendEntry {
-  std::string label;
-  Pen pen;
-};
-
-constexpr double kMargin = 14.0, kTitleHeight = 30.0, kFooterHeight = 30.0;
-constexpr double kLegendFont = 11.0, kLegendRow = 18.0, kLegendSwatch = 26.0, kLegendPad = 8.0;
-
-// Where each part goes. Title, model, scale bar and legend form one block centred on the
-// canvas; the legend goes right of the model or below it, whichever leaves the model larger.
+// Where each part goes. Title, scene, scale bar and legend form one block centred on the
+// canvas; the legend goes right of the scene or below it, whichever leaves the scene larger.
 struct Layout {
   View view;
-  Rect model{};   // the model's extent on the canvas
+  Rect area{};    // the scene's box on the canvas
   Rect legend{};  // empty when there is no legend or no room for it
   int legend_columns = 1;
   double title_y = 0.0;   // centre line of the title
@@ -467,32 +128,26 @@ struct Layout {
   bool has_legend() const { return legend.w > 0; }
 };
 
-double legend_column_width(Painter& p, const std::vector<LegendEntry>& entries) {
-  double text = 0.0;
-  for (const auto& e : entries) text = std::max(text, p.text_width(e.label, kLegendFont * p.s()));
-  return (2 * kLegendPad + kLegendSwatch + 6.0) * p.s() + text;
-}
-
 enum class LegendPlace { none, right, below };
 
 struct LegendPlan {
   LegendPlace place = LegendPlace::none;
   double w = 0.0, h = 0.0;  // size of the legend box
   int columns = 1;
-  double k = 0.0;  // the model's scale it leaves [device units per metre]
+  double k = 0.0;  // the scene's scale it leaves [device units per metre]
 };
 
-// Right of the model (one column) or below it (as many columns as fit), whichever leaves the
-// model larger; no legend when either would shrink the model to less than half.
-LegendPlan plan_legend(Painter& p, const std::vector<LegendEntry>& legend, double free_w,
+// Right of the scene (one column) or below it (as many columns as fit), whichever leaves the
+// scene larger; no legend when either would shrink the scene to less than half.
+LegendPlan plan_legend(Canvas& p, const std::vector<LegendEntry>& legend, double free_w,
                        double free_h, double ew, double eh) {
   auto scale = [&](double w, double h) { return w > 0 && h > 0 ? std::min(w / ew, h / eh) : 0.0; };
-  const double s = p.s(), margin = kMargin * s;
+  const double margin = kMargin * p.s();
   LegendPlan none{LegendPlace::none, 0.0, 0.0, 1, scale(free_w, free_h)};
   const auto n = static_cast<int>(legend.size());
   if (n == 0) return none;
-  const double col_w = legend_column_width(p, legend);
-  const auto height = [&](int rows) { return (2 * kLegendPad + kLegendRow * rows) * s; };
+  const double col_w = p.legend_column_width(legend, LegendStyle{});
+  const auto height = [&](int rows) { return p.legend_height(static_cast<std::size_t>(rows)); };
   const int columns = std::clamp(static_cast<int>(free_w / col_w), 1, n);
   const int rows = (n + columns - 1) / columns;
   const LegendPlan right{LegendPlace::right, col_w, height(n), 1,
@@ -503,7 +158,7 @@ LegendPlan plan_legend(Painter& p, const std::vector<LegendEntry>& legend, doubl
   return best.k >= 0.5 * none.k ? best : none;
 }
 
-Layout layout(Painter& p, const Box& box, double width, double height, bool has_title,
+Layout layout(Canvas& p, const Box& box, double width, double height, bool has_title,
               const std::vector<LegendEntry>& legend) {
   const double s = p.s(), margin = kMargin * s;
   const double title_h = has_title ? kTitleHeight * s : 0.0, footer_h = kFooterHeight * s;
@@ -514,53 +169,24 @@ Layout layout(Painter& p, const Box& box, double width, double height, bool has_
       plan_legend(p, legend, width - 2 * margin, height - 2 * margin - title_h - footer_h, ew, eh);
   const bool right = plan.place == LegendPlace::right, below = plan.place == LegendPlace::below;
 
-  // The block of title, model, scale bar and legend, centred on the canvas.
+  // The block of title, scene, scale bar and legend, centred on the canvas.
   const double mw = plan.k * ew, mh = plan.k * eh;
   const double block_w = right ? mw + margin + plan.w : std::max(mw, plan.w);
   const double block_h = title_h + mh + footer_h + (below ? plan.h + 0.5 * margin : 0.0);
   const double x0 = 0.5 * (width - block_w), y0 = 0.5 * (height - block_h);
 
   Layout out;
-  out.model = {right ? x0 : x0 + 0.5 * (block_w - mw), y0 + title_h, mw, mh};
-  if (right) out.legend = {x0 + mw + margin, out.model.y, plan.w, plan.h};
+  out.area = {right ? x0 : x0 + 0.5 * (block_w - mw), y0 + title_h, mw, mh};
+  if (right) out.legend = {x0 + mw + margin, out.area.y, plan.w, plan.h};
   if (below)
-    out.legend = {x0 + 0.5 * (block_w - plan.w), out.model.y + mh + footer_h, plan.w, plan.h};
+    out.legend = {x0 + 0.5 * (block_w - plan.w), out.area.y + mh + footer_h, plan.w, plan.h};
   out.legend_columns = plan.columns;
   out.title_y = y0 + 0.5 * title_h;
-  out.footer_y = out.model.y + mh + 0.5 * footer_h;
-  out.right = right ? out.legend.x + out.legend.w : out.model.x + mw;
-  out.view = View{box, plan.k, out.model.x + 0.5 * (mw - plan.k * (box.x1 - box.x0)),
-                  out.model.y + 0.5 * (mh - plan.k * (box.y1 - box.y0))};
+  out.footer_y = out.area.y + mh + 0.5 * footer_h;
+  out.right = right ? out.legend.x + out.legend.w : out.area.x + mw;
+  out.view = View{box, plan.k, out.area.x + 0.5 * (mw - plan.k * (box.x1 - box.x0)),
+                  out.area.y + 0.5 * (mh - plan.k * (box.y1 - box.y0))};
   return out;
-}
-
-void draw_legend(Painter& p, const Layout& lay, const std::vector<LegendEntry>& entries) {
-  cairo_t* cr = p.cr();
-  const double s = p.s();
-  const Rect& r = lay.legend;
-  cairo_new_path(cr);
-  cairo_rectangle(cr, r.x, r.y, r.w, r.h);
-  cairo_set_source_rgb(cr, 1, 1, 1);
-  cairo_fill_preserve(cr);
-  p.set_pen({rgb(0xb0b0b0), 0.8, {}});
-  cairo_stroke(cr);
-  const std::size_t columns = static_cast<std::size_t>(lay.legend_columns);
-  const std::size_t rows = (entries.size() + columns - 1) / columns;
-  const double col_w = r.w / static_cast<double>(columns);
-  for (std::size_t i = 0; i < entries.size(); ++i) {
-    const double row = static_cast<double>(i % rows), col = static_cast<double>(i / rows);
-    const double y = r.y + (kLegendPad + kLegendRow * (row + 0.5)) * s;
-    const double x = r.x + col * col_w + kLegendPad * s;
-    cairo_new_path(cr);
-    cairo_move_to(cr, x, y);
-    cairo_line_to(cr, x + kLegendSwatch * s, y);
-    Pen swatch = entries[i].pen;
-    swatch.width = std::max(swatch.width, 1.0);  // hairlines would vanish in the legend
-    p.set_pen(swatch);
-    cairo_stroke(cr);
-    p.text(entries[i].label, x + (kLegendSwatch + 6.0) * s, y, kLegendFont * s,
-           Painter::Align::left, kInk);
-  }
 }
 
 // The largest 1, 2 or 5 x 10^k not above `target` [m].
@@ -577,436 +203,71 @@ std::string length_label(double metres) {
   return fmt::format("{:g} m", metres);
 }
 
-// A bar about a fifth of the model's width, of a round length; returns its right end.
-double draw_scale_bar(Painter& p, const Layout& lay) {
+// A bar about a fifth of the scene's width, of a round length; returns its label's right end.
+double draw_scale_bar(Canvas& p, const Layout& lay) {
   const double s = p.s();
-  const double length = round_length(0.2 * lay.model.w / lay.view.k);
-  if (!std::isfinite(length) || length <= 0) return lay.model.x;
+  const double length = round_length(0.2 * lay.area.w / lay.view.k);
+  if (!std::isfinite(length) || length <= 0) return lay.area.x;
   const double w = length * lay.view.k, h = 5.0 * s;
-  const double x = lay.model.x, y = lay.footer_y - 0.5 * h;
-  cairo_t* cr = p.cr();
+  const double x = lay.area.x, y = lay.footer_y - 0.5 * h;
   for (int half = 0; half < 2; ++half) {
-    cairo_new_path(cr);
-    cairo_rectangle(cr, x + 0.5 * w * half, y, 0.5 * w, h);
+    p.rectangle({x + 0.5 * w * half, y, 0.5 * w, h});
     const double shade = half == 0 ? 0.12 : 1.0;
-    cairo_set_source_rgb(cr, shade, shade, shade);
-    cairo_fill(cr);
+    p.colour({shade, shade, shade});
+    cairo_fill(p.cr());
   }
-  cairo_new_path(cr);
-  cairo_rectangle(cr, x, y, w, h);
-  p.set_pen({kInk, 0.8, {}});
-  cairo_stroke(cr);
+  p.rectangle({x, y, w, h});
+  p.pen({kInk, 0.8, {}});
+  cairo_stroke(p.cr());
   const std::string label = length_label(length);
-  const double size = 11.0 * s, label_x = x + w + 6.0 * s;
-  p.text(label, label_x, lay.footer_y, size, Painter::Align::left, kInk);
-  return label_x + p.text_width(label, size);
-}
-
-// The new cracks of one mode, each its section's segment [m].
-struct CrackBatch {
-  CrackMode mode = CrackMode::none;
-  Polylines lines;  // one polyline per crack
-};
-
-// Drawing and legend order.
-constexpr std::array kCrackModes{CrackMode::tension, CrackMode::shear};
-
-// A crack is drawn as the section that broke: `length` along `angle` through its midpoint.
-void add_section(Polylines& lines, const CrackView& crack) {
-  const double a = crack.angle * std::numbers::pi / 180.0;
-  const Vec2 half = 0.5 * crack.length * Vec2{std::cos(a), std::sin(a)};
-  lines.begin(crack.position - half);
-  lines.add(crack.position + half);
-}
-
-// The broken potential-crack sections by mode; modes without cracks are left out.
-std::vector<CrackBatch> new_cracks_of(const Model& model) {
-  std::vector<CrackBatch> out;
-  for (const CrackMode mode : kCrackModes) {
-    CrackBatch batch{mode, {}};
-    for (int id = 0; id < model.crack_count(); ++id)
-      if (model.crack(id).mode == mode) add_section(batch.lines, model.crack(id));
-    if (!batch.lines.empty()) out.push_back(std::move(batch));
-  }
-  return out;
-}
-
-// Everything the picture needs from the model, gathered before any file is opened.
-struct Scene {
-  std::string title;
-  Box box{};
-  std::size_t blocks = 0;
-  std::optional<std::size_t> zones;  // when the zones layer is shown
-  std::vector<RegionDef> regions;
-  Polylines zone_lines;
-  Polylines block_lines;
-  std::map<EdgeClass, Polylines> edges;  // joints and cracks layers
-  std::vector<CrackBatch> new_cracks;    // cracks layer
-  // plastic and prepass layers: zones that yielded in shear only, tension only, both.
-  std::array<std::vector<Polygon>, 3> yielded;
-  std::string yield_source;              // "plastic" or "prepass", for the legend
-  // colour: zones in place by band, lowest first, and each band's legend line
-  std::vector<std::vector<Polygon>> bands;
-  std::vector<std::string> band_labels;
-  // stress layer: ticks in compression and in tension, and the largest magnitude of each [Pa]
-  Polylines compression_ticks, tension_ticks;
-  double max_compression = 0.0, max_tension = 0.0;
-  // bolts layer: segments in tension, compression, out of service; largest force of each [N/m]
-  Polylines bolts_tension, bolts_compression, bolts_out;
-  double max_bolt_tension = 0.0, max_bolt_compression = 0.0;
-};
-
-// Zones in place: not excavated, with a material.
-bool in_place(const ZoneView& zone) { return zone.excavated == 0 && !zone.material.empty(); }
-
-Polygon triangle_of(const Mesh& mesh, int zone) {
-  Polygon triangle;
-  for (int gp : mesh.zone_gp[static_cast<std::size_t>(zone)]) triangle.push_back(mesh.gp_position[static_cast<std::size_t>(gp)]);
-  return triangle;
-}
-
-// Zones that yielded, as the seed's Figure 8 shows them: in the model's own run (plastic: now
-// or earlier) or in the last prepass{} (over all its stages), filled by mode.
-void gather_yielded(const Model& model, bool from_prepass, Scene& scene) {
-  const Mesh& mesh = model.mesh();
-  const std::vector<std::uint8_t>& prepass = model.prepass_yield();
-  if (from_prepass && prepass.size() != mesh.zone_gp.size())
-    fail("show = \"prepass\": no prepass{{}} result for this mesh (run prepass{{}} first)");
-  scene.yield_source = from_prepass ? "prepass" : "plastic";
-  for (int z = 0; z < static_cast<int>(mesh.zone_gp.size()); ++z) {
-    const std::uint8_t bits = from_prepass ? prepass[static_cast<std::size_t>(z)] : model.zone_view(z).state;
-    const bool shear = bits & (kShearNow | kShearPast), tension = bits & (kTensionNow | kTensionPast);
-    if (!shear && !tension) continue;
-    scene.yielded[shear && tension ? 2 : shear ? 0 : 1].push_back(triangle_of(mesh, z));
-  }
-}
-
-// An SI value in engineering notation, short: "-1.25 MPa", "3.4 mm".
-std::string with_unit(double value, const char* unit) {
-  const bool metres = std::string_view(unit) == "m";
-  const double a = std::abs(value);
-  if (metres) {
-    if (a != 0 && a < 0.01) return fmt::format("{:.3g} mm", value * 1e3);
-    return fmt::format("{:.3g} m", value);
-  }
-  if (a >= 1e6) return fmt::format("{:.3g} MPa", value * 1e-6);
-  if (a >= 1e3) return fmt::format("{:.3g} kPa", value * 1e-3);
-  return fmt::format("{:.3g} Pa", value);
-}
-
-constexpr int kBands = 8;
-// Viridis at 8 steps: dark blue (lowest) to yellow (highest), readable in grey.
-constexpr std::array<Rgb, kBands> kBandColours{rgb(0x440154), rgb(0x46327e), rgb(0x365c8d), rgb(0x277f8e),
-                                               rgb(0x1fa187), rgb(0x4ac16d), rgb(0xa0da39), rgb(0xfde725)};
-
-// Zones in place by `quantity` in kBands equal bands from its least to its largest value.
-void gather_bands(const Model& model, const std::string& quantity, Scene& scene) {
-  const Mesh& mesh = model.mesh();
-  if (mesh.zone_count() == 0) fail("colour = \"{}\": the model has no zones (zone{{}} first)", quantity);
-  const bool displacement = quantity == "ux" || quantity == "uy" || quantity == "u";
-  std::vector<int> zones;
-  std::vector<double> values;
-  for (int z = 0; z < mesh.zone_count(); ++z) {
-    const ZoneView zone = model.zone_view(z);
-    if (!in_place(zone)) continue;
-    double value = 0.0;
-    if (displacement) {
-      for (int gp : mesh.zone_gp[static_cast<std::size_t>(z)]) {
-        const Vec2 u = model.gridpoint(gp).u;
-        value += (quantity == "ux" ? u.x : quantity == "uy" ? u.y : norm(u)) / 3.0;
-      }
-    } else {
-      const std::map<std::string_view, double> stress{{"sxx", zone.sxx}, {"syy", zone.syy}, {"sxy", zone.sxy},
-                                                      {"szz", zone.szz}, {"s1", zone.s1},   {"s3", zone.s3}};
-      value = stress.at(quantity);
-    }
-    zones.push_back(z);
-    values.push_back(value);
-  }
-  if (zones.empty()) fail("colour = \"{}\": no zone is in place to colour", quantity);
-  const auto [low, high] = std::minmax_element(values.begin(), values.end());
-  const double lo = *low, width = (*high - *low) / kBands;
-  const char* unit = displacement ? "m" : "Pa";
-  scene.bands.assign(kBands, {});
-  for (std::size_t i = 0; i < zones.size(); ++i) {
-    const int band = width > 0 ? std::clamp(static_cast<int>((values[i] - lo) / width), 0, kBands - 1) : 0;
-    scene.bands[static_cast<std::size_t>(band)].push_back(triangle_of(mesh, zones[i]));
-  }
-  for (int b = kBands - 1; b >= 0; --b)  // the legend reads from the highest down
-    scene.band_labels.push_back(width > 0 ? fmt::format("{}: {} to {}", quantity, with_unit(lo + b * width, unit),
-                                                        with_unit(lo + (b + 1) * width, unit))
-                                          : fmt::format("{}: {}", quantity, with_unit(lo, unit)));
-}
-
-// Principal stress ticks through each zone's centroid, of length in proportion to magnitude: the
-// largest magnitude anywhere spans about the zone's width.
-void gather_stress(const Model& model, Scene& scene) {
-  const Mesh& mesh = model.mesh();
-  std::vector<ZoneView> zones;
-  double largest = 0.0;
-  for (int z = 0; z < mesh.zone_count(); ++z) {
-    ZoneView zone = model.zone_view(z);
-    if (!in_place(zone)) continue;
-    largest = std::max({largest, std::abs(zone.s1), std::abs(zone.s3)});
-    zones.push_back(std::move(zone));
-  }
-  if (zones.empty() || !(largest > 0)) return;
-  for (const ZoneView& zone : zones) {
-    const double tick = 1.6 * std::sqrt(mesh.zone_area(zone.id));  // about its zone across, graded as the mesh
-    // The direction of the algebraically larger principal stress s3; s1 is at right angles to it.
-    const double angle = 0.5 * std::atan2(2.0 * zone.sxy, zone.sxx - zone.syy);
-    const Vec2 d3{std::cos(angle), std::sin(angle)}, d1{-d3.y, d3.x};
-    for (const auto& [value, dir] : {std::pair{zone.s1, d1}, std::pair{zone.s3, d3}}) {
-      const double half = 0.5 * tick * std::abs(value) / largest;
-      if (!(half > 0)) continue;
-      Polylines& lines = value < 0 ? scene.compression_ticks : scene.tension_ticks;
-      lines.begin(zone.centroid - half * dir);
-      lines.add(zone.centroid + half * dir);
-      (value < 0 ? scene.max_compression : scene.max_tension) =
-          std::max(value < 0 ? scene.max_compression : scene.max_tension, std::abs(value));
-    }
-  }
-}
-
-void gather_bolts(const Model& model, Scene& scene) {
-  for (int b = 0; b < model.bolt_count(); ++b) {
-    const BoltView bolt = model.bolt(b);
-    for (const BoltSegmentView& seg : bolt.segments) {
-      const bool out = bolt.removed || seg.state == "broken" || seg.state == "removed";
-      Polylines& lines = out ? scene.bolts_out : seg.force >= 0 ? scene.bolts_tension : scene.bolts_compression;
-      lines.begin(seg.a);
-      lines.add(seg.b);
-      if (out) continue;
-      double& largest = seg.force >= 0 ? scene.max_bolt_tension : scene.max_bolt_compression;
-      largest = std::max(largest, std::abs(seg.force));
-    }
-  }
-}
-
-Scene gather(Model& model, const Layers& layers, const std::string& colour) {
-  Scene scene;
-  scene.title = model.title();
-  const BlockSet& set = model.blocks();
-  const auto box = extent_of(set);
-  if (!box) fail("nothing to plot: the model has no blocks (add a block{{}} first)");
-  scene.box = *box;
-  scene.blocks = set.blocks.size();
-  if (layers.regions) scene.regions = model.regions();
-  if (layers.zones) {
-    const Mesh& mesh = model.mesh();
-    scene.zones = mesh.zone_gp.size();
-    scene.zone_lines = zone_edges(mesh);
-  }
-  // Edges the joints or cracks layer restyles are left out of the neutral block outlines,
-  // so that dashes are not filled in underneath.
-  const bool joints = layers.joints, cracks = layers.cracks;
-  const Classify neutral = [&](const EdgeOrigin& o) -> std::optional<EdgeClass> {
-    if (joints || (cracks && o.kind == EdgeKind::crack)) return std::nullopt;
-    return EdgeClass{};
-  };
-  const Classify styled = [&](const EdgeOrigin& o) -> std::optional<EdgeClass> {
-    if (!joints && o.kind != EdgeKind::crack) return std::nullopt;
-    return class_of(o);
-  };
-  if (layers.blocks) scene.block_lines = std::move(collect_edges(set, neutral)[EdgeClass{}]);
-  if (joints || cracks) scene.edges = collect_edges(set, styled);
-  if (cracks) scene.new_cracks = new_cracks_of(model);
-  if (layers.plastic || layers.prepass) gather_yielded(model, layers.prepass, scene);
-  if (!colour.empty()) gather_bands(model, colour, scene);
-  if (layers.stress) gather_stress(model, scene);
-  if (layers.bolts) gather_bolts(model, scene);
-  return scene;
-}
-
-// The edge styles drawn (block outlines and zones explain themselves), then the new cracks
-// with their counts.
-std::vector<LegendEntry> legend_of(const Scene& scene) {
-  // Boundary, joint sets in order, cracks, region outlines, potential cracks.
-  auto order = [](Tier tier) {
-    constexpr std::array kOrder{4, 3, 1, 2, 0};  // position in the legend, by tier
-    return kOrder[static_cast<std::size_t>(tier)];
-  };
-  std::vector<EdgeClass> classes;
-  for (const auto& [cls, lines] : scene.edges)
-    if (!lines.empty()) classes.push_back(cls);
-  std::stable_sort(classes.begin(), classes.end(), [&](const EdgeClass& a, const EdgeClass& b) {
-    return order(a.tier) < order(b.tier);
-  });
-  std::vector<LegendEntry> entries;
-  for (const EdgeClass& cls : classes) entries.push_back({label_of(cls), pen_of(cls)});
-  for (const CrackBatch& batch : scene.new_cracks)
-    entries.push_back({label_of(batch.mode, batch.lines.starts.size()), crack_pen(batch.mode)});
-  for (std::size_t i = 0; i < scene.band_labels.size(); ++i)
-    entries.push_back({scene.band_labels[i], {kBandColours[scene.band_labels.size() - 1 - i], 6.0, {}}});
-  if (!scene.compression_ticks.empty())
-    entries.push_back({"principal stress, compression (largest " + with_unit(scene.max_compression, "Pa") + ")",
-                       kCompressionTick});
-  if (!scene.tension_ticks.empty())
-    entries.push_back({"principal stress, tension (largest " + with_unit(scene.max_tension, "Pa") + ")", kTensionTick});
-  if (!scene.bolts_tension.empty())
-    entries.push_back({fmt::format("bolt in tension (largest {:.3g} kN/m)", scene.max_bolt_tension * 1e-3), kBoltTension});
-  if (!scene.bolts_compression.empty())
-    entries.push_back({fmt::format("bolt in compression (largest {:.3g} kN/m)", scene.max_bolt_compression * 1e-3),
-                       kBoltCompression});
-  if (!scene.bolts_out.empty()) entries.push_back({"bolt broken or out of service", kBoltOut});
-  constexpr std::array<const char*, 3> kYieldNames{"shear", "tension", "shear and tension"};
-  for (std::size_t i = 0; i < scene.yielded.size(); ++i)
-    if (!scene.yielded[i].empty())
-      entries.push_back({fmt::format("{}: {} ({} zone{})", scene.yield_source, kYieldNames[i], scene.yielded[i].size(),
-                                     scene.yielded[i].size() == 1 ? "" : "s"),
-                         {kYieldColours[i], 6.0, {}}});
-  return entries;
-}
-
-// Zones filled in one colour as one path, each also outlined in it so that no hairline gaps show
-// between neighbours.
-void fill_zones(Painter& p, const std::vector<Polygon>& triangles, const View& view, Rgb c) {
-  if (triangles.empty()) return;
-  cairo_t* cr = p.cr();
-  cairo_new_path(cr);
-  for (const Polygon& triangle : triangles) {
-    for (std::size_t i = 0; i < triangle.size(); ++i) {
-      const Vec2 d = view(triangle[i]);
-      if (i == 0)
-        cairo_move_to(cr, d.x, d.y);
-      else
-        cairo_line_to(cr, d.x, d.y);
-    }
-    cairo_close_path(cr);
-  }
-  p.set_pen({c, 0.5, {}});
-  cairo_fill_preserve(cr);
-  cairo_stroke(cr);
-}
-
-void draw_bands(Painter& p, const Scene& scene, const View& view) {
-  for (std::size_t b = 0; b < scene.bands.size(); ++b) fill_zones(p, scene.bands[b], view, kBandColours[b]);
-}
-
-void draw_yielded(Painter& p, const Scene& scene, const View& view) {
-  for (std::size_t i = 0; i < scene.yielded.size(); ++i) fill_zones(p, scene.yielded[i], view, kYieldColours[i]);
-}
-
-void draw_regions(Painter& p, const Scene& scene, const View& view) {
-  cairo_t* cr = p.cr();
-  for (std::size_t i = 0; i < scene.regions.size(); ++i) {
-    const Polygon& polygon = scene.regions[i].polygon;
-    if (polygon.size() < 3) continue;
-    const Rgb fill = kRegionColours[i % kRegionColours.size()];
-    p.polygon_path(polygon, view);
-    cairo_set_source_rgba(cr, fill.r, fill.g, fill.b, 0.7);
-    cairo_fill_preserve(cr);
-    p.set_pen({{fill.r * 0.6, fill.g * 0.6, fill.b * 0.6}, 0.8, {}});
-    cairo_stroke(cr);
-  }
-}
-
-void draw_region_labels(Painter& p, const Scene& scene, const View& view) {
-  for (const RegionDef& region : scene.regions) {
-    if (region.polygon.size() < 3 || region.name.empty()) continue;
-    const Box box = bounding_box(region.polygon);
-    const double size = 11.0 * p.s();
-    // A label much larger than its region would only hide the picture.
-    if (p.text_width(region.name, size) > 2.0 * view.k * (box.x1 - box.x0) ||
-        size > 2.0 * view.k * (box.y1 - box.y0))
-      continue;
-    const Vec2 c = view(centroid(region.polygon));
-    p.text(region.name, c.x, c.y, size, Painter::Align::centre, kInk, false, true);
-  }
+  const double label_x = x + w + 6.0 * s;
+  p.text(label, label_x, lay.footer_y, Align::left, {kLabelFont});
+  return label_x + p.text_width(label, kLabelFont);
 }
 
 // The title, shrunk to fit the canvas; left out when it would be too small to read.
-void draw_title(Painter& p, const std::string& title, double width, double y) {
-  const double full = 16.0 * p.s(), room = width - 2 * kMargin * p.s();
-  const double tw = p.text_width(title, full, true);
-  const double size = tw > room ? full * room / tw : full;
-  if (size >= 6.0) p.text(title, 0.5 * width, y, size, Painter::Align::centre, kInk, true);
+void draw_title(Canvas& p, const std::string& title, double width, double y) {
+  const double size = p.fitted_size(title, kTitleFont, width - 2 * kMargin * p.s());
+  if (size * p.s() >= 6.0)
+    p.text(title, 0.5 * width, y, Align::centre, {.size = size, .bold = true});
 }
 
-void draw_counts(Painter& p, const Scene& scene, const Layout& lay, double left_limit) {
-  std::string counts = fmt::format("{} block{}", scene.blocks, scene.blocks == 1 ? "" : "s");
-  if (scene.zones && *scene.zones == 0) counts += ", not zoned";
-  if (scene.zones && *scene.zones > 0)
-    counts += fmt::format(", {} zone{}", *scene.zones, *scene.zones == 1 ? "" : "s");
-  const double size = 10.0 * p.s();
-  if (lay.right - p.text_width(counts, size) < left_limit + 12.0 * p.s()) return;  // no room
-  p.text(counts, lay.right, lay.footer_y, size, Painter::Align::right, rgb(0x707070));
+// The note, right-aligned under the block, when it clears the scale bar.
+void draw_note(Canvas& p, const std::string& note, const Layout& lay, double left_limit) {
+  if (note.empty() || lay.right - p.text_width(note, kNoteFont) < left_limit + 12.0 * p.s()) return;
+  p.text(note, lay.right, lay.footer_y, Align::right, {.size = kNoteFont, .colour = rgb(0x707070)});
 }
 
-void render(cairo_t* cr, const Scene& scene, const Layers& layers, double width, double height) {
-  const double s = std::clamp(std::min(width, height) / 800.0, 0.5, 4.0);
-  Painter p(cr, s);
-  const std::vector<LegendEntry> legend = legend_of(scene);
-  const Layout lay = layout(p, scene.box, width, height, !scene.title.empty(), legend);
+void render(cairo_t* cr, const Scene& scene, double width, double height) {
+  Canvas p(cr, width, height);
+  const Layout lay = layout(p, scene.box, width, height, !scene.title.empty(), scene.legend);
   const View& view = lay.view;
 
-  cairo_set_source_rgb(cr, 1, 1, 1);
-  cairo_paint(cr);
-
-  // The model, clipped to its extent (regions may reach outside the blocks).
+  p.paint(rgb(0xffffff));
+  // The scene, clipped to its box (fills may reach outside it).
   cairo_save(cr);
-  const double pad = 4.0 * s;
-  cairo_rectangle(cr, lay.model.x - pad, lay.model.y - pad, lay.model.w + 2 * pad,
-                  lay.model.h + 2 * pad);
-  cairo_clip(cr);
-  if (layers.regions) draw_regions(p, scene, view);
-  draw_bands(p, scene, view);
-  draw_yielded(p, scene, view);
-  p.hairlines(scene.zone_lines, view, kZonePen);
-  p.stroke(scene.block_lines, view, kBlockPen);
-  for (const auto& [cls, lines] : scene.edges) p.stroke(lines, view, pen_of(cls));
-  for (const CrackBatch& batch : scene.new_cracks)
-    p.stroke(batch.lines, view, crack_pen(batch.mode));
-  p.stroke(scene.compression_ticks, view, kCompressionTick);
-  p.stroke(scene.tension_ticks, view, kTensionTick);
-  p.stroke(scene.bolts_out, view, kBoltOut);
-  p.stroke(scene.bolts_compression, view, kBoltCompression);
-  p.stroke(scene.bolts_tension, view, kBoltTension);
-  if (layers.regions) draw_region_labels(p, scene, view);
+  p.clip(lay.area.grown(4.0 * p.s()));
+  for (const Scene::Fill& f : scene.fills) draw_fill(p, f, view);
+  for (const Scene::Lines& l : scene.lines) {
+    if (l.hairlines)
+      hairlines(p, l.lines, view, l.pen);
+    else
+      stroke(p, l.lines, view, l.pen);
+  }
+  draw_labels(p, scene.labels, view);
   cairo_restore(cr);
 
   if (!scene.title.empty()) draw_title(p, scene.title, width, lay.title_y);
-  if (lay.has_legend()) draw_legend(p, lay, legend);
-  draw_counts(p, scene, lay, draw_scale_bar(p, lay));
+  if (lay.has_legend()) p.legend(lay.legend, scene.legend, {.columns = lay.legend_columns});
+  draw_note(p, scene.note, lay, draw_scale_bar(p, lay));
 }
 
 }  // namespace
 
-#if defined(__SANITIZE_ADDRESS__)
-// fontconfig, loaded by cairo's text, keeps process-lifetime allocations that LeakSanitizer
-// reports at exit; they are not ours and cannot be freed from here.
-extern "C" const char* __lsan_default_suppressions() {
-  return "leak:libfontconfig.so\n";
-}
-#endif
-
-namespace {
-
-void check_window(const std::optional<std::array<double, 4>>& window) {
-  if (!window) return;
-  const auto& [x0, x1, y0, y1] = *window;
-  if (!(std::isfinite(x0) && std::isfinite(x1) && std::isfinite(y0) && std::isfinite(y1) && x0 < x1 && y0 < y1))
-    fail("window must be {{x0, x1, y0, y1}} with x0 < x1 and y0 < y1, got {{{:g}, {:g}, {:g}, {:g}}}", x0, x1, y0,
-         y1);
-}
-
-}  // namespace
-
-void plot(Model& model, const PlotDef& def) {
-  picture_format(def.file);  // checked before anything is computed
-  const Layers layers = layers_of(def.show);
-  check_size(def.width, def.height);
-  check_window(def.window);
-  check_writable(def.file);
-  if (!def.colour.empty()) {
-    const auto& valid = plot_colours();
-    if (std::find(valid.begin(), valid.end(), def.colour) == valid.end())
-      fail("unknown colour quantity '{}'{}: quantities are {}", def.colour, did_you_mean(def.colour, valid), join(valid));
-  }
-  Scene scene = gather(model, layers, def.colour);
-  if (def.window) scene.box = Box{(*def.window)[0], (*def.window)[1], (*def.window)[2], (*def.window)[3]};
-  write_picture(def.file, def.width, def.height, scene.title,
-                [&](cairo_t* cr) { render(cr, scene, layers, def.width, def.height); });
+void plot_scene(const Scene& scene, const std::string& file, int width, int height) {
+  check_size(width, height);
+  write_picture(file, width, height, scene.title,
+                [&](cairo_t* cr) { render(cr, scene, width, height); });
 }
 
 }  // namespace edem

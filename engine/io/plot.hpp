@@ -1,59 +1,68 @@
-// Pictures of a model with cairo: PNG, SVG or PDF chosen by the file's extension.
+// Pictures of a scene in metres with cairo: PNG, SVG or PDF chosen by the file's extension.
 //
-// The model's extent is fitted to the canvas with square metres kept square, y up, a title,
-// a legend of the edge styles and new cracks drawn, and a scale bar. The file is written to
+// A scene is plain data: filled polygons, polylines in a pen each, labels, a legend, a title
+// and a note. Its box is fitted to the canvas with square metres kept square, y up, the title
+// above, the legend right of it or below, whichever leaves it larger, and a scale bar with the
+// note under it. model/model_plot.hpp gathers a scene from a model. The file is written to
 // FILE.PID.tmp and renamed, so a failed plot never leaves a half-written picture behind.
 #pragma once
 
-#include <array>
-#include <optional>
+#include <cstddef>
 #include <string>
 #include <vector>
 
+#include "geom/polygon.hpp"
+#include "io/cairo_file.hpp"
+#include "io/canvas.hpp"
+
 namespace edem {
 
-class Model;
-
-struct PlotDef {
-  std::string file;                                   // .png, .svg or .pdf (any case)
-  std::vector<std::string> show{"blocks", "joints"};  // any of plot_layers()
-  int width = 1200;                                   // [px] (points for SVG/PDF)
-  int height = 900;                                   // [px]
-  // {x0, x1, y0, y1} [m]: draw only this part of the model, fitted to the canvas; none: all of it
-  std::optional<std::array<double, 4>> window;
-  // Zones in place filled by this quantity in 8 equal bands, with the bands in the legend (as
-  // UDEC's contour plots): any of plot_colours(); "": none.
-  std::string colour;
+// Polylines stroked together: one cairo path per pen, never one stroke per segment [m].
+struct Polylines {
+  std::vector<Vec2> points;
+  std::vector<std::size_t> starts;  // index in `points` where each polyline begins
+  void begin(Vec2 p) {
+    starts.push_back(points.size());
+    points.push_back(p);
+  }
+  void add(Vec2 p) { points.push_back(p); }
+  bool empty() const { return starts.empty(); }
 };
 
-// The layer names `show` accepts, in drawing order:
-//   regions  light fill and name of each named region
-//   plastic  zones that have yielded in the model's run (now or earlier), filled: shear orange,
-//            tension blue, both purple, with counts in the legend
-//   prepass  the same for the last prepass{}, over all its stages (the seed's Figure 8)
-//   zones    triangle edges
-//   blocks   block outlines, one neutral style
-//   joints   block edges by origin: joints coloured by set, cracks red, region outlines
-//            (dashed when glued), potential cracks dotted, the boundary thick
-//   cracks   the crack{} edges, red, and the new cracks (broken potential-crack sections),
-//            each its section, thick: tension red, shear blue, with counts in the legend
-//   stress   principal stress ticks at zone centroids, along each principal direction, length
-//            in proportion to its magnitude: compression dark, tension red
-//   bolts    bolt segments where they are now, coloured by axial force: tension red,
-//            compression blue, out of service grey; the largest forces in the legend
-const std::vector<std::string>& plot_layers();
+struct Scene {
+  // Polygons filled in one colour as one path, and outlined [m].
+  struct Fill {
+    std::vector<Polygon> polygons;
+    Rgb colour;
+    double opacity = 1.0;
+    Pen outline;
+  };
+  struct Lines {
+    Polylines lines;
+    Pen pen;
+    // Many thin segments (zones): filled as quads on a raster surface, which is faster.
+    bool hairlines = false;
+  };
+  // A name over its area, with a halo; left out when much larger than the area on the canvas.
+  struct Label {
+    std::string text;
+    Vec2 at;     // the label's centre [m]
+    Box extent;  // of what it names [m]
+  };
 
-// The quantities `colour` accepts: zone stresses sxx, syy, sxy, szz, s1, s3 [Pa]; gridpoint
-// displacements ux, uy and their magnitude u [m], averaged over each zone's corners.
-const std::vector<std::string>& plot_colours();
+  std::string title;  // "" for none
+  Box box{};          // the part of the plane drawn, fitted to the canvas [m]
+  // Drawn in this order, clipped to the box: fills, lines, then labels.
+  std::vector<Fill> fills;
+  std::vector<Lines> lines;
+  std::vector<Label> labels;
+  std::vector<LegendEntry> legend;
+  std::string note;  // right of the scale bar, when there is room
+};
 
-// Smallest and largest accepted width or height [px].
-inline constexpr int kPlotMinSize = 64;
-inline constexpr int kPlotMaxSize = 16384;
-
-// Draws the model. Throws edem::Error, leaving no file, for an unknown layer or extension,
-// a size out of range, a window that is not x0 < x1, y0 < y1 (finite), a model without blocks,
-// or a file that cannot be written.
-void plot(Model& model, const PlotDef& def);
+// Draws the scene to `file`, width x height px (points for SVG and PDF). Throws edem::Error,
+// leaving no file, for an unknown extension, a size out of range or a file that cannot be
+// written.
+void plot_scene(const Scene& scene, const std::string& file, int width, int height);
 
 }  // namespace edem

@@ -5,7 +5,7 @@
 
 #include <filesystem>
 
-#include "io/plot.hpp"
+#include "model/model_plot.hpp"
 #include "scenes.hpp"
 
 namespace {

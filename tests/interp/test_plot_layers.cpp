@@ -5,7 +5,7 @@
 
 #include "../unit/picture_files.hpp"
 #include "interp_test.hpp"
-#include "io/plot.hpp"
+#include "model/model_plot.hpp"
 
 namespace edem::test {
 namespace {

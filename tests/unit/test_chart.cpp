@@ -14,7 +14,6 @@
 
 #include "core/error.hpp"
 #include "io/chart.hpp"
-#include "io/plot.hpp"
 #include "io/temp_file.hpp"
 #include "picture_files.hpp"
 

@@ -9,9 +9,9 @@
 #include <string>
 
 #include "core/error.hpp"
-#include "io/plot.hpp"
 #include "io/temp_file.hpp"
 #include "model/model.hpp"
+#include "model/model_plot.hpp"
 #include "picture_files.hpp"
 
 namespace edem {

@@ -1,0 +1,637 @@
+// plot(): the layers of a model gathered into a scene of fills, styled lines, labels and a
+// legend, which io/plot draws.
+#include "model/model_plot.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <numbers>
+#include <optional>
+#include <string_view>
+#include <unordered_set>
+
+#include "core/error.hpp"
+#include "core/names.hpp"
+#include "io/cairo_file.hpp"
+#include "io/plot.hpp"
+#include "model/model.hpp"
+
+namespace edem {
+
+const std::vector<std::string>& plot_layers() {
+  static const std::vector<std::string> layers{"regions", "plastic", "prepass", "zones", "blocks",
+                                               "joints",  "cracks",  "stress",  "bolts"};
+  return layers;
+}
+
+const std::vector<std::string>& plot_colours() {
+  static const std::vector<std::string> colours{"sxx", "syy", "sxy", "szz", "s1",
+                                                "s3",  "ux",  "uy",  "u"};
+  return colours;
+}
+
+namespace {
+
+// ---------------------------------------------------------------------------------------
+// What to draw, checked before anything is computed or written.
+
+struct Layers {
+  bool regions = false, plastic = false, prepass = false, zones = false, blocks = false,
+       joints = false, cracks = false, stress = false, bolts = false;
+};
+
+std::string join(const std::vector<std::string>& items) {
+  std::string out;
+  for (const auto& item : items) out += (out.empty() ? "" : ", ") + item;
+  return out;
+}
+
+Layers layers_of(const std::vector<std::string>& show) {
+  const auto& valid = plot_layers();
+  // The flag of each name in plot_layers(), in the same order.
+  constexpr std::array kFlags{&Layers::regions, &Layers::plastic, &Layers::prepass,
+                              &Layers::zones,   &Layers::blocks,  &Layers::joints,
+                              &Layers::cracks,  &Layers::stress,  &Layers::bolts};
+  static_assert(kFlags.size() == 9, "one flag per name in plot_layers()");
+  if (show.empty()) fail("show lists no layers: use any of {}", join(valid));
+  Layers layers;
+  for (const auto& name : show) {
+    const auto it = std::find(valid.begin(), valid.end(), name);
+    if (it == valid.end())
+      fail("unknown layer '{}'{}: layers are {}", name, did_you_mean(name, valid), join(valid));
+    layers.*kFlags[static_cast<std::size_t>(it - valid.begin())] = true;
+  }
+  return layers;
+}
+
+void check_window(const std::optional<std::array<double, 4>>& window) {
+  if (!window) return;
+  const auto& [x0, x1, y0, y1] = *window;
+  if (!(std::isfinite(x0) && std::isfinite(x1) && std::isfinite(y0) && std::isfinite(y1) &&
+        x0 < x1 && y0 < y1))
+    fail(
+        "window must be {{x0, x1, y0, y1}} with x0 < x1 and y0 < y1, got {{{:g}, {:g}, {:g}, "
+        "{:g}}}",
+        x0, x1, y0, y1);
+}
+
+void check_colour(const std::string& colour) {
+  if (colour.empty()) return;
+  const auto& valid = plot_colours();
+  if (std::find(valid.begin(), valid.end(), colour) == valid.end())
+    fail("unknown colour quantity '{}'{}: quantities are {}", colour, did_you_mean(colour, valid),
+         join(valid));
+}
+
+// ---------------------------------------------------------------------------------------
+// Geometry gathered from the model, in metres.
+
+// How a block edge is drawn. Tiers are in drawing order: later ones lie on top.
+enum class Tier : std::uint8_t { potential, region, joint, crack, boundary };
+
+struct EdgeClass {
+  Tier tier = Tier::boundary;
+  int set = -1;  // joint set, else -1
+  bool glued = false;
+  auto operator<=>(const EdgeClass&) const = default;
+};
+
+EdgeClass class_of(const EdgeOrigin& origin) {
+  switch (origin.kind) {
+    case EdgeKind::potential:
+      return {Tier::potential, -1, false};
+    case EdgeKind::region:
+      return {Tier::region, -1, origin.glued};
+    case EdgeKind::joint:
+      return {Tier::joint, origin.set, origin.glued};
+    case EdgeKind::crack:
+      return {Tier::crack, -1, origin.glued};
+    case EdgeKind::boundary:
+      break;
+  }
+  return {Tier::boundary, -1, false};
+}
+
+// An undirected edge, identical for both blocks that share it (vertices are shared exactly).
+struct EdgeKey {
+  Vec2 a, b;
+  bool operator==(const EdgeKey& o) const { return a == o.a && b == o.b; }
+};
+
+EdgeKey key_of(Vec2 p, Vec2 q) {
+  const bool ordered = p.x < q.x || (p.x == q.x && p.y <= q.y);
+  return ordered ? EdgeKey{p, q} : EdgeKey{q, p};
+}
+
+struct EdgeKeyHash {
+  std::size_t operator()(const EdgeKey& k) const {
+    std::size_t h = 0;
+    for (const double v : {k.a.x, k.a.y, k.b.x, k.b.y})
+      h = (h ^ std::hash<double>{}(v)) * 1099511628211ull;
+    return h;
+  }
+};
+
+using Classify = std::function<std::optional<EdgeClass>(const EdgeOrigin&)>;
+
+// Every block edge once, sorted into classes; consecutive edges of one class along a ring are
+// chained so that dash patterns run on across vertices.
+std::map<EdgeClass, Polylines> collect_edges(const BlockSet& set, const Classify& classify) {
+  std::map<EdgeClass, Polylines> out;
+  std::unordered_set<EdgeKey, EdgeKeyHash> seen;
+  auto walk = [&](const Ring& ring) {
+    const std::size_t n = ring.points.size();
+    if (n < 2 || ring.edges.size() != n) return;
+    Polylines* chain = nullptr;  // the class whose last polyline ends at the current vertex
+    for (std::size_t i = 0; i < n; ++i) {
+      const Vec2 a = ring.points[i], b = ring.points[(i + 1) % n];
+      const auto cls = classify(ring.edges[i]);
+      if (!cls || !seen.insert(key_of(a, b)).second) {
+        chain = nullptr;
+        continue;
+      }
+      Polylines& lines = out[*cls];
+      if (chain != &lines) lines.begin(a);
+      lines.add(b);
+      chain = &lines;
+    }
+  };
+  for (const Block& block : set.blocks) {
+    walk(block.outer);
+    for (const Ring& hole : block.holes) walk(hole);
+  }
+  return out;
+}
+
+// Each zone edge once (interior edges are shared by two zones).
+Polylines zone_edges(const Mesh& mesh) {
+  std::vector<std::uint64_t> keys;
+  keys.reserve(mesh.zone_gp.size() * 3);
+  const auto gp_count = static_cast<std::uint64_t>(mesh.gp_position.size());
+  for (const auto& zone : mesh.zone_gp) {
+    for (int i = 0; i < 3; ++i) {
+      const auto a = static_cast<std::uint64_t>(zone[i]);
+      const auto b = static_cast<std::uint64_t>(zone[(i + 1) % 3]);
+      if (a >= gp_count || b >= gp_count) continue;
+      keys.push_back(std::min(a, b) << 32 | std::max(a, b));
+    }
+  }
+  std::sort(keys.begin(), keys.end());
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  Polylines lines;
+  lines.points.reserve(keys.size() * 2);
+  lines.starts.reserve(keys.size());
+  for (const std::uint64_t key : keys) {
+    lines.begin(mesh.gp_position[key >> 32]);
+    lines.add(mesh.gp_position[key & 0xffffffffu]);
+  }
+  return lines;
+}
+
+// Bounding box of every block's outer ring [m]; nullopt when there are no blocks.
+std::optional<Box> extent_of(const BlockSet& set) {
+  std::optional<Box> box;
+  for (const Block& block : set.blocks) {
+    for (const Vec2 p : block.outer.points) {
+      if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
+      if (!box) box = Box{p.x, p.x, p.y, p.y};
+      box->x0 = std::min(box->x0, p.x);
+      box->x1 = std::max(box->x1, p.x);
+      box->y0 = std::min(box->y0, p.y);
+      box->y1 = std::max(box->y1, p.y);
+    }
+  }
+  return box;
+}
+
+// ---------------------------------------------------------------------------------------
+// Styles. Widths and dashes are in units of the canvas scale (about a pixel at 800 px).
+
+// Qualitative colours for joint sets (no red: red means crack).
+constexpr std::array kSetColours{rgb(0x1f77b4), rgb(0xff7f0e), rgb(0x2ca02c), rgb(0x9467bd),
+                                 rgb(0x8c564b), rgb(0xe377c2), rgb(0xbcbd22), rgb(0x17becf)};
+// Light fills for regions, neighbours told apart.
+constexpr std::array kRegionColours{rgb(0xb3cde3), rgb(0xfbb4ae), rgb(0xccebc5), rgb(0xdecbe4),
+                                    rgb(0xfed9a6), rgb(0xffffcc), rgb(0xe5d8bd), rgb(0xfddaec)};
+// Yielded zones (plastic and prepass layers): shear, tension, both.
+constexpr std::array kYieldColours{rgb(0xf4a582), rgb(0x92c5de), rgb(0xc2a5cf)};
+constexpr Rgb kCrack = rgb(0xd62728);
+constexpr Rgb kShearCrack = rgb(0x1a35d4);  // deeper than joint set 1's blue, and thicker
+
+constexpr int kBands = 8;
+// Viridis at 8 steps: dark blue (lowest) to yellow (highest), readable in grey.
+constexpr std::array<Rgb, kBands> kBandColours{rgb(0x440154), rgb(0x46327e), rgb(0x365c8d),
+                                               rgb(0x277f8e), rgb(0x1fa187), rgb(0x4ac16d),
+                                               rgb(0xa0da39), rgb(0xfde725)};
+
+Rgb set_colour(int set) {
+  return kSetColours[static_cast<std::size_t>(std::max(set, 0)) % kSetColours.size()];
+}
+
+// Joints coloured by set, cracks red, glued edges dashed, potential cracks dotted.
+Pen pen_of(const EdgeClass& cls) {
+  Pen pen{rgb(0x000000), 2.4, {}};  // boundary
+  switch (cls.tier) {
+    case Tier::potential:
+      pen = {rgb(0x8c8c8c), 0.7, {1.5, 2.0}};
+      break;
+    case Tier::region:
+      pen = {rgb(0x303030), 1.2, {}};
+      break;
+    case Tier::joint:
+      pen = {set_colour(cls.set), 1.3, {}};
+      break;
+    case Tier::crack:
+      pen = {kCrack, 1.8, {}};
+      break;
+    case Tier::boundary:
+      return pen;
+  }
+  if (cls.glued) pen.dash = {6.0, 3.5};
+  return pen;
+}
+
+// Joint sets are numbered from 1 in the order of the jset{} commands.
+std::string label_of(const EdgeClass& cls) {
+  const std::string glued = cls.glued ? ", glued" : "";
+  switch (cls.tier) {
+    case Tier::potential:
+      return "potential crack";
+    case Tier::region:
+      return "region outline" + glued;
+    case Tier::joint:
+      return fmt::format("joint set {}{}", cls.set + 1, glued);
+    case Tier::crack:
+      return "crack" + glued;
+    case Tier::boundary:
+      break;
+  }
+  return "boundary";
+}
+
+// New cracks by how they broke, as in the seed paper's Figure 9: thicker than any edge, so that
+// they read over the dotted potential crack they broke from.
+Pen crack_pen(CrackMode mode) {
+  return {mode == CrackMode::shear ? kShearCrack : kCrack, 3.2, {}};
+}
+
+std::string label_of(CrackMode mode, std::size_t count) {
+  return fmt::format("{} crack ({})", mode == CrackMode::shear ? "shear" : "tension", count);
+}
+
+// Zones filled in one colour, each also outlined in it.
+Pen fill_pen(Rgb colour) {
+  return {colour, 0.5, {}};
+}
+
+// A filled area in the legend.
+Pen swatch_pen(Rgb colour) {
+  return {colour, 6.0, {}};
+}
+
+const Pen kCompressionTick{rgb(0x202020), 0.9, {}, false};
+const Pen kTensionTick{rgb(0xd62728), 0.9, {}, false};
+const Pen kBoltTension{rgb(0xb2182b), 2.2, {}};
+const Pen kBoltCompression{rgb(0x2166ac), 2.2, {}};
+const Pen kBoltOut{rgb(0x9a9a9a), 1.6, {3.0, 2.0}};
+const Pen kBlockPen{rgb(0x404040), 0.8, {}, false};
+const Pen kZonePen{rgb(0xc4c4c4), 0.45, {}, false};
+
+// ---------------------------------------------------------------------------------------
+// The layers, gathered.
+
+// The new cracks of one mode, each its section's segment [m].
+struct CrackBatch {
+  CrackMode mode = CrackMode::none;
+  Polylines lines;  // one polyline per crack
+};
+
+// Drawing and legend order.
+constexpr std::array kCrackModes{CrackMode::tension, CrackMode::shear};
+
+// A crack is drawn as the section that broke: `length` along `angle` through its midpoint.
+void add_section(Polylines& lines, const CrackView& crack) {
+  const double a = crack.angle * std::numbers::pi / 180.0;
+  const Vec2 half = 0.5 * crack.length * Vec2{std::cos(a), std::sin(a)};
+  lines.begin(crack.position - half);
+  lines.add(crack.position + half);
+}
+
+// The broken potential-crack sections by mode; modes without cracks are left out.
+std::vector<CrackBatch> new_cracks_of(const Model& model) {
+  std::vector<CrackBatch> out;
+  for (const CrackMode mode : kCrackModes) {
+    CrackBatch batch{mode, {}};
+    for (int id = 0; id < model.crack_count(); ++id)
+      if (model.crack(id).mode == mode) add_section(batch.lines, model.crack(id));
+    if (!batch.lines.empty()) out.push_back(std::move(batch));
+  }
+  return out;
+}
+
+// Everything the picture needs from the model, by layer, gathered before any file is opened.
+struct Gathered {
+  std::string title;
+  Box box{};
+  std::size_t blocks = 0;
+  std::optional<std::size_t> zones;  // when the zones layer is shown
+  std::vector<RegionDef> regions;
+  Polylines zone_lines;
+  Polylines block_lines;
+  std::map<EdgeClass, Polylines> edges;  // joints and cracks layers
+  std::vector<CrackBatch> new_cracks;    // cracks layer
+  // plastic and prepass layers: zones that yielded in shear only, tension only, both.
+  std::array<std::vector<Polygon>, 3> yielded;
+  std::string yield_source;  // "plastic" or "prepass", for the legend
+  // colour: zones in place by band, lowest first, and each band's legend line
+  std::vector<std::vector<Polygon>> bands;
+  std::vector<std::string> band_labels;
+  // stress layer: ticks in compression and in tension, and the largest magnitude of each [Pa]
+  Polylines compression_ticks, tension_ticks;
+  double max_compression = 0.0, max_tension = 0.0;
+  // bolts layer: segments in tension, compression, out of service; largest force of each [N/m]
+  Polylines bolts_tension, bolts_compression, bolts_out;
+  double max_bolt_tension = 0.0, max_bolt_compression = 0.0;
+};
+
+// Zones in place: not excavated, with a material.
+bool in_place(const ZoneView& zone) {
+  return zone.excavated == 0 && !zone.material.empty();
+}
+
+Polygon triangle_of(const Mesh& mesh, int zone) {
+  Polygon triangle;
+  for (int gp : mesh.zone_gp[static_cast<std::size_t>(zone)])
+    triangle.push_back(mesh.gp_position[static_cast<std::size_t>(gp)]);
+  return triangle;
+}
+
+// Zones that yielded, as the seed's Figure 8 shows them: in the model's own run (plastic: now
+// or earlier) or in the last prepass{} (over all its stages), filled by mode.
+void gather_yielded(const Model& model, bool from_prepass, Gathered& g) {
+  const Mesh& mesh = model.mesh();
+  const std::vector<std::uint8_t>& prepass = model.prepass_yield();
+  if (from_prepass && prepass.size() != mesh.zone_gp.size())
+    fail("show = \"prepass\": no prepass{{}} result for this mesh (run prepass{{}} first)");
+  g.yield_source = from_prepass ? "prepass" : "plastic";
+  for (int z = 0; z < static_cast<int>(mesh.zone_gp.size()); ++z) {
+    const std::uint8_t bits =
+        from_prepass ? prepass[static_cast<std::size_t>(z)] : model.zone_view(z).state;
+    const bool shear = bits & (kShearNow | kShearPast),
+               tension = bits & (kTensionNow | kTensionPast);
+    if (!shear && !tension) continue;
+    g.yielded[shear && tension ? 2 : shear ? 0 : 1].push_back(triangle_of(mesh, z));
+  }
+}
+
+// An SI value in engineering notation, short: "-1.25 MPa", "3.4 mm".
+std::string with_unit(double value, const char* unit) {
+  const bool metres = std::string_view(unit) == "m";
+  const double a = std::abs(value);
+  if (metres) {
+    if (a != 0 && a < 0.01) return fmt::format("{:.3g} mm", value * 1e3);
+    return fmt::format("{:.3g} m", value);
+  }
+  if (a >= 1e6) return fmt::format("{:.3g} MPa", value * 1e-6);
+  if (a >= 1e3) return fmt::format("{:.3g} kPa", value * 1e-3);
+  return fmt::format("{:.3g} Pa", value);
+}
+
+// Zones in place by `quantity` in kBands equal bands from its least to its largest value.
+void gather_bands(const Model& model, const std::string& quantity, Gathered& g) {
+  const Mesh& mesh = model.mesh();
+  if (mesh.zone_count() == 0)
+    fail("colour = \"{}\": the model has no zones (zone{{}} first)", quantity);
+  const bool displacement = quantity == "ux" || quantity == "uy" || quantity == "u";
+  std::vector<int> zones;
+  std::vector<double> values;
+  for (int z = 0; z < mesh.zone_count(); ++z) {
+    const ZoneView zone = model.zone_view(z);
+    if (!in_place(zone)) continue;
+    double value = 0.0;
+    if (displacement) {
+      for (int gp : mesh.zone_gp[static_cast<std::size_t>(z)]) {
+        const Vec2 u = model.gridpoint(gp).u;
+        value += (quantity == "ux" ? u.x : quantity == "uy" ? u.y : norm(u)) / 3.0;
+      }
+    } else {
+      const std::map<std::string_view, double> stress{{"sxx", zone.sxx}, {"syy", zone.syy},
+                                                      {"sxy", zone.sxy}, {"szz", zone.szz},
+                                                      {"s1", zone.s1},   {"s3", zone.s3}};
+      value = stress.at(quantity);
+    }
+    zones.push_back(z);
+    values.push_back(value);
+  }
+  if (zones.empty()) fail("colour = \"{}\": no zone is in place to colour", quantity);
+  const auto [low, high] = std::minmax_element(values.begin(), values.end());
+  const double lo = *low, width = (*high - *low) / kBands;
+  const char* unit = displacement ? "m" : "Pa";
+  g.bands.assign(kBands, {});
+  for (std::size_t i = 0; i < zones.size(); ++i) {
+    const int band =
+        width > 0 ? std::clamp(static_cast<int>((values[i] - lo) / width), 0, kBands - 1) : 0;
+    g.bands[static_cast<std::size_t>(band)].push_back(triangle_of(mesh, zones[i]));
+  }
+  for (int b = kBands - 1; b >= 0; --b)  // the legend reads from the highest down
+    g.band_labels.push_back(width > 0 ? fmt::format("{}: {} to {}", quantity,
+                                                    with_unit(lo + b * width, unit),
+                                                    with_unit(lo + (b + 1) * width, unit))
+                                      : fmt::format("{}: {}", quantity, with_unit(lo, unit)));
+}
+
+// Principal stress ticks through each zone's centroid, of length in proportion to magnitude: the
+// largest magnitude anywhere spans about the zone's width.
+void gather_stress(const Model& model, Gathered& g) {
+  const Mesh& mesh = model.mesh();
+  std::vector<ZoneView> zones;
+  double largest = 0.0;
+  for (int z = 0; z < mesh.zone_count(); ++z) {
+    ZoneView zone = model.zone_view(z);
+    if (!in_place(zone)) continue;
+    largest = std::max({largest, std::abs(zone.s1), std::abs(zone.s3)});
+    zones.push_back(std::move(zone));
+  }
+  if (zones.empty() || !(largest > 0)) return;
+  for (const ZoneView& zone : zones) {
+    const double tick =
+        1.6 * std::sqrt(mesh.zone_area(zone.id));  // about its zone across, graded as the mesh
+    // The direction of the algebraically larger principal stress s3; s1 is at right angles to it.
+    const double angle = 0.5 * std::atan2(2.0 * zone.sxy, zone.sxx - zone.syy);
+    const Vec2 d3{std::cos(angle), std::sin(angle)}, d1{-d3.y, d3.x};
+    for (const auto& [value, dir] : {std::pair{zone.s1, d1}, std::pair{zone.s3, d3}}) {
+      const double half = 0.5 * tick * std::abs(value) / largest;
+      if (!(half > 0)) continue;
+      Polylines& lines = value < 0 ? g.compression_ticks : g.tension_ticks;
+      lines.begin(zone.centroid - half * dir);
+      lines.add(zone.centroid + half * dir);
+      (value < 0 ? g.max_compression : g.max_tension) =
+          std::max(value < 0 ? g.max_compression : g.max_tension, std::abs(value));
+    }
+  }
+}
+
+void gather_bolts(const Model& model, Gathered& g) {
+  for (int b = 0; b < model.bolt_count(); ++b) {
+    const BoltView bolt = model.bolt(b);
+    for (const BoltSegmentView& seg : bolt.segments) {
+      const bool out = bolt.removed || seg.state == "broken" || seg.state == "removed";
+      Polylines& lines = out ? g.bolts_out : seg.force >= 0 ? g.bolts_tension : g.bolts_compression;
+      lines.begin(seg.a);
+      lines.add(seg.b);
+      if (out) continue;
+      double& largest = seg.force >= 0 ? g.max_bolt_tension : g.max_bolt_compression;
+      largest = std::max(largest, std::abs(seg.force));
+    }
+  }
+}
+
+Gathered gather(Model& model, const Layers& layers, const std::string& colour) {
+  Gathered g;
+  g.title = model.title();
+  const BlockSet& set = model.blocks();
+  const auto box = extent_of(set);
+  if (!box) fail("nothing to plot: the model has no blocks (add a block{{}} first)");
+  g.box = *box;
+  g.blocks = set.blocks.size();
+  if (layers.regions) g.regions = model.regions();
+  if (layers.zones) {
+    const Mesh& mesh = model.mesh();
+    g.zones = mesh.zone_gp.size();
+    g.zone_lines = zone_edges(mesh);
+  }
+  // Edges the joints or cracks layer restyles are left out of the neutral block outlines,
+  // so that dashes are not filled in underneath.
+  const bool joints = layers.joints, cracks = layers.cracks;
+  const Classify neutral = [&](const EdgeOrigin& o) -> std::optional<EdgeClass> {
+    if (joints || (cracks && o.kind == EdgeKind::crack)) return std::nullopt;
+    return EdgeClass{};
+  };
+  const Classify styled = [&](const EdgeOrigin& o) -> std::optional<EdgeClass> {
+    if (!joints && o.kind != EdgeKind::crack) return std::nullopt;
+    return class_of(o);
+  };
+  if (layers.blocks) g.block_lines = std::move(collect_edges(set, neutral)[EdgeClass{}]);
+  if (joints || cracks) g.edges = collect_edges(set, styled);
+  if (cracks) g.new_cracks = new_cracks_of(model);
+  if (layers.plastic || layers.prepass) gather_yielded(model, layers.prepass, g);
+  if (!colour.empty()) gather_bands(model, colour, g);
+  if (layers.stress) gather_stress(model, g);
+  if (layers.bolts) gather_bolts(model, g);
+  return g;
+}
+
+// The edge styles drawn (block outlines and zones explain themselves), then the new cracks
+// with their counts, the colour bands, the stress ticks, the bolts and the yielded zones.
+std::vector<LegendEntry> legend_of(const Gathered& g) {
+  // Boundary, joint sets in order, cracks, region outlines, potential cracks.
+  auto order = [](Tier tier) {
+    constexpr std::array kOrder{4, 3, 1, 2, 0};  // position in the legend, by tier
+    return kOrder[static_cast<std::size_t>(tier)];
+  };
+  std::vector<EdgeClass> classes;
+  for (const auto& [cls, lines] : g.edges)
+    if (!lines.empty()) classes.push_back(cls);
+  std::stable_sort(classes.begin(), classes.end(), [&](const EdgeClass& a, const EdgeClass& b) {
+    return order(a.tier) < order(b.tier);
+  });
+  std::vector<LegendEntry> entries;
+  for (const EdgeClass& cls : classes) entries.push_back({label_of(cls), pen_of(cls)});
+  for (const CrackBatch& batch : g.new_cracks)
+    entries.push_back({label_of(batch.mode, batch.lines.starts.size()), crack_pen(batch.mode)});
+  for (std::size_t i = 0; i < g.band_labels.size(); ++i)
+    entries.push_back({g.band_labels[i], swatch_pen(kBandColours[g.band_labels.size() - 1 - i])});
+  if (!g.compression_ticks.empty())
+    entries.push_back(
+        {"principal stress, compression (largest " + with_unit(g.max_compression, "Pa") + ")",
+         kCompressionTick});
+  if (!g.tension_ticks.empty())
+    entries.push_back({"principal stress, tension (largest " + with_unit(g.max_tension, "Pa") + ")",
+                       kTensionTick});
+  if (!g.bolts_tension.empty())
+    entries.push_back(
+        {fmt::format("bolt in tension (largest {:.3g} kN/m)", g.max_bolt_tension * 1e-3),
+         kBoltTension});
+  if (!g.bolts_compression.empty())
+    entries.push_back(
+        {fmt::format("bolt in compression (largest {:.3g} kN/m)", g.max_bolt_compression * 1e-3),
+         kBoltCompression});
+  if (!g.bolts_out.empty()) entries.push_back({"bolt broken or out of service", kBoltOut});
+  constexpr std::array<const char*, 3> kYieldNames{"shear", "tension", "shear and tension"};
+  for (std::size_t i = 0; i < g.yielded.size(); ++i)
+    if (!g.yielded[i].empty())
+      entries.push_back({fmt::format("{}: {} ({} zone{})", g.yield_source, kYieldNames[i],
+                                     g.yielded[i].size(), g.yielded[i].size() == 1 ? "" : "s"),
+                         swatch_pen(kYieldColours[i])});
+  return entries;
+}
+
+std::string counts_of(const Gathered& g) {
+  std::string counts = fmt::format("{} block{}", g.blocks, g.blocks == 1 ? "" : "s");
+  if (g.zones && *g.zones == 0) counts += ", not zoned";
+  if (g.zones && *g.zones > 0)
+    counts += fmt::format(", {} zone{}", *g.zones, *g.zones == 1 ? "" : "s");
+  return counts;
+}
+
+// Regions with a light fill, outlined a shade darker, and their names.
+void add_regions(const std::vector<RegionDef>& regions, Scene& scene) {
+  for (std::size_t i = 0; i < regions.size(); ++i) {
+    const Polygon& polygon = regions[i].polygon;
+    if (polygon.size() < 3) continue;
+    const Rgb fill = kRegionColours[i % kRegionColours.size()];
+    scene.fills.push_back(
+        {{polygon}, fill, 0.7, {{fill.r * 0.6, fill.g * 0.6, fill.b * 0.6}, 0.8, {}}});
+    if (!regions[i].name.empty())
+      scene.labels.push_back({regions[i].name, centroid(polygon), bounding_box(polygon)});
+  }
+}
+
+// The layers in drawing order: fills (regions, colour bands, yielded zones), then lines (zones,
+// block outlines, edges by class, new cracks, stress ticks, bolts), then region names.
+Scene scene_of(Gathered g) {
+  Scene scene;
+  scene.title = g.title;
+  scene.box = g.box;
+  scene.legend = legend_of(g);
+  scene.note = counts_of(g);
+  add_regions(g.regions, scene);
+  for (std::size_t b = 0; b < g.bands.size(); ++b)
+    scene.fills.push_back({std::move(g.bands[b]), kBandColours[b], 1.0, fill_pen(kBandColours[b])});
+  for (std::size_t i = 0; i < g.yielded.size(); ++i)
+    scene.fills.push_back(
+        {std::move(g.yielded[i]), kYieldColours[i], 1.0, fill_pen(kYieldColours[i])});
+  auto add = [&](Polylines& lines, const Pen& pen, bool hairlines = false) {
+    scene.lines.push_back({std::move(lines), pen, hairlines});
+  };
+  add(g.zone_lines, kZonePen, true);
+  add(g.block_lines, kBlockPen);
+  for (auto& [cls, lines] : g.edges) add(lines, pen_of(cls));
+  for (CrackBatch& batch : g.new_cracks) add(batch.lines, crack_pen(batch.mode));
+  add(g.compression_ticks, kCompressionTick);
+  add(g.tension_ticks, kTensionTick);
+  add(g.bolts_out, kBoltOut);
+  add(g.bolts_compression, kBoltCompression);
+  add(g.bolts_tension, kBoltTension);
+  return scene;
+}
+
+}  // namespace
+
+void plot(Model& model, const PlotDef& def) {
+  picture_format(def.file);  // checked before anything is computed
+  const Layers layers = layers_of(def.show);
+  check_size(def.width, def.height);
+  check_window(def.window);
+  check_writable(def.file);
+  check_colour(def.colour);
+  Scene scene = scene_of(gather(model, layers, def.colour));
+  if (def.window)
+    scene.box = Box{(*def.window)[0], (*def.window)[1], (*def.window)[2], (*def.window)[3]};
+  plot_scene(scene, def.file, def.width, def.height);
+}
+
+}  // namespace edem

@@ -1,0 +1,58 @@
+// Pictures of a model, as plot{} draws them: the layers asked for, gathered from the model into
+// a scene that io/plot.hpp draws to PNG, SVG or PDF, chosen by the file's extension.
+//
+// The model's extent (or a window) is fitted to the canvas with square metres kept square, y up,
+// a title, a legend of the edge styles and new cracks drawn, and a scale bar. The file is written
+// to FILE.PID.tmp and renamed, so a failed plot never leaves a half-written picture behind.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "io/cairo_file.hpp"  // kPlotMinSize, kPlotMaxSize
+
+namespace edem {
+
+class Model;
+
+struct PlotDef {
+  std::string file;                                   // .png, .svg or .pdf (any case)
+  std::vector<std::string> show{"blocks", "joints"};  // any of plot_layers()
+  int width = 1200;  // [px] (points for SVG/PDF), kPlotMinSize to kPlotMaxSize
+  int height = 900;  // [px]
+  // {x0, x1, y0, y1} [m]: draw only this part of the model, fitted to the canvas; none: all of it
+  std::optional<std::array<double, 4>> window;
+  // Zones in place filled by this quantity in 8 equal bands, with the bands in the legend (as
+  // UDEC's contour plots): any of plot_colours(); "": none.
+  std::string colour;
+};
+
+// The layer names `show` accepts, in drawing order:
+//   regions  light fill and name of each named region
+//   plastic  zones that have yielded in the model's run (now or earlier), filled: shear orange,
+//            tension blue, both purple, with counts in the legend
+//   prepass  the same for the last prepass{}, over all its stages (the seed's Figure 8)
+//   zones    triangle edges
+//   blocks   block outlines, one neutral style
+//   joints   block edges by origin: joints coloured by set, cracks red, region outlines
+//            (dashed when glued), potential cracks dotted, the boundary thick
+//   cracks   the crack{} edges, red, and the new cracks (broken potential-crack sections),
+//            each its section, thick: tension red, shear blue, with counts in the legend
+//   stress   principal stress ticks at zone centroids, along each principal direction, length
+//            in proportion to its magnitude: compression dark, tension red
+//   bolts    bolt segments where they are now, coloured by axial force: tension red,
+//            compression blue, out of service grey; the largest forces in the legend
+const std::vector<std::string>& plot_layers();
+
+// The quantities `colour` accepts: zone stresses sxx, syy, sxy, szz, s1, s3 [Pa]; gridpoint
+// displacements ux, uy and their magnitude u [m], averaged over each zone's corners.
+const std::vector<std::string>& plot_colours();
+
+// Draws the model. Throws edem::Error, leaving no file, for an unknown layer or extension,
+// a size out of range, a window that is not x0 < x1, y0 < y1 (finite), a model without blocks,
+// or a file that cannot be written.
+void plot(Model& model, const PlotDef& def);
+
+}  // namespace edem
