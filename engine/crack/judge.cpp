@@ -202,7 +202,7 @@ SectionView section_view(const Mechanics& m, int section) {
   return view_of(m, section, fitted_stress(m, section));
 }
 
-int judge_sections(Mechanics& m, const Mesh& mesh) {
+int judge_sections(Mechanics& m) {
   struct Failed {
     int section;
     CrackMode mode;

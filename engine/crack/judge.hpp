@@ -20,6 +20,6 @@ SectionView section_view(const Mechanics& m, int section);
 // those that fail (crack records, ties released). Returns how many broke: the caller then
 // reconnects the nodes across them (solver/prepare.hpp, reconnect).
 // Exceptions from a user's criterion pass through, with nothing broken.
-int judge_sections(Mechanics& m, const Mesh& mesh);
+int judge_sections(Mechanics& m);
 
 }  // namespace edem

@@ -159,7 +159,7 @@ bool any_intact(const Mechanics& m) {
 
 // Judges the sections; those that broke release their ties: the nodes are reconnected.
 int broken_and_reconnected(Mechanics& m, const Mesh& mesh) {
-  const int broke = judge_sections(m, mesh);
+  const int broke = judge_sections(m);
   if (broke > 0) reconnect(m, mesh);
   return broke;
 }
