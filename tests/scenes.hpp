@@ -25,7 +25,7 @@ inline Polygon warhead(double width, double height, double rise, int arc_segment
   return outline;
 }
 
-// The main example's geometry: the seed's 200 m x 180 m region, Case 3 joints (60 degrees,
+// The seed's Case 3 region: the seed's 200 m x 180 m region, Case 3 joints (60 degrees,
 // spacing 16/12/8 m, and a cross set), the 24 m x 48 m warhead as a glued region "cavern".
 inline Model jointed_cavern() {
   Model model({"jointed cavern", 1e-9});

@@ -1,7 +1,7 @@
 // The explicit solver on a jointed model: what the contacts cost. Results go to
 // tests/bench/RESULTS.md.
 //
-// B4: the main example's region (tests/scenes.hpp: 200 m x 180 m, Case 3 joints, the glued
+// B4: the seed's Case 3 region (tests/scenes.hpp: 200 m x 180 m, Case 3 joints, the glued
 //     warhead "cavern") zoned to about 50k zones, built through the Model as a script would:
 //     elastic rock and joints of the physically consistent prototype (Set P of
 //     stdlib/edem/seed.lua, as tests/verification/seed_region_joints.lua), jassigned to every

@@ -1,6 +1,6 @@
-// Building and zoning the main example (scripts/examples/jointed_cavern.lua) through the
-// engine: Case 3 joints in the seed's 200 m x 180 m region around a glued warhead outline,
-// zoned to about 50k zones. Results go to tests/bench/RESULTS.md.
+// Building and zoning the seed's Case 3 region through the engine (tests/scenes.hpp): Case 3
+// joints in the seed's 200 m x 180 m region around a glued warhead outline, zoned to about 50k
+// zones. Results go to tests/bench/RESULTS.md.
 #include <benchmark/benchmark.h>
 
 #include <filesystem>

@@ -1,4 +1,4 @@
-// The main example's geometry and zoning are sound: block areas sum to the region area, and every
+// The seed's Case 3 region (tests/scenes.hpp) is cut and zoned soundly: block areas sum to the region area, and every
 // zone has positive area, meets the angle rule, respects the size field, and the zones of a block
 // sum to its area.
 #include <gtest/gtest.h>
