@@ -1,6 +1,14 @@
-// The cycle, as two passes over flat arrays inside one parallel region:
-//   1. zones: strain rate, constitutive update, nodal forces to the accumulators;
-//   2. nodes: unbalanced force, damping, velocity and displacement.
+// The cycle (run_cycles): its stages run in this order every cycle, inside one parallel region,
+// each over flat arrays split among the threads:
+//   1. zones: strain rate, constitutive update, nodal forces to the accumulators (zone_force_pass);
+//      contacts: forces from the joint law, pushed to the gridpoint and its edge's ends
+//      (contact_pass);
+//   2. on one thread, the excavation's release takes its step off the loads (step_release) and
+//      the bolts move their own nodes (bolt_cycle);
+//   3. nodes: forces gathered, damping, velocity and displacement (node_motion).
+// A barrier ends stages 2 and 3. The last cycle of a batch also measures (Measure); the energy
+// sums run every cycle. Sums are taken per chunk and added in chunk order: the same bits for any
+// thread count.
 //
 // Mixed discretisation (set{ mixed = true }), FLAC's for its quadrilaterals made of triangles:
 // zones are grouped in pairs that share an edge (a left-over zone joins a neighbouring pair;
@@ -9,23 +17,12 @@
 // out-of-plane one included (B-bar in plane strain), and each member's forces see the group's
 // mean stress change since the last insitu{} in place of its own, so the stress does work on
 // exactly the strain that produced it and an initial state in equilibrium stays in equilibrium.
-// One volumetric constraint per pair instead of per zone: about one per node, as Q1P0.
-// Measured (tests/verification/prandtl_footing.lua, incompressible_hole.lua):
-//   smooth strip footing on Tresca (associated): q_u +4.3 % of (2 + pi) c, plain +10.7 %;
-//   near-incompressible elastic hole (nu = 0.499): wall u 0.13 %, rings <= 0.14 % of P0,
-//     plain -3.1 % and up to 11 %.
-// Why it is not the default: Salencon with psi = 0 (non-associated, phi = 30). At equilibrium
-// (ratio 1e-10) the wall displacement is, against the closed form, plain / mixed:
-//   zone edge 0.04 a: +1.0 / +2.4 %; 0.03 a: +2.2 / +4.1 %; 0.02 a: +3.3 / +8.2 %;
-//   0.015 a: +3.9 / +6.4 %  (R0: +1.1 / +1.2 % ... +3.8 / +6.6 %),
-// and u_r along the wall varies by +-1.3 % (plain) and +-5 % (mixed) at 0.02 a: neither
-// converges to the axisymmetric closed form, both move away from it as zones get smaller.
-// Non-associated perfect plasticity admits shear bands (the critical hardening modulus is
-// positive when psi < phi), and the less locked the zones, the more freely bands form; so the
-// closed form is one solution of the discrete problem among softer ones, and the plain
-// triangles' lock keeps them nearer to it. With psi = 30 (associated) both stay near it: wall
-// +1.4 / +1.8 % at 0.04 a, +2.3 / +2.1 % at 0.02 a, R0 within 1.7 %. The first version (nodal averaging,
-// FLAC3D's NMD for tetrahedra) was worse: +72 % at psi = 0 from a drifting soft mode.
+// One volumetric constraint per pair instead of per zone: about one per node, as Q1P0. It lifts
+// the plain triangles' volumetric lock (prandtl_footing.lua, incompressible_hole.lua in
+// tests/verification), and is not the default because non-associated perfect plasticity
+// (psi < phi) admits shear bands: the less locked the zones, the more freely they form, and the
+// wall of Salencon's hole (salencon.lua) moves further from the closed form than with plain
+// triangles, which stay nearer to it.
 #include "solver/cycle.hpp"
 
 #include <omp.h>
@@ -33,6 +30,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <utility>
 
 #include "bolt/bolt_coupling.hpp"
 #include "constitutive/mohr_coulomb.hpp"
@@ -108,23 +106,51 @@ template <bool kIso>
   }
 }
 
+// The forces a zone's stress `s` puts on its three corners, its in-plane normal stresses shifted
+// by `shift`: the cycle's and measure_state's.
+struct CornerForces {
+  double fx[3], fy[3];
+};
+[[gnu::always_inline]] inline CornerForces corner_forces(const ZoneGeometry& g, const Stress& s, double shift) {
+  const double a = g.area, sxx = s.xx + shift, syy = s.yy + shift;
+  CornerForces f;
+  for (int i = 0; i < 3; ++i) {
+    f.fx[i] = -a * (sxx * g.b[i] + s.xy * g.c[i]);
+    f.fy[i] = -a * (s.xy * g.b[i] + syy * g.c[i]);
+  }
+  return f;
+}
+
 // Nodal forces of one zone from the stress `s`, its in-plane normal stresses shifted by `shift`.
 template <bool kMeasure>
 double add_zone_forces(Mechanics& m, const ZoneGeometry& g, const std::array<int, 3>& dest,
                        const Stress& s, double shift) {
   double* acc = m.acc_force.data();
-  const double a = g.area, sxx = s.xx + shift, syy = s.yy + shift;
+  const CornerForces f = corner_forces(g, s, shift);
   double applied = 0.0;
   for (int i = 0; i < 3; ++i) {
-    const double fx = -a * (sxx * g.b[i] + s.xy * g.c[i]);
-    const double fy = -a * (s.xy * g.b[i] + syy * g.c[i]);
     const size_t d = static_cast<size_t>(dest[static_cast<size_t>(i)]);
-    acc[2 * d] += fx;
-    acc[2 * d + 1] += fy;
-    if constexpr (kMeasure) applied += std::sqrt(fx * fx + fy * fy);
+    acc[2 * d] += f.fx[i];
+    acc[2 * d + 1] += f.fy[i];
+    if constexpr (kMeasure) applied += std::sqrt(f.fx[i] * f.fx[i] + f.fy[i] * f.fy[i]);
   }
   return applied;
 }
+
+// A contact's force on its gridpoint, and the reaction on its edge's ends split by where it
+// projects: {gridpoint x, y, end a x, y, end b x, y} [N/m].
+[[gnu::always_inline]] inline void contact_push(const Contact& c, double p[6]) {
+  const double wa = -(1.0 - c.t), wb = -c.t;
+  p[0] = c.fx;
+  p[1] = c.fy;
+  p[2] = wa * c.fx;
+  p[3] = wa * c.fy;
+  p[4] = wb * c.fx;
+  p[5] = wb * c.fy;
+}
+
+// What a contact adds to the applied force the ratio is measured against: its force on both sides.
+inline double contact_applied(const Contact& c) { return 2.0 * std::sqrt(c.fx * c.fx + c.fy * c.fy); }
 
 bool inverted(const Mechanics& m, const ZoneGeometry& g) {
   double x[3], y[3];
@@ -237,17 +263,9 @@ void contact_pass(Mechanics& m, int begin, int end, Partials& partials) {
       Contact& c = list[i];
       const double overlap = contact_force(c, edges, params[c.material], m.origin.data(), m.u.data(), m.v.data(),
                                            m.step, lost);
-      // The gridpoint takes the force, the edge's ends the reaction split by where it projects.
-      double* p = push + 6 * static_cast<size_t>(i);
-      const double wa = -(1.0 - c.t), wb = -c.t;
-      p[0] = c.fx;
-      p[1] = c.fy;
-      p[2] = wa * c.fx;
-      p[3] = wa * c.fy;
-      p[4] = wb * c.fx;
-      p[5] = wb * c.fy;
+      contact_push(c, push + 6 * static_cast<size_t>(i));
       if constexpr (kMeasure) {
-        applied += 2.0 * std::sqrt(c.fx * c.fx + c.fy * c.fy);
+        applied += contact_applied(c);
         if (overlapping < 0 && overlap > limit) overlapping = i;
       }
     }
@@ -576,10 +594,6 @@ Measure run_cycles(Mechanics& m, int count) {
   return out;
 }
 
-}  // namespace edem
-
-namespace edem {
-
 Measure measure_state(const Mechanics& m) {
   Measure out;
   std::vector<double> f(m.u.size(), 0.0);
@@ -594,17 +608,14 @@ Measure measure_state(const Mechanics& m) {
     shift[k] = member_shift(m, z, group_mean_stress_change(m, members, others[1] < 0 ? 2 : 3));
   }
   for (size_t k = 0; k < m.active.size(); ++k) {
-    const int z = m.active[k];
-    const ZoneGeometry& g = m.geometry[static_cast<size_t>(z)];
-    const Stress& s = m.stress[static_cast<size_t>(z)];
-    const double sxx = s.xx + shift[k], syy = s.yy + shift[k];
-    for (int i = 0; i < 3; ++i) {
-      const double fx = -g.area * (sxx * g.b[i] + s.xy * g.c[i]);
-      const double fy = -g.area * (s.xy * g.b[i] + syy * g.c[i]);
-      const size_t n = static_cast<size_t>(g.node[static_cast<size_t>(i)]);
-      f[2 * n] += fx;
-      f[2 * n + 1] += fy;
-      out.applied += std::sqrt(fx * fx + fy * fy);
+    const size_t z = static_cast<size_t>(m.active[k]);
+    const ZoneGeometry& g = m.geometry[z];
+    const CornerForces zf = corner_forces(g, m.stress[z], shift[k]);
+    for (size_t i = 0; i < 3; ++i) {
+      const size_t n = static_cast<size_t>(g.node[i]);
+      f[2 * n] += zf.fx[i];
+      f[2 * n + 1] += zf.fy[i];
+      out.applied += std::sqrt(zf.fx[i] * zf.fx[i] + zf.fy[i] * zf.fy[i]);
     }
   }
   // Contact forces at the current positions, without a step.
@@ -614,14 +625,14 @@ Measure measure_state(const Mechanics& m) {
     ContactLoss ignored;
     contact_force(now, m.faces.edges.data(), m.joint_params[static_cast<size_t>(c.material)], m.origin.data(),
                   m.u.data(), m.v.data(), 0.0, ignored);
+    double p[6];
+    contact_push(now, p);
     const size_t n = static_cast<size_t>(c.node), a = static_cast<size_t>(e.a), b = static_cast<size_t>(e.b);
-    f[2 * n] += now.fx;
-    f[2 * n + 1] += now.fy;
-    f[2 * a] -= (1.0 - now.t) * now.fx;
-    f[2 * a + 1] -= (1.0 - now.t) * now.fy;
-    f[2 * b] -= now.t * now.fx;
-    f[2 * b + 1] -= now.t * now.fy;
-    out.applied += 2.0 * std::hypot(now.fx, now.fy);
+    for (const auto& [node, k] : {std::pair{n, 0}, std::pair{a, 2}, std::pair{b, 4}}) {
+      f[2 * node] += p[k];
+      f[2 * node + 1] += p[k + 1];
+    }
+    out.applied += contact_applied(now);
   }
   // The bolts as their last cycle left them.
   if (!m.bolt_hosts.gather.empty())

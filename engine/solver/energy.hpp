@@ -1,8 +1,8 @@
-// The energy balance of a run (state/energy.hpp): what the model stores, starting the
+// The energy balance of a run (state/energy_ledger.hpp): what the model stores, starting the
 // accounting, booking what commands and excavation change, the balance as energy() reports it.
 #pragma once
 
-#include "state/energy.hpp"
+#include "state/energy_ledger.hpp"
 
 namespace edem {
 

@@ -20,7 +20,7 @@
 #include "geom/mesh.hpp"
 #include "state/bolts.hpp"
 #include "state/contacts.hpp"
-#include "state/energy.hpp"
+#include "state/energy_ledger.hpp"
 #include "state/joint_params.hpp"
 #include "state/material_params.hpp"
 #include "state/sections.hpp"
@@ -244,7 +244,7 @@ struct Mechanics {
   std::function<void(const RunProgress&)> progress;  // reports a long run (Model::set_progress)
   double progress_every = 0.0;                       // [s] between reports; 0: none
   std::vector<History> histories;
-  EnergyLedger energy;  // the energy balance (state/energy.hpp)
+  EnergyLedger energy;  // the energy balance (state/energy_ledger.hpp)
 };
 
 // The number of threads cycling will use: OpenMP's (or the model's own) for a model with
