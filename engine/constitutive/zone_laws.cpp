@@ -9,6 +9,7 @@ namespace edem {
 extern const ZoneLaw elastic_law;       // constitutive/elastic.cpp
 extern const ZoneLaw mohr_coulomb_law;  // constitutive/mohr_coulomb.cpp
 extern const ZoneLaw null_law;          // constitutive/null_law.cpp
+extern const ZoneLaw strain_softening_law;  // constitutive/strain_softening.cpp
 
 namespace {
 
@@ -16,6 +17,7 @@ constexpr const ZoneLaw* kLaws[] = {
     &elastic_law,       // MaterialModel::elastic
     &mohr_coulomb_law,  // MaterialModel::mohr
     &null_law,          // MaterialModel::null
+    &strain_softening_law,
 };
 
 }  // namespace
