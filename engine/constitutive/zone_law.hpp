@@ -2,7 +2,10 @@
 // them). The entry names the model, lists the keys it takes beyond the elastic constants (with
 // units and ranges: the material{} schema and the reference are made from them), checks them and
 // derives the kernel's constants (derive), updates a zone's stress by a strain increment
-// (update), and says what the rest of the engine asks of a model (is_void, has_strength).
+// (update; the implicit prepass takes its tangent from it: exact for elastic, central
+// differences otherwise), names the per-zone state variable it keeps (history: saved in
+// checkpoints, shown in zone views), and says what the rest of the engine asks of a model
+// (is_void, has_strength, unsymmetric).
 //
 // A law's id is its position in the registry: MaterialDef::model and MaterialParams::model hold
 // it (MaterialModel's enumerators name the first three). Id 0, elastic, is the cycle's inlined
@@ -70,7 +73,7 @@ struct ZoneLaw {
 std::span<const ZoneLaw* const> zone_laws();
 // The law of an id; ids come from the registry, so they are always valid.
 const ZoneLaw& zone_law(MaterialModel id);
-// The id of a law by name, or nullptr-like: false when no law has that name.
+// Sets `id` to the id of the law named `name`; false (id untouched) when no law has that name.
 bool find_zone_law(std::string_view name, MaterialModel& id);
 // The laws' names, in id order (material{ model } choices).
 const std::vector<std::string>& zone_law_names();
