@@ -73,7 +73,7 @@ Key law_key(const ZoneLawParam& param, const std::string& help) {
           param.absent};
 }
 
-// The help lines of the laws' keys, kept for the schema's string views.
+// The help lines of the laws' keys and, last, the command's own: kept for the schema's string views.
 const std::vector<std::string>& law_key_helps() {
   static const std::vector<std::string> helps = [] {
     std::vector<std::string> all;
