@@ -20,14 +20,12 @@ Principal in_plane_principal(const Stress& s) {
   return {centre - radius, centre + radius};
 }
 
-std::uint8_t mohr_coulomb_update(const MaterialParams& m, Stress& s, double dexx, double deyy,
-                                 double dgxy, double dezz) {
-  elastic_update(m, s, dexx, deyy, dgxy, dezz);
-  return mohr_coulomb_return(mohr_constants(m), s, nullptr);
-}
+namespace {
 
-std::uint8_t mohr_coulomb_return(const MohrConstants& m, Stress& s, double* shear_lambda) {
-
+// The return mapping, one body for MaterialParams and MohrConstants (both name e1, e2, nphi,
+// npsi, csnp, tension), inlined into each kernel so that none pays a call or a copy.
+template <class P>
+[[gnu::always_inline]] inline std::uint8_t return_mapping(const P& m, Stress& s, double* shear_lambda) {
   // In-plane principal stresses a <= b and the direction of b (cos 2t, sin 2t).
   const double centre = 0.5 * (s.xx + s.yy), half = 0.5 * (s.xx - s.yy);
   const double radius = std::sqrt(half * half + s.xy * s.xy);  // hypot is several times slower
@@ -88,6 +86,18 @@ std::uint8_t mohr_coulomb_return(const MohrConstants& m, Stress& s, double* shea
   return state;
 }
 
+}  // namespace
+
+std::uint8_t mohr_coulomb_update(const MaterialParams& m, Stress& s, double dexx, double deyy,
+                                 double dgxy, double dezz) {
+  elastic_update(m, s, dexx, deyy, dgxy, dezz);
+  return return_mapping(m, s, nullptr);
+}
+
+std::uint8_t mohr_coulomb_return(const MohrConstants& m, Stress& s, double* shear_lambda) {
+  return return_mapping(m, s, shear_lambda);
+}
+
 }  // namespace edem
 
 namespace edem {
@@ -109,9 +119,11 @@ void derive_mohr(const MaterialDef& def, MaterialParams& p) {
   set_mohr_strength(p, d.cohesion, d.friction, d.dilation, d.tension);
 }
 
+// The registry's kernel: the trial and the return mapping in one body.
 std::uint8_t update_mohr(const MaterialParams& p, Stress& s, double dxx, double dyy, double dxy, double dzz,
                          double&) {
-  return mohr_coulomb_update(p, s, dxx, dyy, dxy, dzz);
+  elastic_update(p, s, dxx, dyy, dxy, dzz);
+  return return_mapping(p, s, nullptr);
 }
 
 bool unsymmetric_mohr(const MaterialParams& p) { return p.npsi != p.nphi; }

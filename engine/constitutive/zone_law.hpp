@@ -71,8 +71,11 @@ struct ZoneLaw {
 
 // The registry (zone_laws.cpp): every law, in id order.
 std::span<const ZoneLaw* const> zone_laws();
-// The law of an id; ids come from the registry, so they are always valid.
-const ZoneLaw& zone_law(MaterialModel id);
+// The registry's table, in id order (zone_laws.cpp); read it through zone_law().
+extern const ZoneLaw* const kZoneLaws[];
+// The law of an id; ids come from the registry, so they are always valid. Inline: the cycle asks
+// it once per plastic zone update.
+inline const ZoneLaw& zone_law(MaterialModel id) { return *kZoneLaws[static_cast<size_t>(id)]; }
 // Sets `id` to the id of the law named `name`; false (id untouched) when no law has that name.
 bool find_zone_law(std::string_view name, MaterialModel& id);
 // The laws' names, in id order (material{ model } choices).

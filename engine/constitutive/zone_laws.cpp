@@ -11,16 +11,12 @@ extern const ZoneLaw mohr_coulomb_law;  // constitutive/mohr_coulomb.cpp
 extern const ZoneLaw null_law;          // constitutive/null_law.cpp
 extern const ZoneLaw strain_softening_law;  // constitutive/strain_softening.cpp
 
-namespace {
-
-constexpr const ZoneLaw* kLaws[] = {
+extern const ZoneLaw* const kZoneLaws[] = {
     &elastic_law,       // MaterialModel::elastic
     &mohr_coulomb_law,  // MaterialModel::mohr
     &null_law,          // MaterialModel::null
     &strain_softening_law,
 };
-
-}  // namespace
 
 const ZoneTable& law_table(const MaterialDef& def, std::string_view key) {
   static const ZoneTable none;
@@ -29,13 +25,14 @@ const ZoneTable& law_table(const MaterialDef& def, std::string_view key) {
   return none;
 }
 
-std::span<const ZoneLaw* const> zone_laws() { return kLaws; }
+// The table's length, here where its definition is seen.
+constexpr size_t kLawCount = sizeof(kZoneLaws) / sizeof(kZoneLaws[0]);
 
-const ZoneLaw& zone_law(MaterialModel id) { return *kLaws[static_cast<size_t>(id)]; }
+std::span<const ZoneLaw* const> zone_laws() { return {kZoneLaws, kLawCount}; }
 
 bool find_zone_law(std::string_view name, MaterialModel& id) {
-  for (size_t i = 0; i < std::size(kLaws); ++i)
-    if (kLaws[i]->name == name) {
+  for (size_t i = 0; i < kLawCount; ++i)
+    if (kZoneLaws[i]->name == name) {
       id = static_cast<MaterialModel>(i);
       return true;
     }
@@ -45,7 +42,7 @@ bool find_zone_law(std::string_view name, MaterialModel& id) {
 const std::vector<std::string>& zone_law_names() {
   static const std::vector<std::string> names = [] {
     std::vector<std::string> all;
-    for (const ZoneLaw* law : kLaws) all.emplace_back(law->name);
+    for (const ZoneLaw* law : kZoneLaws) all.emplace_back(law->name);
     return all;
   }();
   return names;
@@ -53,7 +50,7 @@ const std::vector<std::string>& zone_law_names() {
 
 std::string laws_taking(std::string_view key) {
   std::string names;
-  for (const ZoneLaw* law : kLaws)
+  for (const ZoneLaw* law : kZoneLaws)
     for (const ZoneLawParam& param : law->params)
       if (param.key == key) names += (names.empty() ? "\"" : " or \"") + std::string(law->name) + "\"";
   return names;
