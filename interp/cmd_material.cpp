@@ -1,42 +1,108 @@
-// Materials of the zones: material{} defines one, assign{} gives it to zones.
+// Materials of the zones: material{} defines one (its models and their keys come from the zone-law
+// registry, constitutive/zone_laws.cpp), assign{} gives it to zones.
+#include <string>
 #include <utility>
+#include <vector>
 
 #include <lua.hpp>
 
+#include <fmt/format.h>
+
 #include "commands.hpp"
+#include "constitutive/zone_law.hpp"
 #include "context.hpp"
 
 namespace edem {
 namespace {
-
-const std::vector<std::string>& material_models() {
-  static const std::vector<std::string> names = {"elastic", "mohr", "null"};
-  return names;
-}
-
-MaterialModel model_of(const std::string& name) {
-  if (name == "mohr") return MaterialModel::mohr;
-  if (name == "null") return MaterialModel::null;
-  return MaterialModel::elastic;
-}
 
 // The keys as given, unset where not: the engine checks them (material_params).
 void optional_number(const Args& args, const char* key, double& into) {
   if (args.has(key)) into = args.number(key);
 }
 
+// Each law's own keys (constitutive/zone_laws.cpp), each key once, in registry order.
+std::vector<const ZoneLawParam*> law_params() {
+  std::vector<const ZoneLawParam*> params;
+  for (const ZoneLaw* law : zone_laws())
+    for (const ZoneLawParam& param : law->params) {
+      bool seen = false;
+      for (const ZoneLawParam* p : params) seen = seen || p->key == param.key;
+      if (!seen) params.push_back(&param);
+    }
+  return params;
+}
+
 int run_material(lua_State*, Context& context, const Args& args) {
   MaterialDef def;
   def.name = args.string("name");
-  def.model = model_of(args.string("model"));
+  find_zone_law(args.string("model"), def.model);  // the schema allows only the registry's names
   def.density = args.number("density");
   for (const auto& [key, into] : {std::pair{"young", &def.young}, std::pair{"poisson", &def.poisson},
-                                  std::pair{"bulk", &def.bulk}, std::pair{"shear", &def.shear},
-                                  std::pair{"cohesion", &def.cohesion}, std::pair{"friction", &def.friction},
-                                  std::pair{"dilation", &def.dilation}, std::pair{"tension", &def.tension}})
+                                  std::pair{"bulk", &def.bulk}, std::pair{"shear", &def.shear}})
     optional_number(args, key, *into);
+  for (const ZoneLawParam* param : law_params()) {
+    if (!args.has(param->key)) continue;
+    if (param->number)
+      def.*param->number = args.number(param->key);
+    else
+      def.tables.push_back({std::string(param->key), args.get<ZoneTable>(param->key)});
+  }
   context.model().add_material(def);
   return 0;
+}
+
+// The command's help: the laws and what they are.
+std::string material_help() {
+  std::string laws;
+  for (const ZoneLaw* law : zone_laws())
+    laws += fmt::format("{}`{}` ({})", laws.empty() ? "" : "; ", law->name, law->description);
+  return "Defines a zone material by its model: " + laws +
+         ". Give the elastic constants as young and poisson or as bulk and shear. Defining a name "
+         "again replaces that material, in the zones that have it too.";
+}
+
+// The schema's key for a law's parameter: "cohesion (mohr only)".
+Key law_key(const ZoneLawParam& param, const std::string& help) {
+  const bool table = param.number == nullptr;
+  return {param.key,
+          table ? Type::pairs : Type::number,
+          param.unit,
+          table ? any_value : Range{param.lo, param.hi, param.lo_open, param.hi_open},
+          kOptional,
+          help,
+          param.absent};
+}
+
+// The help lines of the laws' keys and, last, the command's own: kept for the schema's string views.
+const std::vector<std::string>& law_key_helps() {
+  static const std::vector<std::string> helps = [] {
+    std::vector<std::string> all;
+    for (const ZoneLawParam* param : law_params()) {
+      std::string takers;
+      for (const ZoneLaw* law : zone_laws())
+        for (const ZoneLawParam& own : law->params)
+          if (own.key == param->key) takers += (takers.empty() ? "" : ", ") + std::string(law->name);
+      all.push_back(fmt::format("{} ({} only){}", param->help, takers, param->note));
+    }
+    all.push_back(material_help());
+    return all;
+  }();
+  return helps;
+}
+
+std::vector<Key> material_keys() {
+  std::vector<Key> keys = {
+      {"model", Type::string, "", any_value, R"("elastic")", "the constitutive model", {}, zone_law_names},
+      {"density", Type::number, "kg/m^3", ge(0), "0", "mass density"},
+      {"young", Type::number, "Pa", gt(0), kOptional, "Young's modulus (with poisson)", "bulk and shear"},
+      {"poisson", Type::number, "-", above_below(-1, 0.5), kOptional, "Poisson's ratio (with young)",
+       "bulk and shear"},
+      {"bulk", Type::number, "Pa", gt(0), kOptional, "bulk modulus (with shear)", "young and poisson"},
+      {"shear", Type::number, "Pa", gt(0), kOptional, "shear modulus (with bulk)", "young and poisson"},
+  };
+  const std::vector<const ZoneLawParam*> params = law_params();
+  for (size_t i = 0; i < params.size(); ++i) keys.push_back(law_key(*params[i], law_key_helps()[i]));
+  return keys;
 }
 
 int run_assign(lua_State*, Context& context, const Args& args) {
@@ -52,42 +118,12 @@ int run_assign(lua_State*, Context& context, const Args& args) {
 const Command& material_command() {
   static const Command command{
       .name = "material",
-      .help =
-          "Defines a zone material: elastic, Mohr-Coulomb (`mohr`: elastic until it fails in "
-          "shear or tension) or `null` (an empty zone, as excavated). Give the elastic "
-          "constants as young and poisson or as bulk and shear. Defining a name again replaces "
-          "that material, in the zones that have it too.",
+      .help = law_key_helps().back(),
       .positional =
           {
               {"name", Type::string, "", any_value, kRequired, "the material's name"},
           },
-      .keys =
-          {
-              {"model",
-               Type::string,
-               "",
-               any_value,
-               R"("elastic")",
-               "the constitutive model",
-               {},
-               material_models},
-              {"density", Type::number, "kg/m^3", ge(0), "0", "mass density"},
-              {"young", Type::number, "Pa", gt(0), kOptional, "Young's modulus (with poisson)",
-               "bulk and shear"},
-              {"poisson", Type::number, "-", above_below(-1, 0.5), kOptional,
-               "Poisson's ratio (with young)", "bulk and shear"},
-              {"bulk", Type::number, "Pa", gt(0), kOptional, "bulk modulus (with shear)",
-               "young and poisson"},
-              {"shear", Type::number, "Pa", gt(0), kOptional, "shear modulus (with bulk)",
-               "young and poisson"},
-              {"cohesion", Type::number, "Pa", ge(0), kOptional, "cohesion (mohr only)", "0"},
-              {"friction", Type::number, "deg", from_below(0, 90), kOptional,
-               "friction angle (mohr only)", "0"},
-              {"dilation", Type::number, "deg", ge(0), kOptional,
-               "dilation angle, at most friction (mohr only)", "0"},
-              {"tension", Type::number, "Pa", ge(0), kOptional,
-               "tensile strength (mohr only); capped at cohesion / tan(friction)", "0"},
-          },
+      .keys = material_keys(),
       .run = run_material,
       .usage =
           "material{ \"rock\", model = \"mohr\", density = 2650, young = 7.4e9, poisson = 0.136, "

@@ -186,6 +186,7 @@ void push_zone(lua_State* L, const Model& model, size_t index) {
   set_field(L, "state", zone_state_name(view.state));
   if (!view.material.empty()) set_field(L, "material", view.material);
   if (view.excavated > 0) set_field(L, "excavated", view.excavated);
+  if (!view.history_name.empty()) set_field(L, view.history_name.c_str(), view.history);
 }
 
 void push_gridpoint(lua_State* L, const Model& model, size_t index) {
@@ -491,7 +492,8 @@ const Command& zones_command() {
           "(stresses [Pa], compression negative), s1, s3 (in-plane principal stresses, s1 <= "
           "s3), state (\"elastic\", \"shear\", \"tension\", ... with \"-past\" for failure "
           "in the past), material (name, nil when none is assigned), excavated (the stage "
-          "that excavated it, nil while in place)",
+          "that excavated it, nil while in place), and the state variable of its zone law under "
+          "the law's name for it, when the law keeps one",
       .usage = "for z in zones() do total = total + z.area end",
   };
   return command;

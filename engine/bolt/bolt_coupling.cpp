@@ -8,6 +8,7 @@
 #include <limits>
 #include <memory>
 
+#include "constitutive/zone_law.hpp"
 #include "core/error.hpp"
 
 namespace edem {
@@ -18,7 +19,7 @@ size_t at(int i) { return static_cast<size_t>(i); }
 // A zone the bolts can be tied to: rock in place.
 bool rock_zone(const Mechanics& m, int z) {
   const int material = m.zone_material[at(z)];
-  return material >= 0 && m.params[at(material)].model != MaterialModel::null && m.zone_excavated[at(z)] == 0;
+  return material >= 0 && !zone_law(m.params[at(material)].model).is_void && m.zone_excavated[at(z)] == 0;
 }
 
 // A bolt node tied to a zone that is no longer rock (its rock excavated or mucked out since it was

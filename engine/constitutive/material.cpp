@@ -1,14 +1,16 @@
+// Zone materials: the checks every law shares (name, density, the elastic pair), then the law's own
+// (its registry entry's derive).
 #include "constitutive/material.hpp"
 
+#include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "constitutive/zone_law.hpp"
 #include "core/error.hpp"
 
 namespace edem {
@@ -20,15 +22,23 @@ void check(bool ok, const char* key, double value, const char* rule) {
   if (!ok) fail("{} must be {}, got {}", key, rule, value);
 }
 
-double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
-
-const char* model_name(MaterialModel model) {
-  switch (model) {
-    case MaterialModel::elastic: return "elastic";
-    case MaterialModel::mohr: return "mohr";
-    case MaterialModel::null: return "null";
-  }
-  return "elastic";
+// The keys of the other laws given to this one: they would be silently unused.
+void check_foreign_keys(const MaterialDef& def, const ZoneLaw& law) {
+  std::vector<std::string> foreign;
+  std::string takers;
+  for (const ZoneLaw* other : zone_laws())
+    for (const ZoneLawParam& param : other->params) {
+      const bool set = param.number ? given(def.*param.number) : !law_table(def, param.key).empty();
+      if (!set) continue;
+      bool own = false;
+      for (const ZoneLawParam& mine : law.params) own = own || mine.key == param.key;
+      if (own || std::find(foreign.begin(), foreign.end(), param.key) != foreign.end()) continue;
+      foreign.emplace_back(param.key);
+      if (takers.empty()) takers = laws_taking(param.key);
+    }
+  if (!foreign.empty())
+    fail("{} need{} model = {} (this material's model is \"{}\")", fmt::join(foreign, ", "),
+         foreign.size() == 1 ? "s" : "", takers, law.name);
 }
 
 }  // namespace
@@ -54,19 +64,10 @@ MaterialParams material_params(const MaterialDef& def) {
     fail("{} needs {} too (or give bulk and shear)", young ? "young" : "poisson", young ? "poisson" : "young");
   if (bulk != shear)
     fail("{} needs {} too (or give young and poisson)", bulk ? "bulk" : "shear", bulk ? "shear" : "bulk");
-  if (!young && !bulk && def.model != MaterialModel::null)
-    fail("missing elastic constants: give young and poisson, or bulk and shear");
-  // Strength belongs to the Mohr-Coulomb model: given to another, it would be silently unused.
-  if (def.model != MaterialModel::mohr) {
-    std::vector<std::string> strengths;
-    for (const auto& [key, value] : {std::pair{"cohesion", def.cohesion}, std::pair{"friction", def.friction},
-                                     std::pair{"dilation", def.dilation}, std::pair{"tension", def.tension}})
-      if (given(value)) strengths.emplace_back(key);
-    if (!strengths.empty())
-      fail("{} need{} model = \"mohr\" (this material's model is \"{}\")", fmt::join(strengths, ", "),
-           strengths.size() == 1 ? "s" : "", model_name(def.model));
-  }
-  if (def.model == MaterialModel::null) return p;
+  const ZoneLaw& law = zone_law(def.model);
+  if (!young && !bulk && !law.is_void) fail("missing elastic constants: give young and poisson, or bulk and shear");
+  check_foreign_keys(def, law);
+  if (law.is_void) return p;
   if (young) {
     check(std::isfinite(def.young) && def.young > 0.0, "young", def.young, "> 0");
     check(def.poisson > -1.0 && def.poisson < 0.5, "poisson", def.poisson, "in (-1, 0.5)");
@@ -80,23 +81,7 @@ MaterialParams material_params(const MaterialDef& def) {
   }
   p.e1 = p.bulk + 4.0 * p.shear / 3.0;
   p.e2 = p.bulk - 2.0 * p.shear / 3.0;
-  if (def.model != MaterialModel::mohr) return p;
-
-  const MaterialDef d = with_strength_defaults(def);
-  check(std::isfinite(d.cohesion) && d.cohesion >= 0.0, "cohesion", d.cohesion, ">= 0");
-  check(d.friction >= 0.0 && d.friction < 90.0, "friction", d.friction, "in [0, 90)");
-  if (!(d.dilation <= d.friction)) fail("dilation must be <= friction ({}), got {}", d.friction, d.dilation);
-  check(d.dilation >= 0.0, "dilation", d.dilation, ">= 0");
-  check(std::isfinite(d.tension) && d.tension >= 0.0, "tension", d.tension, ">= 0");
-  const double sphi = std::sin(radians(d.friction)), spsi = std::sin(radians(d.dilation));
-  p.cohesion = d.cohesion;
-  p.nphi = (1.0 + sphi) / (1.0 - sphi);
-  p.npsi = (1.0 + spsi) / (1.0 - spsi);
-  p.csnp = 2.0 * d.cohesion * std::sqrt(p.nphi);
-  // The tension cut-off cannot lie beyond the apex of the shear cone (as in FLAC and UDEC).
-  p.tension = d.tension;
-  if (d.friction > 0.0)
-    p.tension = std::min(p.tension, d.cohesion / std::tan(radians(d.friction)));
+  if (law.derive) law.derive(def, p);
   return p;
 }
 

@@ -8,7 +8,7 @@
 namespace edem {
 
 // Checks a definition (a name; finite, physical values; exactly one elastic pair, both of it;
-// strength only for model mohr) and derives the parameters. Throws edem::Error naming the key
+// each law's own keys only for that law) and derives the parameters. Throws edem::Error naming the key
 // and the bad value. The one place a material is checked: material{} passes its message on.
 MaterialParams material_params(const MaterialDef& def);
 

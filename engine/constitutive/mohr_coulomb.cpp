@@ -1,7 +1,14 @@
+// Zone law `mohr`: Mohr-Coulomb with tension cut-off (the kernel, mohr_coulomb.hpp), and its
+// registry entry: keys cohesion, friction, dilation, tension.
 #include "constitutive/mohr_coulomb.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numbers>
 
+#include "constitutive/zone_law.hpp"
+#include "core/error.hpp"
 #include "core/physics_defs.hpp"
 
 namespace edem {
@@ -13,10 +20,12 @@ Principal in_plane_principal(const Stress& s) {
   return {centre - radius, centre + radius};
 }
 
-std::uint8_t mohr_coulomb_update(const MaterialParams& m, Stress& s, double dexx, double deyy,
-                                 double dgxy, double dezz) {
-  elastic_update(m, s, dexx, deyy, dgxy, dezz);
+namespace {
 
+// The return mapping, one body for MaterialParams and MohrConstants (both name e1, e2, nphi,
+// npsi, csnp, tension), inlined into each kernel so that none pays a call or a copy.
+template <class P>
+[[gnu::always_inline]] inline std::uint8_t return_mapping(const P& m, Stress& s, double* shear_lambda) {
   // In-plane principal stresses a <= b and the direction of b (cos 2t, sin 2t).
   const double centre = 0.5 * (s.xx + s.yy), half = 0.5 * (s.xx - s.yy);
   const double radius = std::sqrt(half * half + s.xy * s.xy);  // hypot is several times slower
@@ -51,6 +60,7 @@ std::uint8_t mohr_coulomb_update(const MaterialParams& m, Stress& s, double dexx
     p[0] -= lambda * (e1 - e2 * m.npsi);
     p[1] -= lambda * e2 * (1.0 - m.npsi);
     p[2] -= lambda * (e2 - e1 * m.npsi);
+    if (shear_lambda) *shear_lambda = lambda;
     state = kShearNow;
   } else {
     const double drop = m.tension - p[2];  // < 0
@@ -75,5 +85,93 @@ std::uint8_t mohr_coulomb_update(const MaterialParams& m, Stress& s, double dexx
   s.xy = new_radius * sin2;
   return state;
 }
+
+}  // namespace
+
+std::uint8_t mohr_coulomb_update(const MaterialParams& m, Stress& s, double dexx, double deyy,
+                                 double dgxy, double dezz) {
+  elastic_update(m, s, dexx, deyy, dgxy, dezz);
+  return return_mapping(m, s, nullptr);
+}
+
+std::uint8_t mohr_coulomb_return(const MohrConstants& m, Stress& s, double* shear_lambda) {
+  return return_mapping(m, s, shear_lambda);
+}
+
+}  // namespace edem
+
+namespace edem {
+namespace {
+
+double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
+
+void check(bool ok, const char* key, double value, const char* rule) {
+  if (!ok) fail("{} must be {}, got {}", key, rule, value);
+}
+
+void derive_mohr(const MaterialDef& def, MaterialParams& p) {
+  const MaterialDef d = with_strength_defaults(def);
+  check(std::isfinite(d.cohesion) && d.cohesion >= 0.0, "cohesion", d.cohesion, ">= 0");
+  check(d.friction >= 0.0 && d.friction < 90.0, "friction", d.friction, "in [0, 90)");
+  if (!(d.dilation <= d.friction)) fail("dilation must be <= friction ({}), got {}", d.friction, d.dilation);
+  check(d.dilation >= 0.0, "dilation", d.dilation, ">= 0");
+  check(std::isfinite(d.tension) && d.tension >= 0.0, "tension", d.tension, ">= 0");
+  set_mohr_strength(p, d.cohesion, d.friction, d.dilation, d.tension);
+}
+
+// The registry's kernel: the trial and the return mapping in one body.
+std::uint8_t update_mohr(const MaterialParams& p, Stress& s, double dxx, double dyy, double dxy, double dzz,
+                         double&) {
+  elastic_update(p, s, dxx, dyy, dxy, dzz);
+  return return_mapping(p, s, nullptr);
+}
+
+bool unsymmetric_mohr(const MaterialParams& p) { return p.npsi != p.nphi; }
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+}  // namespace
+
+MohrConstants mohr_strength(double e1, double e2, double cohesion, double friction, double dilation,
+                            double tension) {
+  const double sphi = std::sin(radians(friction)), spsi = std::sin(radians(dilation));
+  MohrConstants k{e1, e2, (1.0 + sphi) / (1.0 - sphi), (1.0 + spsi) / (1.0 - spsi), 0.0, tension};
+  k.csnp = 2.0 * cohesion * std::sqrt(k.nphi);
+  // The tension cut-off cannot lie beyond the apex of the shear cone (as in FLAC and UDEC).
+  if (friction > 0.0) k.tension = std::min(k.tension, cohesion / std::tan(radians(friction)));
+  return k;
+}
+
+void set_mohr_strength(MaterialParams& p, double cohesion, double friction, double dilation, double tension) {
+  const MohrConstants k = mohr_strength(p.e1, p.e2, cohesion, friction, dilation, tension);
+  p.cohesion = cohesion;
+  p.nphi = k.nphi;
+  p.npsi = k.npsi;
+  p.csnp = k.csnp;
+  p.tension = k.tension;
+}
+
+// The strength keys, shared with the laws that build on this one.
+const ZoneLawParam kMohrParams[4] = {
+    {.key = "cohesion", .unit = "Pa", .lo = 0, .hi = kInf, .help = "cohesion", .absent = "0",
+     .number = &MaterialDef::cohesion},
+    {.key = "friction", .unit = "deg", .lo = 0, .hi = 90, .hi_open = true, .help = "friction angle",
+     .absent = "0", .number = &MaterialDef::friction},
+    {.key = "dilation", .unit = "deg", .lo = 0, .hi = kInf, .help = "dilation angle, at most friction",
+     .absent = "0", .number = &MaterialDef::dilation},
+    {.key = "tension", .unit = "Pa", .lo = 0, .hi = kInf, .help = "tensile strength",
+     .note = "; capped at cohesion / tan(friction)", .absent = "0", .number = &MaterialDef::tension},
+};
+
+extern const ZoneLaw mohr_coulomb_law;
+const ZoneLaw mohr_coulomb_law{
+    .name = "mohr",
+    .description = "Mohr-Coulomb: elastic until it fails in shear or tension",
+    .params = kMohrParams,
+    .derive = derive_mohr,
+    .update = update_mohr,
+    .unsymmetric = unsymmetric_mohr,
+    .has_strength = true,
+};
 
 }  // namespace edem

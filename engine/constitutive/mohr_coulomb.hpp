@@ -32,9 +32,34 @@ inline double compliance_product(const MaterialParams& m, const Stress& a, const
   return ma * mb / m.bulk + deviatoric / (2.0 * m.shear);
 }
 
-// Returns the zone state bits of this step (kShearNow, kTensionNow, or 0 when elastic).
+// The constants of the return mapping: moduli and one strength.
+struct MohrConstants {
+  double e1, e2;           // K + 4G/3, K - 2G/3 [Pa]
+  double nphi, npsi, csnp;  // as in MaterialParams
+  double tension;          // capped [Pa]
+};
+inline MohrConstants mohr_constants(const MaterialParams& p) {
+  return {p.e1, p.e2, p.nphi, p.npsi, p.csnp, p.tension};
+}
+
+// The return mapping alone, of a stress that is already the elastic trial. On shear failure,
+// `*shear_lambda` (when not null) gets the plastic multiplier: the plastic principal strain
+// increments are lambda * (1, 0, -npsi) along (s1, s2, s3). Returns the state bits.
+std::uint8_t mohr_coulomb_return(const MohrConstants& m, Stress& s, double* shear_lambda);
+
+// The elastic trial and the return mapping. Returns the zone state bits of this step
+// (kShearNow, kTensionNow, or 0 when elastic).
 std::uint8_t mohr_coulomb_update(const MaterialParams& m, Stress& s, double dexx, double deyy,
                                  double dgxy, double dezz = 0.0);
+
+// The return mapping's constants of a strength: cohesion and tension [Pa], friction and dilation
+// [deg], with the moduli e1, e2. Unchecked.
+MohrConstants mohr_strength(double e1, double e2, double cohesion, double friction, double dilation,
+                            double tension);
+
+// Sets the Mohr-Coulomb constants of `p` (nphi, npsi, csnp, the capped tension) from a
+// strength: cohesion and tension [Pa], friction and dilation [deg]. Unchecked.
+void set_mohr_strength(MaterialParams& p, double cohesion, double friction, double dilation, double tension);
 
 // In-plane principal stresses of s: first the most compressive.
 struct Principal {

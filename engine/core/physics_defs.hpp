@@ -21,7 +21,18 @@ namespace edem {
 
 inline constexpr double kUnset = std::numeric_limits<double>::quiet_NaN();
 
+// A zone law's id: its position in the registry (constitutive/zone_laws.cpp). The enumerators
+// name the first laws there; the registry may hold more, named by no enumerator.
 enum class MaterialModel : std::uint8_t { elastic, mohr, null };
+
+// A piecewise-linear table of a zone law's parameter: {abscissa, value} pairs.
+using ZoneTable = std::vector<std::array<double, 2>>;
+
+// A table key of a zone law as given (material{ cohesion_table = ... }).
+struct ZoneLawTable {
+  std::string key;
+  ZoneTable points;
+};
 
 struct MaterialDef {
   std::string name;
@@ -36,6 +47,7 @@ struct MaterialDef {
   double friction = kUnset;  // [deg]
   double dilation = kUnset;  // [deg], at most friction
   double tension = kUnset;   // tensile strength [Pa]; capped at cohesion / tan(friction)
+  std::vector<ZoneLawTable> tables;  // the law's table keys given, by key (zone_law.hpp)
 };
 
 // How a joint's normal stress grows with closure.
@@ -282,6 +294,10 @@ struct ZoneView {
   std::uint8_t state = 0;
   std::string material;  // "" when none assigned
   int excavated = 0;     // the stage that excavated it (0: in place)
+  // The state variable of its zone law, when the law keeps one (ZoneLaw::history): its name
+  // ("" when none) and value.
+  std::string history_name;
+  double history = 0.0;
 };
 
 // How a potential-crack section broke (crack/criteria.hpp).

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "constitutive/zone_law.hpp"
 #include "contact/detect.hpp"
 #include "core/error.hpp"
 #include "core/names.hpp"
@@ -70,11 +71,11 @@ void add_zones_within(const Mesh& mesh, const std::vector<char>& active, const S
 
 RockStrength strength_of(const Mechanics& m, int material, int seed, Vec2 at) {
   const MaterialDef& def = m.materials[static_cast<size_t>(material)];
-  if (def.model != MaterialModel::mohr)
+  if (!zone_law(def.model).has_strength)
     fail("crackseed {}: the rock at ({:.6g}, {:.6g}) is of material '{}', which has no strength "
          "({}); give crackseed{{ material = ... }} a mohr_coulomb material whose cohesion, "
          "friction and tension judge it",
-         seed + 1, at.x, at.y, def.name, def.model == MaterialModel::null ? "null" : "elastic");
+         seed + 1, at.x, at.y, def.name, zone_law(def.model).name);
   return {def.cohesion, def.friction, def.tension};
 }
 

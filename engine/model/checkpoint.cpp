@@ -49,15 +49,18 @@ template <class Ar> void fields(Ar& ar, SizeField& f) {
 template <class Ar> void fields(Ar& ar, EdgeOrigin& e) {
   ar("kind", e.kind); ar("set", e.set); ar("source", e.source); ar("glued", e.glued);
 }
+template <class Ar> void fields(Ar& ar, ZoneLawTable& t) { ar("key", t.key); ar("points", t.points); }
 template <class Ar> void fields(Ar& ar, MaterialDef& m) {
   ar("name", m.name); ar("model", m.model); ar("density", m.density); ar("young", m.young);
   ar("poisson", m.poisson); ar("bulk", m.bulk); ar("shear", m.shear); ar("cohesion", m.cohesion);
   ar("friction", m.friction); ar("dilation", m.dilation); ar("tension", m.tension);
+  optional_member(ar, "tables", m.tables, {});  // files older than zone-law tables have none
 }
 template <class Ar> void fields(Ar& ar, MaterialParams& p) {
   ar("model", p.model); ar("density", p.density); ar("bulk", p.bulk); ar("shear", p.shear); ar("e1", p.e1);
   ar("e2", p.e2); ar("cohesion", p.cohesion); ar("nphi", p.nphi); ar("npsi", p.npsi); ar("csnp", p.csnp);
   ar("tension", p.tension);
+  optional_member(ar, "law_data", p.law_data, {});
 }
 template <class Ar> void fields(Ar& ar, SolverSettings& s) {
   ar("mode", s.mode); ar("damping", s.damping); ar("local_damping", s.local_damping); ar("step", s.step);
@@ -245,7 +248,9 @@ template <class Ar> void fields(Ar& ar, Mechanics& m) {
   ar("jassign_regions", m.jassign_regions); ar("jassign_material", m.jassign_material);
   // state per zone, per node
   ar("zone_material", m.zone_material); ar("stress", m.stress); ar("mean_stress_ref", m.mean_stress_ref);
-  ar("zone_state", m.zone_state); ar("node_count", m.node_count); ar("gp_node", m.gp_node);
+  ar("zone_state", m.zone_state);
+  optional_member(ar, "zone_history", m.zone_history, {});  // older files: none; zeros (check_sizes)
+  ar("node_count", m.node_count); ar("gp_node", m.gp_node);
   ar("position", m.position); ar("u", m.u); ar("v", m.v); ar("origin", m.origin); ar("force", m.force);
   ar("load", m.load); ar("fix", m.fix); ar("node_block", m.node_block); ar("boundary", m.boundary);
   // contacts, potential cracks, excavation, bolts
@@ -516,6 +521,7 @@ void check_sizes(const Mechanics& m, const Mesh& mesh) {
   expect(m.zone_material.size(), zones, "zone_material");
   expect(m.stress.size(), zones, "stress");
   expect(m.zone_state.size(), zones, "zone_state");
+  expect(m.zone_history.size(), zones, "zone_history");
   expect(m.zone_excavated.size(), zones, "zone_excavated");
   expect(m.gp_node.size(), static_cast<size_t>(mesh.gp_count()), "gp_node");
   for (const auto* v : {&m.position, &m.u, &m.v, &m.origin, &m.force, &m.load}) expect(v->size(), 2 * nodes, "node vector");
@@ -645,6 +651,7 @@ struct CheckpointAccess {
       model.mesh_ = unflatten(std::move(mesh));
       Mechanics& m = *model.mechanics_;
       r("mechanics", m);
+      if (m.zone_history.empty()) m.zone_history.assign(m.zone_state.size(), 0.0);
       check_sizes(m, model.mesh_);
       check_indices(m, model.mesh_);
       if (!(m.faces.median_edge > 0.0)) m.faces.median_edge = median_edge_length(m.faces, m.position);

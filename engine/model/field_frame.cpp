@@ -2,6 +2,7 @@
 #include <cmath>
 #include <optional>
 
+#include "constitutive/zone_law.hpp"
 #include "contact/detect.hpp"
 #include "core/error.hpp"
 #include "io/field_output.hpp"
@@ -35,7 +36,7 @@ FieldFrame Model::field_frame() const {
   }
   for (int z = 0; z < mesh_.zone_count(); ++z) {
     const int material = m.zone_material[at(z)];
-    const bool null = material < 0 || m.params[at(material)].model == MaterialModel::null;
+    const bool null = material < 0 || zone_law(m.params[at(material)].model).is_void;
     if (null || m.zone_excavated[at(z)] > 0) continue;
     const Stress& s = m.stress[at(z)];
     const Principal p = in_plane_principal(s);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <set>
 
+#include "constitutive/zone_law.hpp"
 #include "core/error.hpp"
 #include "model/model.hpp"
 #include "state/mechanics.hpp"
@@ -47,7 +48,7 @@ std::vector<CrackRegion> Model::add_auto_crackseed(const AutoCrackSeedDef& def) 
     for (size_t i = 0; i < m.materials.size(); ++i)
       if (m.materials[i].name == def.material) strength = static_cast<int>(i);
     if (strength < 0) fail("material '{}' is not defined (material{{}} first)", def.material);
-    if (m.materials[static_cast<size_t>(strength)].model != MaterialModel::mohr)
+    if (!zone_law(m.materials[static_cast<size_t>(strength)].model).has_strength)
       fail("material '{}' is elastic: its cohesion, friction and tension would judge the sections (model = \"mohr\")",
            def.material);
   }

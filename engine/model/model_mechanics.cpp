@@ -12,6 +12,7 @@
 #include <map>
 
 #include "bolt/bolt_coupling.hpp"
+#include "constitutive/zone_law.hpp"
 #include "core/error.hpp"
 #include "core/names.hpp"
 #include "core/union_find.hpp"
@@ -64,7 +65,7 @@ void Model::add_material(const MaterialDef& def) {
   Mechanics& m = *mechanics_;
   for (size_t i = 0; i < m.materials.size(); ++i) {
     if (m.materials[i].name != def.name) continue;
-    if ((m.params[i].model == MaterialModel::null) != (params.model == MaterialModel::null)) {
+    if (zone_law(m.params[i].model).is_void != zone_law(params.model).is_void) {
       for (const int used : m.zone_material)
         if (used == static_cast<int>(i))
           fail("material '{}' is assigned to zones; it cannot change to or from model \"null\" "
@@ -109,13 +110,14 @@ void Model::assign(const AssignDef& def) {
   if (mesh_.zone_count() == 0) fail("there are no zones to assign to: zone{{...}} the blocks first");
   const std::vector<int> zones = zones_in(def.region);
   if (zones.empty()) fail("no zone lies in the region");
-  const bool null = m.params[static_cast<size_t>(material)].model == MaterialModel::null;
+  const bool null = zone_law(m.params[static_cast<size_t>(material)].model).is_void;
   for (const int z : zones) {
     m.zone_material[static_cast<size_t>(z)] = material;
     if (null) {
       m.stress[static_cast<size_t>(z)] = Stress{};
       m.mean_stress_ref[static_cast<size_t>(z)] = 0.0;
       m.zone_state[static_cast<size_t>(z)] = 0;
+      m.zone_history[static_cast<size_t>(z)] = 0.0;
     }
   }
   m.dirty = true;
@@ -142,7 +144,7 @@ void Model::insitu(const InsituDef& def) {
     const Vec2 centroid = mesh_.zone_centroid(z);
     if (!region.empty() && !contains(region, centroid)) continue;
     const int material = m.zone_material[static_cast<size_t>(z)];
-    if (material >= 0 && m.params[static_cast<size_t>(material)].model == MaterialModel::null) continue;
+    if (material >= 0 && zone_law(m.params[static_cast<size_t>(material)].model).is_void) continue;
     const Stress s = insitu_stress(def, centroid, g);
     m.stress[static_cast<size_t>(z)] = s;
     m.mean_stress_ref[static_cast<size_t>(z)] = mean_stress(s);
@@ -525,7 +527,7 @@ int Model::gridpoint_near(Vec2 point) const {
   for (int z = 0; z < mesh_.zone_count(); ++z) {
     const int material = m.zone_material.empty() ? -1 : m.zone_material[static_cast<size_t>(z)];
     if (material >= 0 && m.zone_excavated[static_cast<size_t>(z)] == 0 &&
-        m.params[static_cast<size_t>(material)].model != MaterialModel::null)
+        !zone_law(m.params[static_cast<size_t>(material)].model).is_void)
       rock[static_cast<size_t>(mesh_.zone_block[static_cast<size_t>(z)])] = 1;
   }
   int best = -1;
@@ -591,7 +593,11 @@ ZoneView Model::zone_view(int id) const {
   view.s1 = p.s1, view.s3 = p.s3;
   view.state = m.zone_state[static_cast<size_t>(id)];
   const int material = m.zone_material[static_cast<size_t>(id)];
-  if (material >= 0) view.material = m.materials[static_cast<size_t>(material)].name;
+  if (material >= 0) {
+    view.material = m.materials[static_cast<size_t>(material)].name;
+    view.history_name = zone_law(m.params[static_cast<size_t>(material)].model).history;
+    if (!view.history_name.empty()) view.history = m.zone_history[static_cast<size_t>(id)];
+  }
   view.excavated = m.zone_excavated.empty() ? 0 : m.zone_excavated[static_cast<size_t>(id)];
   return view;
 }
@@ -631,7 +637,7 @@ std::vector<int> Model::loose_blocks(double speed) const {
   std::vector<char> in_place(blocks, 0);
   for (int z = 0; z < mesh_.zone_count(); ++z) {
     const int material = m.zone_material[static_cast<size_t>(z)];
-    if (material >= 0 && m.params[static_cast<size_t>(material)].model != MaterialModel::null &&
+    if (material >= 0 && !zone_law(m.params[static_cast<size_t>(material)].model).is_void &&
         m.zone_excavated[static_cast<size_t>(z)] == 0)
       in_place[static_cast<size_t>(mesh_.zone_block[static_cast<size_t>(z)])] = 1;
   }

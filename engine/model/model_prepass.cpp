@@ -5,6 +5,7 @@
 #include <map>
 #include <set>
 
+#include "constitutive/zone_law.hpp"
 #include "core/error.hpp"
 #include "model/model.hpp"
 #include "prepass/load_stepping.hpp"
@@ -46,7 +47,7 @@ PrepassResult Model::prepass(const PrepassDef& def) {
     for (int z : m.active) {
       const size_t material = static_cast<size_t>(m.zone_material[static_cast<size_t>(z)]);
       const MaterialParams& p = m.params[material];
-      if (p.model == MaterialModel::mohr && p.npsi != p.nphi)
+      if (const ZoneLaw& law = zone_law(p.model); law.unsymmetric && law.unsymmetric(p))
         fail("solver = \"ldlt\" needs a symmetric tangent, and material '{}' flows non-associated (dilation "
              "differs from friction); use \"umfpack\", \"lu\" or \"klu\"",
              m.materials[material].name);

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "constitutive/mohr_coulomb.hpp"
+#include "constitutive/zone_law.hpp"
 
 namespace edem {
 namespace {
@@ -16,14 +17,18 @@ std::vector<double> increment(const std::vector<double>& u, const std::vector<do
   return du;
 }
 
-// The stress after a strain increment from `start`, and the state bits of that increment.
-Stress stress_after(const MaterialParams& p, const Stress& start, const ZoneStrain& e, std::uint8_t* state) {
+// The stress after a strain increment from `start`, and the state bits of that increment;
+// `history` is the zone's law state at the start, which the prepass holds fixed (a softening law
+// is perfectly plastic at its current strength within a prepass).
+Stress stress_after(const MaterialParams& p, double history, const Stress& start, const ZoneStrain& e,
+                    std::uint8_t* state) {
   Stress s = start;
-  if (p.model == MaterialModel::elastic) {
+  const ZoneLaw& law = zone_law(p.model);
+  if (!law.update) {
     elastic_update(p, s, e.xx, e.yy, e.xy);
     if (state) *state = 0;
   } else {
-    const std::uint8_t now = mohr_coulomb_update(p, s, e.xx, e.yy, e.xy);
+    const std::uint8_t now = law.update(p, s, e.xx, e.yy, e.xy, 0.0, history);
     if (state) *state = now;
   }
   return s;
@@ -32,11 +37,11 @@ Stress stress_after(const MaterialParams& p, const Stress& start, const ZoneStra
 using Matrix3 = std::array<std::array<double, 3>, 3>;
 
 // d stress / d strain of the increment e from `start`: exact for elastic zones, central
-// differences of the return mapping for Mohr-Coulomb ones (piecewise smooth; the step is small
-// against the strain that would cross a corner of the surface).
-Matrix3 material_tangent(const MaterialParams& p, const Stress& start, const ZoneStrain& e) {
+// differences of the law's update for the others (a return mapping: piecewise smooth; the step
+// is small against the strain that would cross a corner of the surface).
+Matrix3 material_tangent(const MaterialParams& p, double history, const Stress& start, const ZoneStrain& e) {
   Matrix3 d{};
-  if (p.model == MaterialModel::elastic) {
+  if (!zone_law(p.model).update) {
     d[0] = {p.e1, p.e2, 0.0};
     d[1] = {p.e2, p.e1, 0.0};
     d[2] = {0.0, 0.0, p.shear};
@@ -51,7 +56,8 @@ Matrix3 material_tangent(const MaterialParams& p, const Stress& start, const Zon
     double* mk = k == 0 ? &minus.xx : k == 1 ? &minus.yy : &minus.xy;
     *pk += h;
     *mk -= h;
-    const Stress sp = stress_after(p, start, plus, nullptr), sm = stress_after(p, start, minus, nullptr);
+    const Stress sp = stress_after(p, history, start, plus, nullptr),
+                 sm = stress_after(p, history, start, minus, nullptr);
     d[0][static_cast<size_t>(k)] = (sp.xx - sm.xx) / (2.0 * h);
     d[1][static_cast<size_t>(k)] = (sp.yy - sm.yy) / (2.0 * h);
     d[2][static_cast<size_t>(k)] = (sp.xy - sm.xy) / (2.0 * h);
@@ -136,7 +142,7 @@ void evaluate(const Mechanics& m, ImplicitProblem& p, const std::vector<double>&
     const size_t z = static_cast<size_t>(p.zones[k]);
     const ZoneGeometry& g = m.geometry[z];
     const MaterialParams& params = m.params[static_cast<size_t>(m.zone_material[z])];
-    const Stress s = stress_after(params, p.stress0[k], zone_strain(du.data(), g), &p.state[k]);
+    const Stress s = stress_after(params, m.zone_history[z], p.stress0[k], zone_strain(du.data(), g), &p.state[k]);
     p.stress[k] = s;
     for (int i = 0; i < 3; ++i) {
       const size_t n = static_cast<size_t>(g.node[static_cast<size_t>(i)]);
@@ -167,7 +173,7 @@ void tangent(const Mechanics& m, const ImplicitProblem& p, const std::vector<dou
     const size_t z = static_cast<size_t>(p.zones[k]);
     const ZoneGeometry& g = m.geometry[z];
     const MaterialParams& params = m.params[static_cast<size_t>(m.zone_material[z])];
-    const Matrix3 d = material_tangent(params, p.stress0[k], zone_strain(du.data(), g));
+    const Matrix3 d = material_tangent(params, m.zone_history[z], p.stress0[k], zone_strain(du.data(), g));
     // B: strain (xx, yy, xy) per corner displacement (x, y).
     double bm[3][6] = {};
     for (int i = 0; i < 3; ++i) {

@@ -34,6 +34,7 @@
 
 #include "bolt/bolt_coupling.hpp"
 #include "constitutive/mohr_coulomb.hpp"
+#include "constitutive/zone_law.hpp"
 #include "contact/contact_force.hpp"
 #include "contact/detect.hpp"
 #include "solver/excavation.hpp"
@@ -69,14 +70,15 @@ struct Partials {
   std::vector<NodeWork> work;  // per node chunk [J/m]
 };
 
-// Mohr-Coulomb update of zone z by a strain increment; a zone that yields adds its plastic work
-// of the step to `*plastic` [J/m]: the mid-step stress on the plastic strain, C^-1 (trial -
-// returned). Out of line, so that the elastic zones' path stays short.
+// Update of zone z by a strain increment through its law's kernel (constitutive/zone_law.hpp);
+// a zone that yields adds its plastic work of the step to `*plastic` [J/m]: the mid-step stress
+// on the plastic strain, C^-1 (trial - returned). Out of line, so that the elastic zones' path
+// stays short.
 [[gnu::noinline]] void plastic_zone_update(Mechanics& m, size_t z, const MaterialParams& p, double dxx, double dyy,
                                            double dxy, double dzz, double* plastic) {
   Stress& s = m.stress[z];
   const Stress before = s;
-  const std::uint8_t now = mohr_coulomb_update(p, s, dxx, dyy, dxy, dzz);
+  const std::uint8_t now = zone_law(p.model).update(p, s, dxx, dyy, dxy, dzz, m.zone_history[z]);
   m.zone_state[z] = static_cast<std::uint8_t>((m.zone_state[z] & (kShearPast | kTensionPast)) | now | (now << 2));
   if (now == 0) return;
   Stress trial = before;
@@ -96,7 +98,7 @@ template <bool kIso>
   Stress& s = m.stress[z];
   const double dxx = (kIso ? r.xx + iso : r.xx) * dt, dyy = (kIso ? r.yy + iso : r.yy) * dt;
   const double dzz = kIso ? iso * dt : 0.0;
-  if (p.model == MaterialModel::elastic) {
+  if (p.model == MaterialModel::elastic) {  // the registry's law 0, inlined
     if constexpr (kIso)
       elastic_update(p, s, dxx, dyy, r.xy * dt, dzz);
     else

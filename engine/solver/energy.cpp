@@ -7,6 +7,7 @@
 
 #include "bolt/bolt_law.hpp"
 #include "constitutive/mohr_coulomb.hpp"
+#include "constitutive/zone_law.hpp"
 #include "contact/contact_force.hpp"
 #include "state/mechanics.hpp"
 
@@ -17,7 +18,7 @@ namespace {
 // A zone that is rock: a material that is not null, not excavated.
 bool rock_zone(const Mechanics& m, size_t z) {
   const int material = m.zone_material[z];
-  return material >= 0 && m.params[static_cast<size_t>(material)].model != MaterialModel::null &&
+  return material >= 0 && !zone_law(m.params[static_cast<size_t>(material)].model).is_void &&
          m.zone_excavated[z] == 0;
 }
 

@@ -12,6 +12,7 @@
 #include <map>
 #include <utility>
 
+#include "constitutive/zone_law.hpp"
 #include "core/error.hpp"
 #include "solver/energy.hpp"
 #include "solver/excavation.hpp"
@@ -32,7 +33,7 @@ void hold_release(Mechanics& m, const std::vector<int>& gone, long cycles) {
       for (const int n : m.geometry[static_cast<size_t>(z)].node) kept[static_cast<size_t>(n)] = 1;
   std::vector<double> force(2 * static_cast<size_t>(m.node_count), 0.0);
   for (const int z : gone) {
-    if (m.params[static_cast<size_t>(m.zone_material[static_cast<size_t>(z)])].model == MaterialModel::null) continue;
+    if (zone_law(m.params[static_cast<size_t>(m.zone_material[static_cast<size_t>(z)])].model).is_void) continue;
     const ZoneGeometry& g = m.geometry[static_cast<size_t>(z)];
     const Stress& s = m.stress[static_cast<size_t>(z)];
     const double weight = m.params[static_cast<size_t>(m.zone_material[static_cast<size_t>(z)])].density *
@@ -67,7 +68,7 @@ bool unglue_excavated(Mechanics& m, const Mesh& mesh) {
   std::vector<char> live(mesh.block_boundary.size(), 0);
   for (int z = 0; z < mesh.zone_count(); ++z)
     if (m.zone_excavated[static_cast<size_t>(z)] == 0 && m.zone_material[static_cast<size_t>(z)] >= 0 &&
-        m.params[static_cast<size_t>(m.zone_material[static_cast<size_t>(z)])].model != MaterialModel::null)
+        !zone_law(m.params[static_cast<size_t>(m.zone_material[static_cast<size_t>(z)])].model).is_void)
       live[static_cast<size_t>(mesh.zone_block[static_cast<size_t>(z)])] = 1;
   // Glued half-edges by their ends (shared corners are the same numbers on both sides).
   using Key = std::pair<std::pair<double, double>, std::pair<double, double>>;
@@ -149,6 +150,7 @@ void excavate_zones(Mechanics& m, const Mesh& mesh, const std::vector<int>& zone
     m.stress[static_cast<size_t>(z)] = Stress{};
     m.mean_stress_ref[static_cast<size_t>(z)] = 0.0;
     m.zone_state[static_cast<size_t>(z)] = 0;
+    m.zone_history[static_cast<size_t>(z)] = 0.0;
   }
   lump_boundary_loads(m);  // with the release's share
   const std::vector<int> old_node = m.gp_node;
@@ -170,6 +172,7 @@ void fill_zones(Mechanics& m, const std::vector<int>& zones, int material) {
     m.stress[static_cast<size_t>(z)] = Stress{};
     m.mean_stress_ref[static_cast<size_t>(z)] = 0.0;
     m.zone_state[static_cast<size_t>(z)] = 0;
+    m.zone_history[static_cast<size_t>(z)] = 0.0;
   }
   m.dirty = true;
 }

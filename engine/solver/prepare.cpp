@@ -8,11 +8,12 @@
 #include <map>
 #include <utility>
 
-#include "core/error.hpp"
+#include "bolt/bolt_coupling.hpp"
+#include "constitutive/zone_law.hpp"
 #include "contact/detect.hpp"
+#include "core/error.hpp"
 #include "core/union_find.hpp"
 #include "crack/judge.hpp"
-#include "bolt/bolt_coupling.hpp"
 #include "solver/loads.hpp"
 #include "solver/zone_groups.hpp"
 
@@ -215,6 +216,7 @@ void reset_for_mesh(Mechanics& m, const Mesh& mesh) {
   m.stress.assign(zones, Stress{});
   m.mean_stress_ref.assign(zones, 0.0);
   m.zone_state.assign(zones, 0);
+  m.zone_history.assign(zones, 0.0);
   m.zone_excavated.assign(zones, 0);
   SectionLayout layout = find_sections(mesh);
   m.sections = std::move(layout.sections);
@@ -326,8 +328,8 @@ void prepare(Mechanics& m, const Mesh& mesh) {
       fail("zone {} at ({:.6g}, {:.6g}) has no material: assign{{ material = ... }} first", z + 1,
            c.x, c.y);
     }
-    const MaterialModel model = m.params[static_cast<size_t>(material)].model;
-    if (model == MaterialModel::null || m.zone_excavated[static_cast<size_t>(z)] > 0) continue;
+    const bool void_zone = zone_law(m.params[static_cast<size_t>(material)].model).is_void;
+    if (void_zone || m.zone_excavated[static_cast<size_t>(z)] > 0) continue;
     m.active.push_back(z);
   }
 

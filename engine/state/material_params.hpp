@@ -4,6 +4,8 @@
 // (e1 = K + 4G/3, e2 = K - 2G/3); the Mohr-Coulomb constants are precomputed once.
 #pragma once
 
+#include <vector>
+
 #include "core/physics_defs.hpp"
 
 namespace edem {
@@ -22,6 +24,8 @@ struct MaterialParams {
   double npsi = 1.0;       // (1 + sin psi) / (1 - sin psi) [-]
   double csnp = 0.0;       // 2 c sqrt(nphi) [Pa]
   double tension = 0.0;    // tensile strength, capped at c / tan(phi) [Pa]
+  // A law's own constants beyond these, packed by its derive and read by its update (its tables).
+  std::vector<double> law_data;
 };
 
 }  // namespace edem

@@ -166,6 +166,9 @@ struct Mechanics {
   // mixed discretisation averages the change from it, so an initial state in equilibrium stays so.
   std::vector<double> mean_stress_ref;
   std::vector<std::uint8_t> zone_state;
+  // Per zone, the state variable of its zone law (ZoneLaw::history: ss's plastic shear strain);
+  // 0 for laws that keep none. A fresh material (assign of null, excavate, fill) starts it at 0.
+  std::vector<double> zone_history;
 
   // ---- state per node
   int node_count = 0;

@@ -187,6 +187,45 @@ TEST_F(Checkpoint, RestoredRunWithACohesiveCrackSofteningGoesOnBitForBit) {
   EXPECT_TRUE(global(second, "dump") == expected) << "restored differs";
 }
 
+// A strain-softening (ss) element driven past its peak and saved mid-softening: each zone's
+// plastic shear strain e_ps, which sets its strength, is carried, so the restored run goes on bit
+// for bit.
+TEST_F(Checkpoint, RestoredStrainSofteningZonesGoOnBitForBit) {
+  const std::string element = R"(
+    block{ x = { 0, 1 }, y = { 0, 1 } }
+    zone{ edge = 1 }
+    material{ "rock", model = "ss", density = 2000, young = 1e9, poisson = 0.25, cohesion = 1e6,
+              friction = 30, cohesion_table = { { 0, 1e6 }, { 0.01, 0.2e6 } } }
+    assign{ material = "rock" }
+    insitu{ sxx = -1e6, syy = -1e6, szz = -1e6 }
+    for g in gridpoints() do
+      local x, y = g.x, g.y
+      boundary{ polygon = { { x - 0.01, y - 0.01 }, { x + 0.01, y - 0.01 }, { x + 0.01, y + 0.01 },
+                            { x - 0.01, y + 0.01 } }, xvel = 0.5e-6 * x, yvel = -1e-6 * y }
+    end
+    cycle(7000)
+  )";
+  const char* eps = R"(
+    local out = {}
+    for z in zones() do out[#out + 1] = ("%a"):format(z.e_ps) end
+    eps = table.concat(out, " ")
+    softening = zone_at(0.3, 0.3).e_ps
+  )";
+  Interpreter whole({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+  expect_runs(whole, element + "cycle(1000)\n" + kDump + eps);
+  const std::string expected = global(whole, "dump");
+  ASSERT_FALSE(expected.empty());
+  {
+    Interpreter first({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+    expect_runs(first, element + "save('" + file("ss.h5") + "')\n" + eps);
+    EXPECT_GT(std::stod(global(first, "softening")), 0.0) << "no zone is softening at the save";
+  }
+  Interpreter second({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+  expect_runs(second, "restore('" + file("ss.h5") + "')\ncycle(1000)\n" + kDump + eps);
+  EXPECT_TRUE(global(second, "dump") == expected) << "restored differs";
+  EXPECT_EQ(global(second, "eps"), global(whole, "eps"));
+}
+
 // Output frames taken while the model cycles (every 7 cycles, so some right after sections broke,
 // when the contacts are not current) leave the run as it would be without them: through the
 // release's 300 cycles and 300 more, where the damping adapts and contacts are found again.

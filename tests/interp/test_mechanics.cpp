@@ -388,7 +388,7 @@ TEST(Mechanics, MaterialForms) {
   EXPECT_EQ(error_of("material{ 'r', young = 1, poisson = -1 }"),
             "test.lua:1: material: poisson must be in (-1, 0.5), got -1");
   EXPECT_EQ(error_of("material{ 'r', young = 1, poisson = 0.2, tension = 1 }"),
-            "test.lua:1: material: tension needs model = \"mohr\" (this material's model is "
+            "test.lua:1: material: tension needs model = \"mohr\" or \"ss\" (this material's model is "
             "\"elastic\")");
   EXPECT_EQ(error_of("material{ '', model = 'null' }"),
             "test.lua:1: material: name must not be empty");

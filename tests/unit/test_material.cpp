@@ -24,7 +24,7 @@ TEST(Material, StrengthBelongsToTheMohrModel) {
   MaterialDef def = elastic_rock();
   def.cohesion = 1e6;
   def.tension = 1e5;
-  EXPECT_EQ(rejection(def), "cohesion, tension need model = \"mohr\" (this material's model is \"elastic\")");
+  EXPECT_EQ(rejection(def), "cohesion, tension need model = \"mohr\" or \"ss\" (this material's model is \"elastic\")");
   def.model = MaterialModel::mohr;
   EXPECT_EQ(rejection(def), "");
 }
