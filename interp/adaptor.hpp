@@ -37,6 +37,12 @@ class CallbackError : public Error {
 // Raises "FILE:LINE: name: message" (the position of the calling script line) as a Lua error.
 [[noreturn]] void raise_error(lua_State* L, std::string_view name, std::string_view message);
 
+// Says "FILE:LINE: name: warning: message" on stderr, once for each such line: the command ran,
+// but what it did is likely not what the script meant.
+void warn(lua_State* L, std::string_view name, std::string_view message);
+// Says "FILE:LINE: name: message" on stdout (none with --quiet), once for each such line.
+void note(lua_State* L, std::string_view name, std::string_view message);
+
 // Raises a CallbackError's message as it is, keeping its frames for the traceback.
 [[noreturn]] void raise_callback_error(lua_State* L, std::string_view message,
                                        std::vector<std::string> frames);

@@ -315,7 +315,7 @@ const Command& crackseed_command() {
                "polygon drops the pieces that end inside a block)",
                "everywhere"},
               {"material", Type::string, "", any_value, kOptional,
-               "a mohr_coulomb material whose cohesion, friction and tension judge the sections",
+               "a material of model \"mohr\" whose cohesion, friction and tension judge the sections",
                "the zones' own"},
               {"after", Type::string, "", any_value, kOptional,
                "the joint material of its cracks", "the one jassign{} gives joints there"},

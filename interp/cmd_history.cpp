@@ -73,7 +73,6 @@ int run_history(lua_State* L, Context& context, const Args& args) {
                     : quantity;
     check_name(def.name);
     def.unit = Model::history_unit(quantity);
-    def.sample = model.history_sampler(quantity, at);
     def.quantity = quantity;
     def.at = at;
   }
@@ -97,8 +96,11 @@ const Command& history_command() {
       .help =
           "Records a quantity after every n-th cycle: a built-in one (of the whole model, or "
           "at the gridpoint nearest to `at` / in the zone containing `at`) or what a function "
-          "returns. Histories that no `history_write` wrote are written at the end of a "
-          "successful run to `<script>_history.csv` in the working directory.",
+          "returns. A point history follows its rock: when an excavation takes its gridpoint it "
+          "goes on at the gridpoint of rock at the same place across the excavation's outline "
+          "(said once), or else it records nothing more (a warning at the excavate line; its "
+          "cells stay empty), never zeros. Histories that no `history_write` wrote are written at "
+          "the end of a successful run to `<script>_history.csv` in the working directory.",
       .positional =
           {
               {"quantity", Type::string, "", any_value, kOptional,

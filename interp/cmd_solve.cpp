@@ -7,9 +7,11 @@
 
 #include <algorithm>
 #include <limits>
+#include <csignal>
 #include <lua.hpp>
 
 #include "callbacks.hpp"
+#include "adaptor.hpp"
 #include "commands.hpp"
 #include "context.hpp"
 #include "core/error.hpp"
@@ -80,6 +82,8 @@ void start_cycling(lua_State* L, Context& context, std::string_view name) {
   std::string at = where(L);  // "FILE:LINE: "
   if (at.size() >= 2) at.resize(at.size() - 2);
   context.running->cycling_at = at.empty() ? fmt::format("{}()", name) : at;
+  if (!context.model().cycling_started())
+    if (const std::string why = context.model().unheld(); !why.empty()) warn(L, name, why);
 }
 
 // Clears the progress line when the run ends, however it ends.
@@ -88,10 +92,33 @@ struct ProgressLineCloser {
   ~ProgressLineCloser() { context.close_progress_line(); }
 };
 
+// A run that SIGINT or SIGTERM stopped at the end of a cycle: the model is saved as it stands, in
+// interrupted.h5 (under --out), and the script ends there.
+void end_if_interrupted(Context& context, const SolveResult& result) {
+  if (!result.interrupted) return;
+  context.close_progress_line();
+  const int signal = context.stop->load();
+  const std::string name = signal == SIGTERM ? "SIGTERM" : "SIGINT";
+  context.interrupted_by = signal;
+  const std::string file = context.output_path("interrupted.h5");
+  const long cycle = context.model().solver_info().cycle;
+  try {
+    context.model().save(file, {.script_path = context.script_path, .script = context.script_text});
+  } catch (const Error& e) {
+    fail("interrupted by {} at cycle {}; the model could not be saved: {}", name, cycle, e.what());
+  }
+  fail("interrupted by {} at cycle {}: the model is saved in {} (restore(\"{}\") goes on from there)", name,
+       cycle, file, file);
+}
+
 int run_cycle(lua_State* L, Context& context, const Args& args) {
   start_cycling(L, context, "cycle");
-  const ProgressLineCloser closer{context};
-  context.model().cycle(static_cast<long>(args.integer("n")));
+  SolveResult result;
+  {
+    const ProgressLineCloser closer{context};
+    result = context.model().cycle(static_cast<long>(args.integer("n")));
+  }
+  end_if_interrupted(context, result);
   return 0;
 }
 
@@ -104,6 +131,7 @@ int run_solve(lua_State* L, Context& context, const Args& args) {
     const ProgressLineCloser closer{context};
     return context.model().solve(def);
   }();
+  end_if_interrupted(context, result);
   if (!context.quiet) {
     // With judging on equilibrium states: the judgments and what they broke.
     const auto plural = [](int n) { return n == 1 ? "" : "s"; };

@@ -63,6 +63,8 @@ const std::vector<const Command*>& commands() {
       &output_command(),         // cmd_output.cpp
       &save_command(),           // cmd_checkpoint.cpp
       &restore_command(),        //
+      &settings_command(),       // cmd_settings.cpp
+      &out_dir_command(),        //
   };
   return table;
 }
@@ -96,10 +98,19 @@ int dispatch(lua_State* L) {
   const auto& command = *static_cast<const Command*>(lua_touserdata(L, lua_upvalueindex(1)));
   Running running{.L = L, .command = command.name, .cycling_at = {}, .outer = nullptr};
   const RunningScope scope(context_of(L), running);
-  return guarded(L, command.name, [&] {
+  std::vector<std::string> doubts;
+  const int results = guarded(L, command.name, [&] {
     const Args args = read_args(L, command, lua_upvalueindex(2));
-    return command.run(L, context_of(L), args);
+    const int count = command.run(L, context_of(L), args);
+    doubts = args.doubts;
+    return count;
   });
+  for (const std::string& text : doubts) warn(L, command.name, text);
+  Context& context = context_of(L);
+  if (context.current)
+    for (const Model::Notice& n : context.current->take_notices())
+      n.warning ? warn(L, command.name, n.text) : note(L, command.name, n.text);
+  return results;
 }
 
 }  // namespace

@@ -8,9 +8,11 @@
 // they run on the thread that is executing (never a suspended one) and their errors name it.
 #pragma once
 
+#include <atomic>
 #include <functional>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -42,10 +44,12 @@ struct Context {
   Running* running = nullptr;      // the innermost command executing now
   bool histories_written = false;  // history_write() wrote the current model's histories
   std::string out_dir;             // --out: where relative files that commands write go; "": here
+  std::vector<std::pair<std::string, std::string>> settings;  // --set KEY=VALUE, as given
   std::string script_path;         // the script being run, and its text (kept in checkpoints)
   std::string script_text;
   std::map<std::string, FieldSeries> outputs;  // output{} series by XDMF file
   std::vector<std::string> stage_outputs;      // output{ at = "stage" }: their files
+  std::set<std::string> said;                  // warnings and notes said so far (each once)
 
   // Appends a frame of the current model to the series of `file` (output{}).
   void write_frame(const std::string& file) { outputs.at(file).append(model().field_frame()); }
@@ -58,6 +62,10 @@ struct Context {
   std::function<void(const RunProgress&)> progress;
   double progress_every = 0.0;  // [s]
   bool progress_line_open = false;
+  // Raised (to the signal's number) by SIGINT or SIGTERM: cycling stops at the end of its cycle
+  // and the model is saved (cmd_solve.cpp). Null: signals are not caught.
+  const std::atomic<int>* stop = nullptr;
+  int interrupted_by = 0;  // the signal that ended the script, once it has
 
   // Clears a terminal progress line still showing (after a run, or before its error).
   void close_progress_line();
@@ -75,6 +83,7 @@ struct Context {
   void replace_model(std::unique_ptr<Model> next) {
     next->set_threads(threads);
     next->set_progress(progress, progress_every);
+    next->set_stop(stop);
     current = std::move(next);
     histories_written = false;
   }

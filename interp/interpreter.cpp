@@ -113,6 +113,8 @@ Interpreter::Interpreter(InterpreterOptions options)
   context_.out_dir = options.out_dir;
   start_progress(context_, options);
   settings_ = options.settings;
+  context_.settings = options.settings;
+  context_.stop = options.stop;
   context_.lua = L_;
   attach(L_, context_);
   luaL_openlibs(L_);

@@ -12,6 +12,7 @@
 // directory.
 #pragma once
 
+#include <atomic>
 #include <memory>
 #include <optional>
 #include <string>
@@ -35,6 +36,9 @@ struct InterpreterOptions {
   // rewritten), 10 otherwise (plain lines); 0: none. None at all when quiet.
   double progress_seconds = -1.0;
   std::vector<std::string> stdlib_dirs = {};  // searched first for require "edem.x"
+  // Raised to a signal's number by the caller's SIGINT / SIGTERM handler: cycling stops at the
+  // end of its cycle and the model is saved to interrupted.h5 (Context::stop). Null: none.
+  const std::atomic<int>* stop = nullptr;
 };
 
 class Interpreter {

@@ -12,11 +12,15 @@
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <atomic>
 #include <cctype>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+
+#include <unistd.h>
 
 #include "checkpoint_summary.hpp"
 #include "core/error.hpp"
@@ -73,6 +77,20 @@ std::vector<std::pair<std::string, std::string>> parse_settings(const std::vecto
   return settings;
 }
 
+// The signal that asked a running script to stop (0: none). A signal handler may touch nothing
+// but a lock-free atomic, so this one flag lives outside the model; the model only reads it.
+std::atomic<int> stop_signal{0};
+static_assert(std::atomic<int>::is_always_lock_free);
+
+// The first SIGINT or SIGTERM asks cycling to stop at the end of its cycle (the model is then
+// saved); a second one ends the process at once, as if it were not caught.
+extern "C" void ask_to_stop(int signal) {
+  stop_signal.store(signal);
+  std::signal(signal, SIG_DFL);
+  const char text[] = "\nedem: stopping at the end of this cycle (again to quit at once)\n";
+  [[maybe_unused]] const auto written = ::write(2, text, sizeof text - 1);
+}
+
 int run_script(const Options& options, std::vector<std::pair<std::string, std::string>> settings) {
   if (!options.out_dir.empty()) {
     std::error_code ec;
@@ -88,12 +106,17 @@ int run_script(const Options& options, std::vector<std::pair<std::string, std::s
                                  .settings = std::move(settings),
                                  .out_dir = options.out_dir,
                                  .progress_seconds = options.progress,
-                                 .stdlib_dirs = stdlib_near_executable()});
+                                 .stdlib_dirs = stdlib_near_executable(),
+                                 .stop = &stop_signal});
+  std::signal(SIGINT, ask_to_stop);
+  std::signal(SIGTERM, ask_to_stop);
   const auto error = interpreter.run_file(options.script, options.script_args);
   if (!error) return 0;
   std::fflush(stdout);  // what the script printed comes before the error
   fmt::print(stderr, "{}\n", *error);
-  return 1;
+  // Stopped by a signal: the status a shell expects of one (130 for SIGINT).
+  const int interrupted = interpreter.context().interrupted_by;
+  return interrupted != 0 ? 128 + interrupted : 1;
 }
 
 int print_reference(const Options& options) {

@@ -555,6 +555,48 @@ std::string usage_of(const Command& command) {
   return fmt::format("{}{{ {} }}", command.name, fmt::join(parts, ", "));
 }
 
+namespace {
+
+// An angle in degrees that reads as radians: within one turn of radians and not a whole or
+// half degree (pi / 6 is 0.5236; 1.5 deg or 2 deg are not doubted).
+bool looks_like_radians(double deg) {
+  const double a = std::fabs(deg);
+  return a > 0.0 && a <= 2.0 * M_PI + 1e-9 && std::fabs(2.0 * a - std::round(2.0 * a)) > 1e-9;
+}
+
+// The doubts about the values given (not the defaults), read before the defaults fill in.
+std::vector<std::string> doubts_of(const Command& command, const Args& given) {
+  std::vector<std::string> doubts;
+  const auto numbers_of = [](const Value& value) {
+    if (const double* v = std::get_if<double>(&value)) return std::vector<double>{*v};
+    if (const auto* v = std::get_if<std::vector<double>>(&value)) return *v;
+    return std::vector<double>{};
+  };
+  for (const auto* keys : {&command.positional, &command.keys})
+    for (const Key& key : *keys) {
+      const auto it = given.values.find(key.name);
+      if (it == given.values.end()) continue;
+      for (const double v : numbers_of(it->second)) {
+        if (key.unit == "deg" && key.name.find("friction") != std::string_view::npos) {
+          if (v > 0.0 && v < 1.5 && looks_like_radians(v))
+            doubts.push_back(fmt::format("{} = {:.6g} is an angle in degrees; as a coefficient (tan phi) it would "
+                                         "be {:.3g} deg",
+                                         key.name, v, std::atan(v) * 180.0 / M_PI));
+        } else if (key.unit == "deg" && looks_like_radians(v)) {
+          doubts.push_back(
+              fmt::format("{} = {:.6g} is in degrees; it looks like radians ({:.4g} deg)", key.name, v, v * 180.0 / M_PI));
+        }
+        if (command.name == "insitu" && (key.name == "sxx" || key.name == "syy" || key.name == "szz") && v > 0.0)
+          doubts.push_back(fmt::format("{} = {:.6g} Pa is tension (compression is negative): rock at depth is in "
+                                       "compression, {} = {:.6g}?",
+                                       key.name, v, key.name, -v));
+      }
+    }
+  return doubts;
+}
+
+}  // namespace
+
 Args read_args(lua_State* L, const Command& command, int defaults) {
   defaults = lua_absindex(L, defaults);
   Args args;
@@ -562,6 +604,7 @@ Args read_args(lua_State* L, const Command& command, int defaults) {
     read_table(L, command, args);
   else
     read_call(L, command, args);
+  args.doubts = doubts_of(command, args);
   complete(L, command, defaults, args);
   return args;
 }

@@ -154,6 +154,9 @@ using Value = std::variant<double, std::int64_t, std::string, bool, Vec2, std::a
 // Getters throw std::logic_error when a command asks for what its schema does not give.
 struct Args {
   std::map<std::string, Value, std::less<>> values;
+  // Values given that are valid but likely not what was meant (an angle in radians, a friction
+  // coefficient, a tensile in-situ stress): warnings, said once the command has run.
+  std::vector<std::string> doubts;
 
   bool has(std::string_view key) const { return values.find(key) != values.end(); }
   double number(std::string_view key) const { return get<double>(key); }

@@ -42,4 +42,12 @@ std::string did_you_mean(std::string_view name, const std::vector<std::string>& 
   return best.empty() ? std::string() : " (did you mean '" + best + "'?)";
 }
 
+std::string did_you_mean_or_list(std::string_view name, const std::vector<std::string>& candidates) {
+  std::string hint = did_you_mean(name, candidates);
+  if (!hint.empty() || candidates.empty()) return hint;
+  hint = " (there are: ";
+  for (size_t i = 0; i < candidates.size() && i < 10; ++i) hint += (i > 0 ? ", " : "") + candidates[i];
+  return hint + (candidates.size() > 10 ? ", ...)" : ")");
+}
+
 }  // namespace edem

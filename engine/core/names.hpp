@@ -18,9 +18,12 @@ std::string closest_name(std::string_view name, const std::vector<std::string>& 
 // " (did you mean 'x'?)" or "" when nothing is close.
 std::string did_you_mean(std::string_view name, const std::vector<std::string>& candidates);
 
+// " (did you mean 'x'?)" when one is close, else " (there are: a, b, c)", the first ten.
+std::string did_you_mean_or_list(std::string_view name, const std::vector<std::string>& candidates);
+
 // The position of the item called `name` among `items` (anything with a `name`); throws
-// edem::Error "unknown <what> 'name'" with a did-you-mean hint, or, when there are none, how
-// to define one (`command`, e.g. "material{...}").
+// edem::Error "unknown <what> 'name'" with a did-you-mean hint or the names there are, or, when
+// there are none, how to define one (`command`, e.g. "material{...}").
 template <typename Items>
 int index_of_name(const Items& items, std::string_view name, std::string_view what,
                   std::string_view command) {
@@ -30,7 +33,7 @@ int index_of_name(const Items& items, std::string_view name, std::string_view wh
     names.push_back(item.name);
   }
   if (names.empty()) fail("unknown {} '{}': no {} has been defined", what, name, command);
-  fail("unknown {} '{}'{}", what, name, did_you_mean(name, names));
+  fail("unknown {} '{}'{}", what, name, did_you_mean_or_list(name, names));
 }
 
 }  // namespace edem

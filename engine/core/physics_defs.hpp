@@ -228,6 +228,8 @@ struct SolveResult {
   int broke = 0;
   // Stopped short of the ratio with sections intact: its last state was not judged.
   bool unjudged = false;
+  // Stopped at the end of a cycle because the stop flag was raised (Model::set_stop).
+  bool interrupted = false;
 };
 
 // Where a long cycle() or solve{} stands, for a progress line (Model::set_progress).
@@ -379,6 +381,11 @@ struct History {
   std::optional<Vec2> at;
   std::vector<long> cycles;
   std::vector<double> values;
+  // What a point quantity follows: a node (ux, uy, vx, vy, joint_*) or a zone (stresses); -1: none.
+  int node = -1;
+  int zone = -1;
+  // Why it records no more (its rock was excavated); empty while it records.
+  std::string ended;
 };
 
 struct SolverInfo {

@@ -73,7 +73,7 @@ RockStrength strength_of(const Mechanics& m, int material, int seed, Vec2 at) {
   const MaterialDef& def = m.materials[static_cast<size_t>(material)];
   if (!zone_law(def.model).has_strength)
     fail("crackseed {}: the rock at ({:.6g}, {:.6g}) is of material '{}', which has no strength "
-         "({}); give crackseed{{ material = ... }} a mohr_coulomb material whose cohesion, "
+         "({}); give crackseed{{ material = ... }} a material of model \"mohr\" whose cohesion, "
          "friction and tension judge it",
          seed + 1, at.x, at.y, def.name, zone_law(def.model).name);
   return {def.cohesion, def.friction, def.tension};

@@ -221,6 +221,9 @@ template <class Ar> void fields(Ar& ar, EnergyLedger& e) {
 template <class Ar> void fields(Ar& ar, History& h) {
   ar("name", h.name); ar("every", h.every); ar("unit", h.unit); ar("quantity", h.quantity); ar("at", h.at);
   ar("cycles", h.cycles); ar("values", h.values);
+  // Optional: files written before histories followed their rock have none (found again from `at`).
+  optional_member(ar, "node", h.node, -1); optional_member(ar, "zone", h.zone, -1);
+  optional_member(ar, "ended", h.ended, std::string());
 }
 template <class Ar> void fields(Ar& ar, LoadStep& s) {
   ar("from", s.from); ar("to", s.to); ar("converged", s.converged); ar("residuals", s.residuals);
@@ -659,7 +662,7 @@ struct CheckpointAccess {
       r("last_prepass", model.last_prepass_);
       m.judge_criterion_missing = judge_criterion;
       for (History& h : m.histories)
-        if (!h.quantity.empty()) h.sample = model.history_sampler(h.quantity, h.at);
+        if (!h.quantity.empty()) model.follow(h);
       model.restored_ = true;
       if (note_out != nullptr) *note_out = std::move(note);
       return model;

@@ -44,7 +44,7 @@ int Model::region_index(std::string_view name) const {
     names.push_back(inputs_.regions[i].name);
   }
   if (names.empty()) fail("unknown region '{}': no region{{}} has been defined", name);
-  fail("unknown region '{}'{}", name, did_you_mean(name, names));
+  fail("unknown region '{}'{}", name, did_you_mean_or_list(name, names));
 }
 
 Polygon Model::resolve_in(const Inputs& inputs, const RegionRef& ref) const {

@@ -6,6 +6,7 @@
 // it throws.
 #pragma once
 
+#include <atomic>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -82,6 +83,9 @@ class Model {
   // `report` is called during cycle() and solve{} each time `every_seconds` of wall clock have
   // passed (never for a shorter run); a null function or 0 seconds: no reports.
   void set_progress(std::function<void(const RunProgress&)> report, double every_seconds);
+  // Cycling ends at the end of the cycle running when `*flag` turns non-zero (a signal's number:
+  // Ctrl-C), with SolveResult::interrupted; null: never. The flag must outlive the model.
+  void set_stop(const std::atomic<int>* flag);
   // Excavation (model/model_excavation.cpp): the zones of a region turn null and the stage count
   // goes up; fill{} gives excavated zones of a region a material again, stress-free.
   void excavate(const ExcavateDef& def);
@@ -106,7 +110,7 @@ class Model {
   // Cycling. Throws edem::Error when the model is not ready (no zones, a zone without
   // material) or when the watchdog stops an unstable run (the model stays at that cycle).
   // Exceptions thrown by callbacks and history samplers pass through unchanged.
-  void cycle(long count);
+  SolveResult cycle(long count);
   SolveResult solve(const SolveDef& def);
   // The implicit elastoplastic prepass (model/model_prepass.cpp): solves the present state and
   // then each stage excavated in turn, on copies; the model itself is left as it was.
@@ -121,20 +125,30 @@ class Model {
   EnergyReport energy() const;
   void reset_energy();  // the balance starts again from the state now
   bool cycling_started() const;
+  // Why the model would fall as a whole when cycled (gravity acts and no gridpoint is held), or
+  // empty: said as a warning before its first cycle.
+  std::string unheld() const;
   bool cycling_now() const;  // inside cycle() or solve(), e.g. while a callback runs
 
   // Callbacks run after every cycle whose number is a multiple of `every`; returns a handle.
   int add_callback(long every, std::function<void(long cycle)> fn);
   void cancel_callback(int handle);  // throws for an unknown or cancelled handle
 
-  // Histories, sampled after every cycle whose number is a multiple of their `every`.
+  // Histories, sampled after every cycle whose number is a multiple of their `every`: a script's
+  // function (def.sample) or a built-in quantity (def.quantity) of the whole model
+  // (history_model_quantities()) or at def.at (history_point_quantities(): the nearest
+  // gridpoint's ux, uy, vx, vy, rock in place first; the stresses sxx, syy, sxy, szz, s1, s3 of
+  // the zone containing it; the joint_* quantities of the contact nearest to it, followed by its
+  // gridpoint, 0 while that has none). A point history follows its rock: when an excavation
+  // takes its gridpoint it goes on at the gridpoint of rock at the same place (across the
+  // excavation's outline; a note), or else it ends (History::ended; a warning).
   int add_history(HistoryDef def);
-  // A built-in quantity of the whole model (model_quantities()) or at a point
-  // (point_quantities(): the nearest gridpoint's ux, uy, vx, vy; the stresses sxx, syy, sxy,
-  // szz, s1, s3 of the zone containing it; the joint_* quantities of the contact at the
-  // boundary gridpoint nearest to it that has one, 0 while it has none).
+  // A built-in quantity's value now (one sample, as a history would take it).
   std::function<double()> history_sampler(std::string_view quantity,
                                           std::optional<Vec2> at) const;
+  // Finds what a history of a built-in quantity follows (when not known yet) and gives it its
+  // sampler (also for a restored one).
+  void follow(History& h) const;
   static const std::vector<std::string>& history_model_quantities();
   static const std::vector<std::string>& history_point_quantities();
   static std::string history_unit(std::string_view quantity);  // "m", "Pa", "-", ...
@@ -169,6 +183,16 @@ class Model {
 
   // The model as it stands, for field output (model/field_frame.cpp, io/field_output.hpp).
   FieldFrame field_frame() const;
+
+  // What the calls since the last take have to tell the script: a note (a history went on at
+  // the rock across an excavation's outline) or a warning (likely not what the script meant: a
+  // history whose rock was excavated ended). Said once each, with the script line, by the
+  // interpreter.
+  struct Notice {
+    bool warning = false;
+    std::string text;
+  };
+  std::vector<Notice> take_notices();
 
   // ---- Potential cracks (model/model_cracks.cpp).
   void judge(const JudgeDef& def);     // how and how often sections are judged
@@ -207,6 +231,7 @@ class Model {
   SolveResult run(long max_cycles, double target_ratio);  // target <= 0: no ratio stop
   Polygon resolve_in(const Inputs& inputs, const RegionRef& ref) const;
   void add_crack_counts(ModelInfo& info) const;
+  void follow_histories_past_excavation();  // model/model_mechanics.cpp
 
   ModelDef def_;
   Inputs inputs_;
@@ -216,6 +241,7 @@ class Model {
   std::vector<std::uint8_t> prepass_yield_;
   std::optional<PrepassResult> last_prepass_;
   bool restored_ = false;  // made by restore(): its geometry inputs cannot be re-derived
+  std::vector<Notice> notices_;  // take_notices()
 
   friend struct CheckpointAccess;  // model/checkpoint.cpp
 };

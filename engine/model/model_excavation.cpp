@@ -62,6 +62,7 @@ void Model::excavate(const ExcavateDef& def) {
     if (m.zone_material[static_cast<size_t>(z)] < 0)
       fail("{} has zones without material: assign{{}} the rock before excavating it", label);
   excavate_zones(m, mesh_, zones, def.release, !by_block);  // mucking out a fallen block is no stage
+  follow_histories_past_excavation();
 }
 
 void Model::fill(const FillDef& def) {

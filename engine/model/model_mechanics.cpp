@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <utility>
 
 #include "bolt/bolt_coupling.hpp"
 #include "constitutive/zone_law.hpp"
@@ -237,6 +238,8 @@ void Model::set_progress(std::function<void(const RunProgress&)> report, double 
   mechanics_->progress_every = every_seconds;
 }
 
+void Model::set_stop(const std::atomic<int>* flag) { mechanics_->stop = flag; }
+
 void Model::set_threads(int threads) {
   if (threads < 0) fail("threads must be >= 1, got {}", threads);
   mechanics_->threads = threads;
@@ -279,13 +282,21 @@ void Model::reset_energy() {
   start_energy(*mechanics_);
 }
 
+std::string Model::unheld() const {
+  const Mechanics& m = *mechanics_;
+  if (!m.gravity_set || (m.gravity.x == 0.0 && m.gravity.y == 0.0)) return {};
+  if (std::any_of(m.fix.begin(), m.fix.end(), [](std::uint8_t f) { return f != 0; })) return {};
+  return "gravity acts and no gridpoint is held: the model falls as a whole (hold its base, e.g. "
+         "boundary{ side = \"bottom\", fix = \"y\" })";
+}
+
 SolveResult Model::run(long max_cycles, double target_ratio) {
   return run_solver(*mechanics_, mesh_, max_cycles, target_ratio);
 }
 
-void Model::cycle(long count) {
+SolveResult Model::cycle(long count) {
   if (count < 1) fail("the number of cycles must be >= 1, got {}", count);
-  run(count, 0.0);
+  return run(count, 0.0);
 }
 
 SolveResult Model::solve(const SolveDef& def) {
@@ -314,7 +325,7 @@ void Model::cancel_callback(int handle) {
 int Model::add_history(HistoryDef def) {
   if (def.name.empty()) fail("a history needs a name");
   if (def.every < 1) fail("every must be >= 1, got {}", def.every);
-  if (!def.sample) fail("history '{}' has nothing to sample", def.name);
+  if (!def.sample && def.quantity.empty()) fail("history '{}' has nothing to sample", def.name);
   auto& histories = mechanics_->histories;
   for (size_t i = 0; i < histories.size(); ++i) {
     History& h = histories[i];
@@ -329,7 +340,23 @@ int Model::add_history(HistoryDef def) {
     h.unit = def.unit;
     return static_cast<int>(i + 1);
   }
-  histories.push_back({def.name, def.every, std::move(def.sample), def.unit, def.quantity, def.at, {}, {}});
+  History h;
+  h.name = def.name;
+  h.every = def.every;
+  h.sample = std::move(def.sample);
+  h.unit = def.unit;
+  h.quantity = def.quantity;
+  h.at = def.at;
+  if (!h.quantity.empty()) follow(h);
+  if (h.node >= 0 && zone_at(*h.at) < 0) {
+    const Mechanics& m = *mechanics_;
+    const Vec2 node{m.position[2 * static_cast<size_t>(h.node)], m.position[2 * static_cast<size_t>(h.node) + 1]};
+    if (norm(node - *h.at) > tolerance())
+      notices_.push_back({true, fmt::format("at = ({:.4g}, {:.4g}) lies outside the model's zones: history '{}' "
+                                            "follows the gridpoint nearest to it, {:.3g} m away at ({:.4g}, {:.4g})",
+                                            h.at->x, h.at->y, h.name, norm(node - *h.at), node.x, node.y)});
+  }
+  histories.push_back(std::move(h));
   return static_cast<int>(histories.size());
 }
 
@@ -418,10 +445,68 @@ double energy_term(const Mechanics& m, std::string_view term) {
 
 }  // namespace
 
+namespace {
+
+// The sampler of a quantity of the whole model.
+std::function<double()> global_sampler(const Mechanics* m, std::string_view quantity) {
+  if (quantity == "ratio") return [m] { return m->info.ratio; };
+  if (quantity == "time") return [m] { return m->info.time; };
+  if (quantity == "kinetic") return [m] { return m->info.kinetic; };
+  if (quantity == "cycle") return [m] { return static_cast<double>(m->info.cycle); };
+  if (quantity == "stage") return [m] { return static_cast<double>(m->stage); };
+  if (quantity.starts_with("energy.")) return [m, q = std::string(quantity.substr(7))] { return energy_term(*m, q); };
+  if (quantity.ends_with("cracks")) {
+    const CrackMode mode = quantity == "shear_cracks"     ? CrackMode::shear
+                           : quantity == "tension_cracks" ? CrackMode::tension
+                                                          : CrackMode::none;
+    return [m, mode] {
+      if (mode == CrackMode::none) return static_cast<double>(m->cracks.size());
+      return static_cast<double>(std::count_if(m->cracks.begin(), m->cracks.end(),
+                                               [mode](const CrackView& c) { return c.mode == mode; }));
+    };
+  }
+  return [m, q = std::string(quantity)] { return contact_statistic(*m, q); };
+}
+
+// The sampler of a point quantity on what it follows: a node for ux, uy, vx, vy and joint_*, a
+// zone for the stresses.
+std::function<double()> point_sampler(const Mechanics* m, const std::string& q, int node, int zone) {
+  if (q.starts_with("joint_")) return [m, node, q] { return joint_quantity(*m, node, q); };
+  if (q[0] == 'u' || q[0] == 'v') {
+    const size_t dof = 2 * static_cast<size_t>(node) + (q[1] == 'y' ? 1 : 0);
+    if (q[0] == 'u') return [m, dof] { return m->u[dof]; };
+    return [m, dof] { return m->v[dof]; };
+  }
+  const size_t z = static_cast<size_t>(zone);
+  if (q == "sxx") return [m, z] { return m->stress[z].xx; };
+  if (q == "syy") return [m, z] { return m->stress[z].yy; };
+  if (q == "sxy") return [m, z] { return m->stress[z].xy; };
+  if (q == "szz") return [m, z] { return m->stress[z].zz; };
+  if (q == "s1") return [m, z] { return in_plane_principal(m->stress[z]).s1; };
+  return [m, z] { return in_plane_principal(m->stress[z]).s3; };
+}
+
+// Whether a zone is rock in place: it has a material that is not void and was not excavated.
+bool zone_in_rock(const Mechanics& m, size_t z) {
+  const int material = m.zone_material.empty() ? -1 : m.zone_material[z];
+  return material >= 0 && m.zone_excavated[z] == 0 && !zone_law(m.params[static_cast<size_t>(material)].model).is_void;
+}
+
+}  // namespace
+
 std::function<double()> Model::history_sampler(std::string_view quantity,
                                                 std::optional<Vec2> at) const {
+  History h;
+  h.quantity = quantity;
+  h.at = at;
+  follow(h);
+  return h.sample;
+}
+
+void Model::follow(History& h) const {
   const auto& global = history_model_quantities();
   const auto& local = history_point_quantities();
+  const std::string_view quantity = h.quantity;
   const bool is_global = std::find(global.begin(), global.end(), quantity) != global.end();
   const bool is_local = std::find(local.begin(), local.end(), quantity) != local.end();
   if (!is_global && !is_local) {
@@ -431,49 +516,67 @@ std::function<double()> Model::history_sampler(std::string_view quantity,
   }
   const Mechanics* m = mechanics_.get();
   if (is_global) {
-    if (quantity == "ratio") return [m] { return m->info.ratio; };
-    if (quantity == "time") return [m] { return m->info.time; };
-    if (quantity == "kinetic") return [m] { return m->info.kinetic; };
-    if (quantity == "cycle") return [m] { return static_cast<double>(m->info.cycle); };
-    if (quantity == "stage") return [m] { return static_cast<double>(m->stage); };
-    if (quantity.starts_with("energy.")) return [m, q = std::string(quantity.substr(7))] { return energy_term(*m, q); };
-    if (quantity.ends_with("cracks")) {
-      const CrackMode mode = quantity == "shear_cracks"     ? CrackMode::shear
-                             : quantity == "tension_cracks" ? CrackMode::tension
-                                                            : CrackMode::none;
-      return [m, mode] {
-        if (mode == CrackMode::none) return static_cast<double>(m->cracks.size());
-        return static_cast<double>(std::count_if(m->cracks.begin(), m->cracks.end(),
-                                                 [mode](const CrackView& c) { return c.mode == mode; }));
-      };
+    h.sample = global_sampler(m, quantity);
+    return;
+  }
+  if (!h.at) fail("history quantity '{}' needs at = {{x, y}}", quantity);
+  const Vec2 at = *h.at;
+  if (h.node < 0 && h.zone < 0) {
+    if (quantity.starts_with("joint_")) {
+      const int id = contact_near(at);
+      if (id < 0) fail("no contact to follow near ({}, {})", at.x, at.y);
+      h.node = m->contacts.list[static_cast<size_t>(id)].node;
+    } else if (quantity[0] == 'u' || quantity[0] == 'v') {
+      const int gp = gridpoint_near(at);
+      if (gp < 0) fail("there are no gridpoints to follow: zone{{...}} the blocks first");
+      h.node = m->gp_node[static_cast<size_t>(gp)];
+    } else {
+      h.zone = zone_at(at);
+      if (h.zone < 0) fail("no zone contains the point ({}, {})", at.x, at.y);
     }
-    return [m, q = std::string(quantity)] { return contact_statistic(*m, q); };
   }
-  if (!at) fail("history quantity '{}' needs at = {{x, y}}", quantity);
-  if (quantity.starts_with("joint_")) {
-    const int id = contact_near(*at);
-    if (id < 0) fail("no contact to follow near ({}, {})", at->x, at->y);
-    const int node = m->contacts.list[static_cast<size_t>(id)].node;
-    return [m, node, q = std::string(quantity)] { return joint_quantity(*m, node, q); };
-  }
-  if (quantity[0] == 'u' || quantity[0] == 'v') {
-    const int gp = gridpoint_near(*at);
-    if (gp < 0) fail("there are no gridpoints to follow: zone{{...}} the blocks first");
-    const size_t dof = 2 * static_cast<size_t>(m->gp_node[static_cast<size_t>(gp)]) + (quantity[1] == 'y' ? 1 : 0);
-    if (quantity[0] == 'u') return [m, dof] { return m->u[dof]; };
-    return [m, dof] { return m->v[dof]; };
-  }
-  const int zone = zone_at(*at);
-  if (zone < 0) fail("no zone contains the point ({}, {})", at->x, at->y);
-  const size_t z = static_cast<size_t>(zone);
-  const std::string q(quantity);
-  if (q == "sxx") return [m, z] { return m->stress[z].xx; };
-  if (q == "syy") return [m, z] { return m->stress[z].yy; };
-  if (q == "sxy") return [m, z] { return m->stress[z].xy; };
-  if (q == "szz") return [m, z] { return m->stress[z].zz; };
-  if (q == "s1") return [m, z] { return in_plane_principal(m->stress[z]).s1; };
-  return [m, z] { return in_plane_principal(m->stress[z]).s3; };
+  h.sample = point_sampler(m, h.quantity, h.node, h.zone);
 }
+
+void Model::follow_histories_past_excavation() {
+  Mechanics& m = *mechanics_;
+  std::vector<char> in_rock(static_cast<size_t>(m.node_count), 0);
+  for (int z = 0; z < mesh_.zone_count(); ++z)
+    if (zone_in_rock(m, static_cast<size_t>(z)))
+      for (const int gp : mesh_.zone_gp[static_cast<size_t>(z)])
+        in_rock[static_cast<size_t>(m.gp_node[static_cast<size_t>(gp)])] = 1;
+  const auto place = [&](int node) {
+    return Vec2{m.position[2 * static_cast<size_t>(node)], m.position[2 * static_cast<size_t>(node) + 1]};
+  };
+  for (History& h : m.histories) {
+    if (!h.ended.empty()) continue;
+    if (h.zone >= 0 && !zone_in_rock(m, static_cast<size_t>(h.zone))) {
+      h.ended = fmt::format("its zone at ({:.4g}, {:.4g}) was excavated at stage {}", h.at->x, h.at->y, m.stage);
+    } else if (h.node >= 0 && !in_rock[static_cast<size_t>(h.node)]) {
+      // The rock on the other side of the excavation's outline, at the same place, if any.
+      const Vec2 here = place(h.node);
+      int next = -1;
+      if (!h.quantity.starts_with("joint_"))
+        for (int n = 0; n < m.node_count && next < 0; ++n)
+          if (in_rock[static_cast<size_t>(n)] && norm(place(n) - here) <= tolerance()) next = n;
+      if (next >= 0) {
+        h.node = next;
+        h.sample = point_sampler(&m, h.quantity, h.node, h.zone);
+        notices_.push_back({false, fmt::format("history '{}' goes on at the gridpoint of block {} at ({:.4g}, {:.4g}): "
+                                               "the excavation took its own",
+                                               h.name, m.node_block[static_cast<size_t>(next)] + 1, here.x, here.y)});
+        continue;
+      }
+      h.ended = fmt::format("its gridpoint at ({:.4g}, {:.4g}) was excavated at stage {}", here.x, here.y, m.stage);
+    } else {
+      continue;
+    }
+    notices_.push_back(
+        {true, fmt::format("history '{}' records nothing more: {} (measure where rock stays)", h.name, h.ended)});
+  }
+}
+
+std::vector<Model::Notice> Model::take_notices() { return std::exchange(notices_, {}); }
 
 const std::vector<History>& Model::histories() const { return mechanics_->histories; }
 
@@ -524,12 +627,8 @@ int Model::gridpoint_near(Vec2 point) const {
   // of a block with rock in place.
   const Mechanics& m = *mechanics_;
   std::vector<char> rock(blocks_.blocks.size(), 0);
-  for (int z = 0; z < mesh_.zone_count(); ++z) {
-    const int material = m.zone_material.empty() ? -1 : m.zone_material[static_cast<size_t>(z)];
-    if (material >= 0 && m.zone_excavated[static_cast<size_t>(z)] == 0 &&
-        !zone_law(m.params[static_cast<size_t>(material)].model).is_void)
-      rock[static_cast<size_t>(mesh_.zone_block[static_cast<size_t>(z)])] = 1;
-  }
+  for (int z = 0; z < mesh_.zone_count(); ++z)
+    if (zone_in_rock(m, static_cast<size_t>(z))) rock[static_cast<size_t>(mesh_.zone_block[static_cast<size_t>(z)])] = 1;
   int best = -1;
   double best_distance = INFINITY;
   bool best_rock = false;

@@ -180,7 +180,8 @@ bool stands_judged(Mechanics& m, const Mesh& mesh, SolveResult& result) {
 long next_due(const Mechanics& m, long cycle) {
   long due = cycle + kMeasureInterval - cycle % kMeasureInterval;
   for (const Callback& c : m.callbacks) due = std::min(due, (cycle / c.every + 1) * c.every);
-  for (const History& h : m.histories) due = std::min(due, (cycle / h.every + 1) * h.every);
+  for (const History& h : m.histories)
+    if (h.ended.empty()) due = std::min(due, (cycle / h.every + 1) * h.every);
   if (judging(m)) due = std::min(due, (cycle / m.judge.every + 1) * m.judge.every);
   return due;
 }
@@ -191,7 +192,7 @@ long next_due(const Mechanics& m, long cycle) {
 bool run_due(Mechanics& m, const Mesh& mesh, long cycle, bool& commands_pending) {
   const bool broke = judging(m) && cycle % m.judge.every == 0 && broken_and_reconnected(m, mesh) > 0;
   for (History& h : m.histories)
-    if (cycle % h.every == 0) {
+    if (cycle % h.every == 0 && h.ended.empty()) {
       const double value = h.sample();
       h.cycles.push_back(cycle);
       h.values.push_back(value);
@@ -303,6 +304,10 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
     }
   }
   while (result.cycles < max_cycles) {
+    if (m.stop != nullptr && m.stop->load(std::memory_order_relaxed) != 0) {
+      result.interrupted = true;
+      break;
+    }
     if (m.dirty) {  // a callback or a judgment changed the model
       const double kinetic = kinetic_energy(m);
       prepare(m, mesh);

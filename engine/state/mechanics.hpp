@@ -10,6 +10,7 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -245,6 +246,7 @@ struct Mechanics {
   std::vector<Callback> callbacks;
   int next_handle = 1;
   std::function<void(const RunProgress&)> progress;  // reports a long run (Model::set_progress)
+  const std::atomic<int>* stop = nullptr;            // cycling ends when it is non-zero (Model::set_stop)
   double progress_every = 0.0;                       // [s] between reports; 0: none
   std::vector<History> histories;
   EnergyLedger energy;  // the energy balance (state/energy_ledger.hpp)

@@ -300,5 +300,43 @@ TEST_F(Cli, ACallbackErrorIsOneLineAndATraceback) {
             "chunk\n");
 }
 
+// SIGINT (Ctrl-C) or SIGTERM stops a run at the end of a cycle: the model is saved in
+// interrupted.h5, the script ends with the status a shell expects, and a restore goes on from
+// there bit for bit as the run would have.
+TEST_F(Cli, AnInterruptedRunIsSavedAndGoesOnFromThere) {
+  const std::string model = R"(model{ title = "long" }
+block{ x = {0, 4}, y = {0, 4} }
+zone{ edge = 0.5 }
+material{ "rock", density = 2500, young = 1e9, poisson = 0.25 }
+assign{ material = "rock" }
+gravity{ 0, -9.81 }
+boundary{ side = "bottom", fix = "xy" }
+)";
+  write("long.lua", model + "cycle(2000000000)\n");
+  for (const auto& [signal, status] : {std::pair{"INT", 130}, std::pair{"TERM", 143}}) {
+    const std::string command = "cd '" + dir_.string() + "' && { '" EDEM_EXE "' --quiet run long.lua 2>signalled.txt & "
+                                "p=$!; sleep 1; kill -" + signal + " $p; wait $p; }";
+    const int raw = std::system(command.c_str());
+    const std::string err = slurp(dir_ / "signalled.txt");
+    EXPECT_EQ(WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, status) << err;
+    EXPECT_TRUE(contains(err, std::string("long.lua:8: cycle: interrupted by SIG") + signal + " at cycle "));
+    EXPECT_TRUE(contains(err, "the model is saved in interrupted.h5 (restore(\"interrupted.h5\") goes on from there)"));
+  }
+  const std::string message = slurp(dir_ / "signalled.txt");
+  const auto at = message.find("at cycle ");
+  ASSERT_NE(at, std::string::npos) << message;
+  const long cycle = std::stol(message.substr(at + 9));
+  ASSERT_GT(cycle, 0);
+  const std::string probe = R"(local g = gp_near(2, 4)
+print(("%.17g %.17g"):format(g.ux, g.uy))
+)";
+  write("whole.lua", model + "cycle(" + std::to_string(cycle + 300) + ")\n" + probe);
+  write("after.lua", "restore(\"interrupted.h5\")\ncycle(300)\n" + probe);
+  const Outcome whole = edem("--quiet run whole.lua"), after = edem("--quiet run after.lua");
+  ASSERT_EQ(whole.status, 0) << whole.err;
+  ASSERT_EQ(after.status, 0) << after.err;
+  EXPECT_EQ(after.out, whole.out);
+}
+
 }  // namespace
 }  // namespace edem
