@@ -47,9 +47,9 @@ const Command& output_command() {
       .help =
           "Field output for ParaView: frames of the model in FILE's .h5 beside an XDMF index FILE "
           "(open it in "
-          "ParaView; its frames are a time series). Each frame holds, at the current positions: "
-          "the zones in "
-          "place (stresses sxx, syy, sxy, szz, s1, s3, plastic state bits, material and block per "
+          "ParaView; its frames are a time series). Each frame holds, at reference positions with a "
+          "displacement per point (Warp By Vector on it shows the model now): the zones in "
+          "place and their gridpoints (stresses sxx, syy, sxy, szz, s1, s3, plastic state bits, material and block per "
           "zone; "
           "displacement and velocity per gridpoint), the contacts as lines along their planes (fn, "
           "fs, un, us, "

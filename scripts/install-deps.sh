@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs what EDEM needs to build and test, from Debian's packages only; skips what is
-# already installed. Run as root (or with sudo available).
+# already installed. Run as root (or with sudo available). `--paraview` adds ParaView.
 set -euo pipefail
 
 packages=(
@@ -11,6 +11,10 @@ packages=(
   libgtest-dev libbenchmark-dev libcairo2-dev libcli11-dev libfmt-dev
   python3-h5py  # tests read the field output back with it (an independent reader)
 )
+
+# --paraview: Debian's paraview as well, for the long test that opens the field output in it
+# (ctest -L long -R output.paraview); large, so only on request.
+if [[ ${1:-} == --paraview ]]; then packages+=(paraview python3-paraview); fi
 
 missing=()
 for package in "${packages[@]}"; do

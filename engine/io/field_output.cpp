@@ -25,16 +25,43 @@ std::string data_item(const std::string& file, const std::string& path, const st
   return fmt::format(R"(<DataItem Dimensions="{}" {} Format="HDF">{}:{}</DataItem>)", dims, number, file, path);
 }
 
-std::string attribute(const std::string& file, const std::string& group, const std::string& name, int count,
-                      const char* center, const std::string& type) {
-  return fmt::format(R"(        <Attribute Name="{}" AttributeType="Scalar" Center="{}">{}</Attribute>
-)",
-                     name, center, data_item(file, group + "/" + name, std::to_string(count), type));
+// XML's special characters in an attribute value.
+std::string xml_escaped(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    if (c == '&') out += "&amp;";
+    else if (c == '<') out += "&lt;";
+    else if (c == '>') out += "&gt;";
+    else if (c == '"') out += "&quot;";
+    else out += c;
+  }
+  return out;
 }
 
-// A grid of line cells (two points each) with its cell attributes; none when there are no cells.
+// A scalar attribute; with a legend (what its integers mean) as an Information element.
+std::string attribute(const std::string& file, const std::string& group, const std::string& name, int count,
+                      const char* center, const std::string& type, const std::string& legend = "") {
+  const std::string information =
+      legend.empty() ? "" : fmt::format(R"(<Information Name="legend" Value="{}"/>)", xml_escaped(legend));
+  return fmt::format(R"(        <Attribute Name="{}" AttributeType="Scalar" Center="{}">{}{}</Attribute>
+)",
+                     name, center, information, data_item(file, group + "/" + name, std::to_string(count), type));
+}
+
+std::string displacement_attribute(const std::string& file, const std::string& group, int points) {
+  return fmt::format(R"(        <Attribute Name="displacement" AttributeType="Vector" Center="Node">{}</Attribute>
+)",
+                     data_item(file, group + "/displacement", fmt::format("{} 3", points), "Float"));
+}
+
+struct Field {
+  std::string name, type, legend;
+};
+
+// A grid of line cells (two points each) with its cell attributes and its points' displacement;
+// none when there are no cells.
 std::string line_grid(const std::string& file, const std::string& group, const char* name, int cells,
-                      const std::vector<std::pair<std::string, std::string>>& fields) {
+                      const std::vector<Field>& fields) {
   if (cells == 0) return "";  // readers stumble on empty data items; the frame simply has none
   std::string text = fmt::format(R"(      <Grid Name="{}" GridType="Uniform">
         <Topology TopologyType="Polyline" NodesPerElement="2" NumberOfElements="{}">{}</Topology>
@@ -42,8 +69,15 @@ std::string line_grid(const std::string& file, const std::string& group, const c
 )",
                                  name, cells, data_item(file, group + "/cells", fmt::format("{} 2", cells), "Int"),
                                  data_item(file, group + "/points", fmt::format("{} 2", 2 * cells), "Float"));
-  for (const auto& [field, type] : fields) text += attribute(file, group, field, cells, "Cell", type);
+  text += displacement_attribute(file, group, 2 * cells);
+  for (const auto& f : fields) text += attribute(file, group, f.name, cells, "Cell", f.type, f.legend);
   return text + "      </Grid>\n";
+}
+
+std::string material_legend(const std::vector<std::string>& names) {
+  std::string legend;
+  for (size_t i = 0; i < names.size(); ++i) legend += fmt::format("{}{} {}", i > 0 ? ", " : "", i, names[i]);
+  return legend;
 }
 
 // Point pairs' connectivity: 0 1, 2 3, ...
@@ -91,30 +125,38 @@ void FieldSeries::append(const FieldFrame& f) {
     w("velocity", f.velocity);
     w("sxx", f.sxx), w("syy", f.syy), w("sxy", f.sxy), w("szz", f.szz), w("s1", f.s1), w("s3", f.s3);
     w("state", f.state), w("material", f.material), w("block", f.block);
+    w("state_legend", std::string(kStateLegend));
+    w("material_legend", material_legend(f.material_names));
   }
   {
     const h5::Handle g = frame.group("contacts");
     h5::Writer w(g.get(), name + "/contacts");
     w("points", f.contact_points), w("cells", pairs(f.contact_points.size()));
+    w("displacement", f.contact_displacement);
     w("fn", f.fn), w("fs", f.fs), w("un", f.un), w("us", f.us), w("slip", f.slip);
     w("state", f.contact_state), w("kind", f.contact_kind);
+    w("state_legend", std::string(kContactStateLegend)), w("kind_legend", std::string(kContactKindLegend));
   }
   {
     const h5::Handle g = frame.group("cracks");
     h5::Writer w(g.get(), name + "/cracks");
     w("points", f.crack_points), w("cells", pairs(f.crack_points.size()));
+    w("displacement", f.crack_displacement);
     w("mode", f.crack_mode), w("cycle", f.crack_cycle), w("stage", f.crack_stage);
+    w("mode_legend", std::string(kCrackModeLegend));
   }
   {
     const h5::Handle g = frame.group("bolts");
     h5::Writer w(g.get(), name + "/bolts");
     w("points", f.bolt_points), w("cells", pairs(f.bolt_points.size()));
+    w("displacement", f.bolt_displacement);
     w("force", f.bolt_force), w("strain", f.bolt_strain), w("state", f.bolt_state);
+    w("state_legend", std::string(kBoltStateLegend));
   }
   if (H5Fflush(file.get(), H5F_SCOPE_GLOBAL) < 0) fail("cannot write '{}': HDF5 could not flush it", data_);
   index_.push_back({f.time, static_cast<int>(f.triangles.size()), static_cast<int>(f.points.size()),
                     static_cast<int>(f.contact_points.size() / 2), static_cast<int>(f.crack_points.size() / 2),
-                    static_cast<int>(f.bolt_points.size() / 2)});
+                    static_cast<int>(f.bolt_points.size() / 2), material_legend(f.material_names)});
   write_index();
 }
 
@@ -143,14 +185,17 @@ void FieldSeries::write_index() const {
                         data_item(file, z + "/velocity", fmt::format("{} 3", e.points), "Float"));
     for (const char* field : {"sxx", "syy", "sxy", "szz", "s1", "s3"})
       text += attribute(file, z, field, e.zones, "Cell", "Float");
-    for (const char* field : {"state", "material", "block"}) text += attribute(file, z, field, e.zones, "Cell", "Int");
+    text += attribute(file, z, "state", e.zones, "Cell", "Int", kStateLegend);
+    text += attribute(file, z, "material", e.zones, "Cell", "Int", e.materials);
+    text += attribute(file, z, "block", e.zones, "Cell", "Int");
     text += "      </Grid>\n";
     text += line_grid(file, g + "/contacts", "contacts", e.contacts,
-                      {{"fn", "Float"}, {"fs", "Float"}, {"un", "Float"}, {"us", "Float"}, {"slip", "Float"},
-                       {"state", "Int"}, {"kind", "Int"}});
-    text += line_grid(file, g + "/cracks", "cracks", e.cracks, {{"mode", "Int"}, {"cycle", "Float"}, {"stage", "Int"}});
+                      {{"fn", "Float", ""}, {"fs", "Float", ""}, {"un", "Float", ""}, {"us", "Float", ""},
+                       {"slip", "Float", ""}, {"state", "Int", kContactStateLegend}, {"kind", "Int", kContactKindLegend}});
+    text += line_grid(file, g + "/cracks", "cracks", e.cracks,
+                      {{"mode", "Int", kCrackModeLegend}, {"cycle", "Float", ""}, {"stage", "Int", ""}});
     text += line_grid(file, g + "/bolts", "bolts", e.bolt_segments,
-                      {{"force", "Float"}, {"strain", "Float"}, {"state", "Int"}});
+                      {{"force", "Float", ""}, {"strain", "Float", ""}, {"state", "Int", kBoltStateLegend}});
     text += "    </Grid>\n";
   }
   text += "    </Grid>\n  </Domain>\n</Xdmf>\n";

@@ -53,13 +53,27 @@ with h5py.File(f"{directory}/stages.h5", "r") as data:
     check("zone cells", zones["cells"].shape[0], expected["zones"])
     check("zone cell attribute in the index", int(grids["zones"].find("Topology").get("NumberOfElements")),
           expected["zones"])
-    check("points", zones["points"].shape[0], expected["gridpoints"])
+    points = zones["points"][:]
+    check("points: the zones' in place, none else", points.shape[0], expected["zones_gridpoints"])
     check("first zone in place: sxx [Pa]", zones["sxx"][0], expected["zone_first_sxx"])
     check("last zone in place: s1 [Pa]", zones["s1"][-1], expected["zone_last_s1"])
-    check("first gridpoint: uy [m]", zones["displacement"][0, 1], expected["gridpoint_first_uy"])
-    check("first gridpoint: y now [m]", zones["points"][0, 1], expected["gridpoint_first_y"])
     cells = zones["cells"][:]
-    check("zone corners in range", int(cells.min() >= 0 and cells.max() < zones["points"].shape[0]), 1)
+    check("zone corners in range", int(cells.min() >= 0 and cells.max() < points.shape[0]), 1)
+    check("every point a zone's corner", len(set(cells.flatten().tolist())), points.shape[0])
+    # Points are where the gridpoints were made: Warp By Vector (points + displacement) puts
+    # them where they are now.
+    crown = int(np.argmin(np.hypot(points[:, 0] - expected["crown_x"], points[:, 1] - expected["crown_y"])))
+    check("crown: reference x [m]", points[crown, 0], expected["crown_x"])
+    check("crown: reference y [m]", points[crown, 1], expected["crown_y"])
+    check("crown: uy [m]", zones["displacement"][crown, 1], expected["crown_uy"])
+    check("crown: warped y [m]", points[crown, 1] + zones["displacement"][crown, 1],
+          expected["crown_y"] + expected["crown_uy"], 1e-15)
+    legend = zones.attrs["material_legend"]
+    legend = legend.decode() if isinstance(legend, bytes) else legend
+    check("material names in the file", len(legend.split(", ")), expected["materials"])
+    check("material 0 is rock", int(legend.startswith("0 rock")), 1)
+    index_legends = [i.get("Value") for i in grids["zones"].iter("Information")]
+    check("legends in the index (state, material)", len(index_legends), 2)
     contacts = f["contacts"]
     check("contact cells", contacts["cells"].shape[0], expected["contacts"])
     check("contact fn sum [N/m]", float(np.sum(contacts["fn"][:])), expected["contact_fn_sum"], 1e-12)
@@ -67,6 +81,8 @@ with h5py.File(f"{directory}/stages.h5", "r") as data:
     cracks = f["cracks"]
     check("crack cells", cracks["cells"].shape[0], expected["cracks"])
     check("shear cracks", int(np.sum(cracks["mode"][:] == 1)), expected["cracks_shear"])
+    for group in ("contacts", "cracks", "bolts"):
+        check(f"{group}: a displacement per point", f[group]["displacement"].shape[0], f[group]["points"].shape[0])
     bolts = f["bolts"]
     check("bolt segment cells", bolts["cells"].shape[0], expected["bolt_segments"])
     check("largest bolt force [N/m]", float(np.max(bolts["force"][:])), expected["bolt_force_max"])

@@ -42,22 +42,29 @@ put("every_frames", math.floor(i.cycle / 400))
 put("cycle", i.cycle)
 put("stage", i.stage)
 put("gridpoints", i.gridpoints)
-local in_place, first_sxx, last_s1 = 0, nil, nil
+local in_place, first_sxx, last_s1, corners, points = 0, nil, nil, {}, 0
 for z in zones() do
   if not z.excavated then
     in_place = in_place + 1
     first_sxx = first_sxx or z.sxx
     last_s1 = z.s1
+    for _, id in ipairs(z.gridpoints) do
+      if not corners[id] then corners[id], points = true, points + 1 end
+    end
   end
 end
 put("zones", in_place)
+put("zones_gridpoints", points)  -- the excavated zones' own gridpoints are not written
 put("zone_first_sxx", first_sxx)
 put("zone_last_s1", last_s1)
-for g in gridpoints() do  -- the first one
-  put("gridpoint_first_uy", g.uy)
-  put("gridpoint_first_y", g.y + g.uy)
-  break
-end
+-- A gridpoint of the crown, which moved: where it was made, its displacement.
+local crown = gp_near(t.crown[1], t.crown[2])
+assert(corners[crown.id], "the crown's gridpoint is of rock in place")
+put("crown_x", crown.x)
+put("crown_y", crown.y)
+put("crown_ux", crown.ux)
+put("crown_uy", crown.uy)
+put("materials", 2)  -- rock, intact
 local contact_count, fn_sum, slipping = 0, 0, 0
 for c in contacts() do
   contact_count = contact_count + 1
