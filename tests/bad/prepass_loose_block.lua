@@ -1,5 +1,5 @@
 -- line: 14
--- expect: prepass: present state: Newton did not converge from load factor
+-- expect: prepass: present state: no equilibrium found beyond load factor 0 \(
 -- A block on a 40 degree joint with 30 degrees of friction slides: there is no static equilibrium
 -- to find, and the prepass says so instead of returning one.
 block{ x = {0, 10}, y = {0, 10} }

@@ -1,5 +1,5 @@
 -- line: 10
--- expect: prepass: present state: Newton did not converge from load factor
+-- expect: prepass: present state: no equilibrium found beyond load factor 0 \(
 -- A block under gravity with no support at all (a mechanism): the load cannot be carried. The
 -- prepass says which stage failed instead of returning garbage.
 block{ x = {0, 10}, y = {0, 10} }

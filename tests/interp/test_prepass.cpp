@@ -111,13 +111,13 @@ TEST(Prepass, AStageWithNoStaticStateEndsThePrepassWhenKept) {
     Interpreter interpreter;
     interpreter.context().quiet = true;
     EXPECT_TRUE(contains(error_of(interpreter, weak + "prepass{ stages = { \"hole\", \"slot\" }, iterations = 8 }"),
-                         "stage 1 (hole): Newton did not converge from load factor"));
+                         "stage 1 (hole): no equilibrium found beyond load factor"));
   }
   Interpreter interpreter;
   interpreter.context().quiet = true;
   expect_runs(interpreter, weak + R"(
     local pre = prepass{ stages = { "hole", "slot" }, iterations = 8, on_failure = "keep" }
-    assert(pre.failure and pre.failure:find("stage 1 (hole): Newton did not converge", 1, true), tostring(pre.failure))
+    assert(pre.failure and pre.failure:find("stage 1 (hole): no equilibrium found beyond load factor", 1, true), tostring(pre.failure))
     assert(#pre.stages == 2, "present state and the hole, no slot: " .. #pre.stages)
     assert(pre.stages[1].reached == 1 and pre.stages[1].failure == nil)
     local reached = pre.stages[2].reached
@@ -150,10 +150,12 @@ TEST(Prepass, AStageWithNoStaticStateEndsThePrepassWhenKept) {
 
 // The same weak rock with 30 iterations a load step: a failed step's line search stops once it has
 // given the same out-of-balance force, to the last bit, four iterations in a row (it no longer
-// moves the iterate), instead of repeating it up to its 30th iteration. Six of the 17 failed load
-// steps end so (one of them would anyway, for KINSOL's own reasons), 814 iterations in all
-// against 897 without the stop, and the steps are cut back as they would be without it: the same
-// 17 cut-backs, the same factor reached (one attempt at the stage: restarts = 0).
+// moves the iterate), instead of repeating it up to its 30th iteration. The stage has no static
+// state past load factor 0.70: after 0.7015625 the steps creep on by less than a tenth of a step
+// over 10 cut-backs counted across the small successes between them, which ends the attempt
+// (one attempt at the stage: restarts = 0): 11 failed steps, 554 iterations (without the creeping
+// budget the attempt went on to 17 cut-backs, 814 iterations, to the same factor; without the
+// stop of the line search, 897).
 TEST(Prepass, AStuckLineSearchGivesUpAndTheStepIsCutBack) {
   Interpreter interpreter;
   interpreter.context().quiet = true;
@@ -169,9 +171,9 @@ TEST(Prepass, AStuckLineSearchGivesUpAndTheStepIsCutBack) {
         if n < 30 and r[n] == r[n - 1] and r[n - 1] == r[n - 2] and r[n - 2] == r[n - 3] then stalled = stalled + 1 end
       end
     end
-    assert(failed == 17 and hole.cutbacks == 17, ("failed steps %d, cut-backs %d"):format(failed, hole.cutbacks))
-    assert(stalled >= 4, "failed steps that ended on four equal forces: " .. stalled)  -- 6 now, 1 before
-    assert(hole.iterations < 897, "iterations " .. hole.iterations)  -- 814 now, 897 before
+    assert(failed == 11 and hole.cutbacks == 11, ("failed steps %d, cut-backs %d"):format(failed, hole.cutbacks))
+    assert(stalled >= 3, "failed steps that ended on four equal forces: " .. stalled)
+    assert(hole.iterations <= 554, "iterations " .. hole.iterations)
   )");
 }
 
