@@ -17,6 +17,7 @@
 #include "context.hpp"
 #include "core/error.hpp"
 #include "errors.hpp"
+#include "progress_line.hpp"
 
 namespace edem {
 namespace {
@@ -65,12 +66,11 @@ void start_progress(Context& context, const InterpreterOptions& options) {
   if (options.quiet || options.progress_seconds == 0.0) return;
   const bool terminal = ::isatty(::fileno(stdout)) != 0;
   context.progress_every = options.progress_seconds > 0.0 ? options.progress_seconds : terminal ? 0.5 : 10.0;
-  context.progress = [&context, terminal](const RunProgress& p) {
+  context.progress = [&context, terminal, last = RunProgress{}](const RunProgress& p) mutable {
     if (context.quiet) return;  // quiet set after the start (tests, embedding) silences it too
-    const double rate = p.seconds > 0.0 ? static_cast<double>(p.run_cycles) / p.seconds : 0.0;
-    const std::string line = fmt::format(
-        "cycle {} ({} of {}), ratio {:.3g}{}, cracks {}, stage {}, {:.0f} cycles/s", p.cycle, p.run_cycles,
-        p.max_cycles, p.ratio, p.target > 0.0 ? fmt::format(" (to {:.3g})", p.target) : "", p.cracks, p.stage, rate);
+    if (p.run_cycles < last.run_cycles || last.seconds > p.seconds) last = RunProgress{};  // a new run
+    const std::string line = progress_line(last, p);
+    last = p;
     if (terminal) {
       fmt::print("\r{}\033[K", line);
       context.progress_line_open = true;

@@ -242,6 +242,10 @@ struct RunProgress {
   long cracks = 0;        // new cracks so far
   int stage = 0;          // excavation stage
   double seconds = 0.0;   // wall clock since the run started
+  // What can make the ratio jump between two reports: contacts that slip or open, a release.
+  long slipping = 0;      // contacts slipping now
+  long open = 0;          // contacts open now
+  long releasing = 0;     // cycles an excavation's release still has to go
 };
 
 // Zone state flags (bits): failing now and failed in the past, in shear and in tension.

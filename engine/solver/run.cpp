@@ -363,6 +363,11 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
       const auto now = std::chrono::steady_clock::now();
       if (std::chrono::duration<double>(now - reported).count() >= m.progress_every) {
         reported = now;
+        long slipping = 0, open = 0;
+        for (const Contact& c : m.contacts.list) {
+          slipping += c.state == ContactState::slip;
+          open += c.state == ContactState::open;
+        }
         m.progress({.cycle = m.info.cycle,
                     .run_cycles = result.cycles,
                     .max_cycles = max_cycles,
@@ -370,7 +375,10 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
                     .target = target_ratio,
                     .cracks = static_cast<long>(m.cracks.size()),
                     .stage = m.stage,
-                    .seconds = std::chrono::duration<double>(now - started).count()});
+                    .seconds = std::chrono::duration<double>(now - started).count(),
+                    .slipping = slipping,
+                    .open = open,
+                    .releasing = release_cycles_left(m)});
       }
     }
   }
