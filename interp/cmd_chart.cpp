@@ -159,6 +159,10 @@ int run_chart(lua_State* L, Context& context, const Args& args) {
   if (args.has("history")) {
     const auto& names = args.get<std::vector<std::string>>("history");
     for (ChartSeries& s : history_series(context.model(), names)) def.series.push_back(std::move(s));
+    // Against the cycle, the excavation stages are marked where they were dug.
+    const std::vector<long>& stages = context.model().stage_cycles();
+    for (size_t k = 0; k < stages.size(); ++k)
+      def.marks.push_back({static_cast<double>(stages[k]), fmt::format("stage {}", k + 1)});
     if (!args.has("x_label") && !args.has("series")) def.x_label = "cycle";
     if (!args.has("y_label")) def.y_label = shared_unit(context.model(), names);
   }
@@ -188,7 +192,8 @@ const Command& chart_command() {
                "none; give history"},
               {"history", Type::strings, "", any_value, kOptional,
                "recorded histories (history{}) by name, each a line against the cycle, named with "
-               "its unit; x_label then defaults to cycle and y_label to their shared unit",
+               "its unit, the excavation stages marked where they were dug; x_label then defaults to "
+               "cycle and y_label to their shared unit",
                "none; give series"},
               {"title", Type::string, "", any_value, kOptional, "the title above the chart",
                "none"},

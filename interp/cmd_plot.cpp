@@ -24,6 +24,12 @@ int run_plot(lua_State*, Context& context, const Args& args) {
     def.window = std::array<double, 4>{w[0], w[1], w[2], w[3]};
   }
   if (args.has("colour")) def.colour = args.string("colour");
+  if (args.has("range")) {
+    const auto& r = args.get<std::array<double, 2>>("range");
+    def.range = std::array<double, 2>{r[0], r[1]};
+  }
+  def.bands = static_cast<int>(args.integer("bands"));
+  if (args.has("title")) def.title = args.string("title");
   plot(context.model(), def);
   return 0;
 }
@@ -57,10 +63,16 @@ const Command& plot_command() {
                {},
                plot_layers},
               {"colour", Type::string, "", any_value, kOptional,
-               "fill the zones in place by a quantity in 8 equal bands listed in the legend, as a contour "
+               "fill the zones in place by a quantity in equal bands (bands, range) listed in the legend in one unit, as a contour "
                "plot: zone stresses sxx, syy, sxy, szz, s1, s3 [Pa] or displacements ux, uy, u (magnitude) "
                "[m], the mean of each zone's corners",
                "none", plot_colours},
+              {"range", Type::pair, "", any_value, kOptional,
+               "{lo, hi}: the colour bands' range, in the quantity's unit (Pa or m), fixed so that "
+               "pictures compare; values beyond it take the end bands",
+               "from the least to the largest value in place"},
+              {"bands", Type::integer, "", between(2, 16), "8", "the number of colour bands"},
+              {"title", Type::string, "", any_value, kOptional, "the picture's title", "the model's title"},
               {"size", Type::int_pair, "px", between(kPlotMinSize, kPlotMaxSize), "{1200, 900}",
                "width and height (points for SVG and PDF)"},
               {"window", Type::numbers, "m", any_value, kOptional,

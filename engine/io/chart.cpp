@@ -234,6 +234,8 @@ constexpr double kTitleFont = 16.0, kLabelFont = 12.5, kTickFont = 11.0;
 constexpr double kTickLength = 5.0, kMinorLength = 3.0, kTickGap = 4.0;
 constexpr double kMinorRoom = 40.0;  // the shortest decade with minor ticks
 constexpr double kLineWidth = 1.8, kMarkerRadius = 5.0;
+// A series of more points than this is a line alone: markers on a dense history hide it.
+constexpr std::size_t kMarkedPoints = 40;
 // Over the data, the legend's ground lets a little of it show through.
 constexpr LegendStyle kLegend{.swatch = 30.0, .ground = 0.9, .columns = 1};
 constexpr double kLegendInset = 10.0;  // from the frame
@@ -422,8 +424,25 @@ void draw_series(Canvas& p, const Layout& lay,
   }
   // Markers above every line, so that no line hides a point.
   for (std::size_t i = 0; i < points.size(); ++i)
-    for (const auto& [x, y] : points[i]) marker(p, marker_of(i), x, y, colour_of(i));
+    if (points[i].size() <= kMarkedPoints || points[i].size() == 1)
+      for (const auto& [x, y] : points[i]) marker(p, marker_of(i), x, y, colour_of(i));
   cairo_restore(cr);
+}
+
+// The marks: dashed vertical lines with their labels just inside the frame's top.
+void draw_marks(Canvas& p, const Layout& lay, const std::vector<ChartMark>& marks) {
+  const Rect& f = lay.frame;
+  const double s = p.s();
+  for (const ChartMark& m : marks) {
+    if (lay.x.log && !(m.x > 0.0)) continue;
+    const double x = lay.x.device(lay.x.unit(m.x));
+    if (!(x >= f.x && x <= f.x + f.w)) continue;
+    cairo_new_path(p.cr());
+    p.segment(x, f.y, x, f.y + f.h);
+    p.pen({kFrame, 0.9, {4.0, 3.0}, false});
+    cairo_stroke(p.cr());
+    p.text(m.label, x + 3.0 * s, f.y + 1.2 * kTickFont * s, Align::left, {.size = kTickFont, .colour = kFrame});
+  }
 }
 
 // The named series, in order, as legend rows.
@@ -492,6 +511,7 @@ void render(cairo_t* cr, const ChartDef& def, double width, double height) {
 
   p.paint(rgb(0xffffff));
   draw_grid(p, lay);
+  draw_marks(p, lay, def.marks);
   draw_series(p, lay, points);
   draw_axes(p, lay);
   draw_labels(p, lay, def, width, height);
@@ -499,7 +519,14 @@ void render(cairo_t* cr, const ChartDef& def, double width, double height) {
   if (const auto box = legend_box(p, lay, legend, points))
     p.legend(*box, legend.entries, kLegend, [&](std::size_t entry, double x, double y) {
       const std::size_t i = legend.series[entry];
-      marker(p, marker_of(i), x, y, colour_of(i));
+      if (points[i].size() <= kMarkedPoints) {
+        marker(p, marker_of(i), x, y, colour_of(i));
+        return;
+      }
+      cairo_new_path(p.cr());
+      p.segment(x - 2.0 * kMarkerRadius * p.s(), y, x + 2.0 * kMarkerRadius * p.s(), y);
+      p.pen(line_pen(i));
+      cairo_stroke(p.cr());
     });
 }
 

@@ -20,6 +20,12 @@ struct ChartSeries {
   std::vector<double> x, y;  // the points, drawn in this order; the same length, at least 1
 };
 
+// A vertical line across the chart at x, labelled at its top (an excavation stage).
+struct ChartMark {
+  double x = 0.0;
+  std::string label;
+};
+
 struct ChartDef {
   std::string file;              // .png, .svg or .pdf (any case)
   std::string title;             // above the chart; "" for none
@@ -27,6 +33,7 @@ struct ChartDef {
   bool log_x = false;            // logarithmic x axis: every x must be > 0
   bool log_y = false;            // logarithmic y axis: every y must be > 0
   std::vector<ChartSeries> series;
+  std::vector<ChartMark> marks;  // those within the x axis' range are drawn, dashed
   int width = 1200;  // [px] (points for SVG/PDF), kPlotMinSize to kPlotMaxSize
   int height = 900;  // [px]
 };

@@ -260,6 +260,7 @@ template <class Ar> void fields(Ar& ar, Mechanics& m) {
   ar("faces", m.faces); ar("contacts", m.contacts); ar("crack_seeds", m.crack_seeds); ar("sections", m.sections);
   ar("edge_section", m.edge_section); ar("edge_glued", m.edge_glued); ar("cracks", m.cracks);
   ar("judge_every", m.judge.every); ar("stage", m.stage); ar("zone_excavated", m.zone_excavated);
+  optional_member(ar, "stage_cycles", m.stage_cycles, {});  // older files: none (charts mark no stages)
   ar("release", m.release); ar("bolt_materials", m.bolt_materials); ar("bolts", m.bolts);
   ar("bolt_hosts", m.bolt_hosts); ar("fresh_cracks", m.fresh_cracks);
   // derived by prepare()

@@ -91,6 +91,7 @@ class Model {
   void excavate(const ExcavateDef& def);
   void fill(const FillDef& def);
   int stage() const;  // excavations so far (0: none)
+  const std::vector<long>& stage_cycles() const;  // the cycle each stage was excavated at, in order
   // Bolts (model/model_bolts.cpp). A bolt is laid in the rock as it stands now, and goes out of
   // service when its ground is excavated; forces are per metre of thickness (/ spacing).
   void add_bolt_material(const BoltMaterialDef& def);  // redefining a name is an error

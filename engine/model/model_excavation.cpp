@@ -78,4 +78,6 @@ void Model::fill(const FillDef& def) {
 
 int Model::stage() const { return mechanics_->stage; }
 
+const std::vector<long>& Model::stage_cycles() const { return mechanics_->stage_cycles; }
+
 }  // namespace edem

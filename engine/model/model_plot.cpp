@@ -166,12 +166,15 @@ std::map<EdgeClass, Polylines> collect_edges(const BlockSet& set, const Classify
   return out;
 }
 
-// Each zone edge once (interior edges are shared by two zones).
-Polylines zone_edges(const Mesh& mesh) {
+// The edges of the zones not excavated, each once (interior edges are shared by two zones).
+Polylines zone_edges(const Model& model) {
+  const Mesh& mesh = model.mesh();
   std::vector<std::uint64_t> keys;
   keys.reserve(mesh.zone_gp.size() * 3);
   const auto gp_count = static_cast<std::uint64_t>(mesh.gp_position.size());
-  for (const auto& zone : mesh.zone_gp) {
+  for (int z = 0; z < mesh.zone_count(); ++z) {
+    if (model.zone_view(z).excavated != 0) continue;
+    const auto& zone = mesh.zone_gp[static_cast<std::size_t>(z)];
     for (int i = 0; i < 3; ++i) {
       const auto a = static_cast<std::uint64_t>(zone[i]);
       const auto b = static_cast<std::uint64_t>(zone[(i + 1) % 3]);
@@ -221,11 +224,19 @@ constexpr std::array kYieldColours{rgb(0xf4a582), rgb(0x92c5de), rgb(0xc2a5cf)};
 constexpr Rgb kCrack = rgb(0xd62728);
 constexpr Rgb kShearCrack = rgb(0x1a35d4);  // deeper than joint set 1's blue, and thicker
 
-constexpr int kBands = 8;
-// Viridis at 8 steps: dark blue (lowest) to yellow (highest), readable in grey.
-constexpr std::array<Rgb, kBands> kBandColours{rgb(0x440154), rgb(0x46327e), rgb(0x365c8d),
-                                               rgb(0x277f8e), rgb(0x1fa187), rgb(0x4ac16d),
-                                               rgb(0xa0da39), rgb(0xfde725)};
+// Viridis at 8 steps: dark blue (lowest) to yellow (highest), readable in grey; other band
+// counts are taken between them.
+constexpr std::array kViridis{rgb(0x440154), rgb(0x46327e), rgb(0x365c8d), rgb(0x277f8e),
+                              rgb(0x1fa187), rgb(0x4ac16d), rgb(0xa0da39), rgb(0xfde725)};
+
+// The colour of band b of n, lowest first: 8 bands are viridis' own steps.
+Rgb band_colour(int b, int n) {
+  const double at = n > 1 ? static_cast<double>(b) * (kViridis.size() - 1) / (n - 1) : 0.0;
+  const auto i = std::min(static_cast<std::size_t>(at), kViridis.size() - 2);
+  const double t = at - static_cast<double>(i);
+  const Rgb &a = kViridis[i], &c = kViridis[i + 1];
+  return {a.r + t * (c.r - a.r), a.g + t * (c.g - a.g), a.b + t * (c.b - a.b)};
+}
 
 Rgb set_colour(int set) {
   return kSetColours[static_cast<std::size_t>(std::max(set, 0)) % kSetColours.size()];
@@ -348,7 +359,7 @@ struct Gathered {
   std::string yield_source;  // "plastic" or "prepass", for the legend
   // colour: zones in place by band, lowest first, and each band's legend line
   std::vector<std::vector<Polygon>> bands;
-  std::vector<std::string> band_labels;
+  std::vector<std::string> band_labels;  // highest first, as the legend reads
   // stress layer: ticks in compression and in tension, and the largest magnitude of each [Pa]
   Polylines compression_ticks, tension_ticks;
   double max_compression = 0.0, max_tension = 0.0;
@@ -387,21 +398,25 @@ void gather_yielded(const Model& model, bool from_prepass, Gathered& g) {
   }
 }
 
-// An SI value in engineering notation, short: "-1.25 MPa", "3.4 mm".
-std::string with_unit(double value, const char* unit) {
-  const bool metres = std::string_view(unit) == "m";
-  const double a = std::abs(value);
-  if (metres) {
-    if (a != 0 && a < 0.01) return fmt::format("{:.3g} mm", value * 1e3);
-    return fmt::format("{:.3g} m", value);
-  }
-  if (a >= 1e6) return fmt::format("{:.3g} MPa", value * 1e-6);
-  if (a >= 1e3) return fmt::format("{:.3g} kPa", value * 1e-3);
-  return fmt::format("{:.3g} Pa", value);
+// The multiple of `unit` ("m" or "Pa") that suits values up to `largest` in size: mm, MPa, ...
+std::pair<double, std::string> unit_for(double largest, const char* unit) {
+  const double a = std::abs(largest);
+  if (std::string_view(unit) == "m") return a != 0 && a < 0.01 ? std::pair{1e3, std::string("mm")} : std::pair{1.0, std::string("m")};
+  if (a >= 1e6) return {1e-6, "MPa"};
+  if (a >= 1e3) return {1e-3, "kPa"};
+  return {1.0, "Pa"};
 }
 
-// Zones in place by `quantity` in kBands equal bands from its least to its largest value.
-void gather_bands(const Model& model, const std::string& quantity, Gathered& g) {
+// An SI value in engineering notation, short: "-1.25 MPa", "3.4 mm".
+std::string with_unit(double value, const char* unit) {
+  const auto [factor, name] = unit_for(value, unit);
+  return fmt::format("{:.3g} {}", value * factor, name);
+}
+
+// Zones in place by `quantity` in `count` equal bands over `range` (none: from its least to its
+// largest value); beyond the range, the end bands. The legend gives every bound in one unit.
+void gather_bands(const Model& model, const std::string& quantity, std::optional<std::array<double, 2>> range,
+                  int count, Gathered& g) {
   const Mesh& mesh = model.mesh();
   if (mesh.zone_count() == 0)
     fail("colour = \"{}\": the model has no zones (zone{{}} first)", quantity);
@@ -428,19 +443,24 @@ void gather_bands(const Model& model, const std::string& quantity, Gathered& g) 
   }
   if (zones.empty()) fail("colour = \"{}\": no zone is in place to colour", quantity);
   const auto [low, high] = std::minmax_element(values.begin(), values.end());
-  const double lo = *low, width = (*high - *low) / kBands;
+  const double lo = range ? (*range)[0] : *low, hi = range ? (*range)[1] : *high;
+  const double width = (hi - lo) / count;
+  const bool below = *low < lo, above = *high > hi;  // values beyond a fixed range
   const char* unit = displacement ? "m" : "Pa";
-  g.bands.assign(kBands, {});
+  const auto [factor, name] = unit_for(std::max(std::abs(lo), std::abs(hi)), unit);
+  const auto show = [&, factor = factor](double v) { return fmt::format("{:.3g}", v * factor); };
+  g.bands.assign(static_cast<std::size_t>(count), {});
   for (std::size_t i = 0; i < zones.size(); ++i) {
-    const int band =
-        width > 0 ? std::clamp(static_cast<int>((values[i] - lo) / width), 0, kBands - 1) : 0;
+    const int band = width > 0 ? std::clamp(static_cast<int>(std::floor((values[i] - lo) / width)), 0, count - 1) : 0;
     g.bands[static_cast<std::size_t>(band)].push_back(triangle_of(mesh, zones[i]));
   }
-  for (int b = kBands - 1; b >= 0; --b)  // the legend reads from the highest down
-    g.band_labels.push_back(width > 0 ? fmt::format("{}: {} to {}", quantity,
-                                                    with_unit(lo + b * width, unit),
-                                                    with_unit(lo + (b + 1) * width, unit))
-                                      : fmt::format("{}: {}", quantity, with_unit(lo, unit)));
+  for (int b = count - 1; b >= 0; --b) {  // the legend reads from the highest down
+    const double from = lo + b * width, to = lo + (b + 1) * width;
+    if (!(width > 0)) g.band_labels.push_back(fmt::format("{}: {} {}", quantity, show(lo), name));
+    else if (b == count - 1 && above) g.band_labels.push_back(fmt::format("{}: {} {} and above", quantity, show(from), name));
+    else if (b == 0 && below) g.band_labels.push_back(fmt::format("{}: below {} {}", quantity, show(to), name));
+    else g.band_labels.push_back(fmt::format("{}: {} to {} {}", quantity, show(from), show(to), name));
+  }
 }
 
 // Principal stress ticks through each zone's centroid, of length in proportion to magnitude: the
@@ -489,9 +509,9 @@ void gather_bolts(const Model& model, Gathered& g) {
   }
 }
 
-Gathered gather(Model& model, const Layers& layers, const std::string& colour) {
+Gathered gather(Model& model, const Layers& layers, const PlotDef& def) {
   Gathered g;
-  g.title = model.title();
+  g.title = def.title.empty() ? model.title() : def.title;
   const BlockSet& set = model.blocks();
   const auto box = extent_of(set);
   if (!box) fail("nothing to plot: the model has no blocks (add a block{{}} first)");
@@ -501,7 +521,7 @@ Gathered gather(Model& model, const Layers& layers, const std::string& colour) {
   if (layers.zones) {
     const Mesh& mesh = model.mesh();
     g.zones = mesh.zone_gp.size();
-    g.zone_lines = zone_edges(mesh);
+    g.zone_lines = zone_edges(model);
   }
   // Edges the joints or cracks layer restyles are left out of the neutral block outlines,
   // so that dashes are not filled in underneath.
@@ -518,7 +538,7 @@ Gathered gather(Model& model, const Layers& layers, const std::string& colour) {
   if (joints || cracks) g.edges = collect_edges(set, styled);
   if (cracks) g.new_cracks = new_cracks_of(model);
   if (layers.plastic || layers.prepass) gather_yielded(model, layers.prepass, g);
-  if (!colour.empty()) gather_bands(model, colour, g);
+  if (!def.colour.empty()) gather_bands(model, def.colour, def.range, def.bands, g);
   if (layers.stress) gather_stress(model, g);
   if (layers.bolts) gather_bolts(model, g);
   return g;
@@ -542,8 +562,9 @@ std::vector<LegendEntry> legend_of(const Gathered& g) {
   for (const EdgeClass& cls : classes) entries.push_back({label_of(cls), pen_of(cls)});
   for (const CrackBatch& batch : g.new_cracks)
     entries.push_back({label_of(batch.mode, batch.lines.starts.size()), crack_pen(batch.mode)});
-  for (std::size_t i = 0; i < g.band_labels.size(); ++i)
-    entries.push_back({g.band_labels[i], swatch_pen(kBandColours[g.band_labels.size() - 1 - i])});
+  const int bands = static_cast<int>(g.band_labels.size());
+  for (int i = 0; i < bands; ++i)
+    entries.push_back({g.band_labels[static_cast<std::size_t>(i)], swatch_pen(band_colour(bands - 1 - i, bands))});
   if (!g.compression_ticks.empty())
     entries.push_back(
         {"principal stress, compression (largest " + with_unit(g.max_compression, "Pa") + ")",
@@ -599,8 +620,11 @@ Scene scene_of(Gathered g) {
   scene.legend = legend_of(g);
   scene.note = counts_of(g);
   add_regions(g.regions, scene);
-  for (std::size_t b = 0; b < g.bands.size(); ++b)
-    scene.fills.push_back({std::move(g.bands[b]), kBandColours[b], 1.0, fill_pen(kBandColours[b])});
+  const int bands = static_cast<int>(g.bands.size());
+  for (int b = 0; b < bands; ++b) {
+    const Rgb colour = band_colour(b, bands);
+    scene.fills.push_back({std::move(g.bands[static_cast<std::size_t>(b)]), colour, 1.0, fill_pen(colour)});
+  }
   for (std::size_t i = 0; i < g.yielded.size(); ++i)
     scene.fills.push_back(
         {std::move(g.yielded[i]), kYieldColours[i], 1.0, fill_pen(kYieldColours[i])});
@@ -623,15 +647,23 @@ Scene scene_of(Gathered g) {
 
 void plot(Model& model, const PlotDef& def) {
   picture_format(def.file);  // checked before anything is computed
-  const Layers layers = layers_of(def.show);
   check_size(def.width, def.height);
   check_window(def.window);
   check_writable(def.file);
+  plot_scene(gather_scene(model, def), def.file, def.width, def.height);
+}
+
+Scene gather_scene(Model& model, const PlotDef& def) {
+  const Layers layers = layers_of(def.show);
   check_colour(def.colour);
-  Scene scene = scene_of(gather(model, layers, def.colour));
+  if (def.range && !((*def.range)[0] < (*def.range)[1] && std::isfinite((*def.range)[0]) && std::isfinite((*def.range)[1])))
+    fail("range must be {{lo, hi}} with lo < hi, got {{{}, {}}}", (*def.range)[0], (*def.range)[1]);
+  if (def.bands < 2 || def.bands > 16) fail("bands must be 2 to 16, got {}", def.bands);
+  if ((def.range || def.bands != 8) && def.colour.empty()) fail("range and bands are for colour = ...: give a colour");
+  Scene scene = scene_of(gather(model, layers, def));
   if (def.window)
     scene.box = Box{(*def.window)[0], (*def.window)[1], (*def.window)[2], (*def.window)[3]};
-  plot_scene(scene, def.file, def.width, def.height);
+  return scene;
 }
 
 }  // namespace edem

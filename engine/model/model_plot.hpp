@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "io/cairo_file.hpp"  // kPlotMinSize, kPlotMaxSize
+#include "io/plot.hpp"
 
 namespace edem {
 
@@ -24,9 +25,14 @@ struct PlotDef {
   int height = 900;  // [px]
   // {x0, x1, y0, y1} [m]: draw only this part of the model, fitted to the canvas; none: all of it
   std::optional<std::array<double, 4>> window;
-  // Zones in place filled by this quantity in 8 equal bands, with the bands in the legend (as
-  // UDEC's contour plots): any of plot_colours(); "": none.
+  // Zones in place filled by this quantity in `bands` equal bands, with the bands in the legend
+  // (as UDEC's contour plots): any of plot_colours(); "": none.
   std::string colour;
+  // The bands' range [Pa or m]: fixed, so that two pictures compare; values beyond it take the end
+  // bands. None: from the least to the largest value in place.
+  std::optional<std::array<double, 2>> range;
+  int bands = 8;       // 2 to 16
+  std::string title;   // "": the model's title
 };
 
 // The layer names `show` accepts, in drawing order:
@@ -51,8 +57,11 @@ const std::vector<std::string>& plot_layers();
 const std::vector<std::string>& plot_colours();
 
 // Draws the model. Throws edem::Error, leaving no file, for an unknown layer or extension,
-// a size out of range, a window that is not x0 < x1, y0 < y1 (finite), a model without blocks,
-// or a file that cannot be written.
+// a size out of range, a window that is not x0 < x1, y0 < y1 (finite), a range that is not
+// lo < hi, bands out of 2 to 16, a model without blocks, or a file that cannot be written.
 void plot(Model& model, const PlotDef& def);
+
+// What plot() draws, before it is drawn: its title, fills, lines and legend (def.file unused).
+Scene gather_scene(Model& model, const PlotDef& def);
 
 }  // namespace edem

@@ -144,7 +144,10 @@ void excavate_zones(Mechanics& m, const Mesh& mesh, const std::vector<int>& zone
     prepare(m, mesh);  // the zone geometry and the active list of now
     hold_release(m, zones, release);
   }
-  if (new_stage) m.stage += 1;
+  if (new_stage) {
+    m.stage += 1;
+    m.stage_cycles.push_back(m.info.cycle);
+  }
   for (const int z : zones) {
     m.zone_excavated[static_cast<size_t>(z)] = std::max(m.stage, 1);
     m.stress[static_cast<size_t>(z)] = Stress{};

@@ -204,6 +204,7 @@ struct Mechanics {
   bool judge_criterion_missing = false;
   int stage = 0;                          // excavation stage (0: before any)
   std::vector<int> zone_excavated;        // per mesh zone: the stage that excavated it (0: none)
+  std::vector<long> stage_cycles;         // per stage, the cycle it was excavated at
   ReleaseLoad release;
   // ---- bolts (state/bolts.hpp, bolt/bolt_coupling.cpp)
   std::vector<BoltMaterialDef> bolt_materials;  // same order as bolts.laws

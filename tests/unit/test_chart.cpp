@@ -67,6 +67,45 @@ TEST_F(ChartTest, WritesPngOfTheRequestedSizeShowingEverySeries) {
   EXPECT_TRUE(picture.has(0xff7f0e)) << "the second series is not drawn";
 }
 
+// A history's stages are marked with dashed lines where they were dug (those within the x range);
+// a dense series is a line alone, without a marker at every sample.
+TEST_F(ChartTest, MarksAreDrawnAndDenseSeriesHaveNoMarkers) {
+  ChartDef def;
+  def.series = {{"roof", {}, {}}};
+  for (int i = 0; i <= 200; ++i) {
+    def.series[0].x.push_back(10.0 * i);
+    def.series[0].y.push_back(-1e-3 * std::sqrt(i));
+  }
+  def.file = file("plain.png");
+  chart(def);
+  def.file = file("marked.png");
+  def.marks = {{500.0, "stage 1"}, {1200.0, "stage 2"}, {5000.0, "beyond the axis"}};
+  chart(def);
+  const Picture plain = read_png(file("plain.png")), marked = read_png(file("marked.png"));
+  ASSERT_EQ(plain.pixels.size(), marked.pixels.size());
+  EXPECT_GT(marked.inked(), plain.inked() + 0.001) << "the marks are not drawn";
+  // A marker is a disc 10 px across of the series' colour: a line 1.8 px wide holds no 5 x 5 square
+  // of it.
+  const auto squares = [](const Picture& p, std::uint32_t colour) {
+    int count = 0;
+    for (int y = 0; y + 5 <= p.height; ++y)
+      for (int x = 0; x + 5 <= p.width; ++x) {
+        bool full = true;
+        for (int dy = 0; dy < 5 && full; ++dy)
+          for (int dx = 0; dx < 5 && full; ++dx)
+            full = p.pixels[static_cast<size_t>((y + dy) * p.width + x + dx)] == colour;
+        count += full;
+      }
+    return count;
+  };
+  EXPECT_EQ(squares(plain, 0x1f77b4), 0) << "markers on a 201-point series";
+  def.series[0].x.resize(20);
+  def.series[0].y.resize(20);
+  def.file = file("sparse.png");
+  chart(def);
+  EXPECT_GT(squares(read_png(def.file), 0x1f77b4), 0) << "no markers on a 20-point series";
+}
+
 TEST_F(ChartTest, WritesSvg) {
   const ChartDef def = speed_chart(file("speed.svg"));
   chart(def);

@@ -1,0 +1,126 @@
+// plot{ colour = }: bands over a fixed range so that two pictures compare, any number of them, the
+// legend in one unit, a title of the script's; excavated zones are not drawn.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "core/error.hpp"
+#include "interp_test.hpp"
+#include "model/model_plot.hpp"
+
+namespace edem {
+namespace {
+
+using test::contains;
+
+// Two stacked blocks; the region "cut" (x 1 to 3, y 0 to 1) excavated and the rest settled.
+void dig(Interpreter& interpreter) {
+  interpreter.context().quiet = true;
+  test::expect_runs(interpreter, R"(
+    model{ title = "stack" }
+    block{ x = {0, 4}, y = {0, 2} }
+    block{ x = {0, 4}, y = {2, 4} }
+    region{ name = "cut", polygon = {{1, 0}, {3, 0}, {3, 1}, {1, 1}} }
+    zone{ edge = 0.25 }
+    material{ "rock", density = 2500, young = 1e8, poisson = 0.25 }
+    assign{ material = "rock" }
+    joint_material{ "joint", kn = 1e10, ks = 1e10, friction = 30 }
+    jassign{ material = "joint" }
+    gravity{ 0, -9.81 }
+    boundary{ side = "bottom", fix = "xy" }
+    solve{ ratio = 1e-6 }
+    excavate{ "cut" }
+    solve{ ratio = 1e-6 }
+  )");
+}
+
+std::vector<std::string> band_labels(const Scene& scene) {
+  std::vector<std::string> labels;
+  for (const LegendEntry& e : scene.legend)
+    if (e.label.rfind("u: ", 0) == 0) labels.push_back(e.label);
+  return labels;
+}
+
+TEST(PlotBands, AFixedRangeInBandsOfOneUnit) {
+  Interpreter interpreter;
+  dig(interpreter);
+  Model& model = interpreter.context().model();
+  PlotDef def;
+  def.show = {"blocks"};
+  def.colour = std::string("u");
+  def.range = std::array<double, 2>{0.0, 0.004};
+  def.bands = 10;
+  def.title = std::string("u, fixed range");
+  const Scene scene = gather_scene(model, def);
+  EXPECT_EQ(scene.title, "u, fixed range");
+  const auto labels = band_labels(scene);
+  ASSERT_EQ(labels.size(), 10u);
+  EXPECT_EQ(labels.front(), "u: 3.6 to 4 mm");  // the legend reads from the highest down
+  EXPECT_EQ(labels.back(), "u: 0 to 0.4 mm");
+  // A range the values pass: the end band says so.
+  def.range = std::array<double, 2>{0.0, 0.001};
+  def.bands = 4;
+  const auto narrow = band_labels(gather_scene(model, def));
+  ASSERT_EQ(narrow.size(), 4u);
+  EXPECT_EQ(narrow.front(), "u: 0.75 mm and above");
+  // From the values' own range, every bound in the unit of the largest: no "8.52 mm to 0.0106 m".
+  def.range.reset();
+  def.bands = 8;
+  for (const std::string& label : band_labels(gather_scene(model, def)))
+    EXPECT_TRUE(label.ends_with(" mm")) << label;
+}
+
+TEST(PlotBands, BadRangeOrBandsAreRefused) {
+  Interpreter interpreter;
+  dig(interpreter);
+  Model& model = interpreter.context().model();
+  PlotDef def;
+  def.colour = std::string("u");
+  def.range = std::array<double, 2>{0.004, 0.0};
+  EXPECT_THROW(gather_scene(model, def), Error);
+  EXPECT_TRUE(contains(test::error_of(interpreter, "plot{ file = 'x.png', colour = 'u', range = {1, 0} }"),
+                       "range must be {lo, hi} with lo < hi, got {1, 0}"));
+  EXPECT_TRUE(contains(test::error_of(interpreter, "plot{ file = 'x.png', colour = 'u', bands = 1 }"), "bands"));
+  EXPECT_TRUE(contains(test::error_of(interpreter, "plot{ file = 'x.png', range = {0, 1} }"),
+                       "range and bands are for colour = ...: give a colour"));
+}
+
+TEST(PlotBands, ExcavatedZonesAreNotDrawn) {
+  Interpreter interpreter;
+  dig(interpreter);
+  PlotDef def;
+  def.show = {"zones"};
+  const Scene scene = gather_scene(interpreter.context().model(), def);
+  int inside = 0, segments = 0;
+  for (const Scene::Lines& l : scene.lines)
+    for (size_t s = 0; s < l.lines.starts.size(); ++s) {
+      const Vec2 a = l.lines.points[l.lines.starts[s]], b = l.lines.points[l.lines.starts[s] + 1];
+      const Vec2 mid = 0.5 * (a + b);
+      ++segments;
+      inside += mid.x > 1.01 && mid.x < 2.99 && mid.y > 0.01 && mid.y < 0.99;
+    }
+  EXPECT_GT(segments, 100);
+  EXPECT_EQ(inside, 0) << "zone edges inside the excavated cut";
+}
+
+// Each excavation stage keeps the cycle it was dug at (a history chart marks them), in checkpoints too.
+TEST(PlotBands, StagesKeepTheCycleTheyWereDugAt) {
+  Interpreter interpreter;
+  dig(interpreter);
+  test::expect_runs(interpreter, R"(
+    fill{ "cut", material = "rock" }
+    solve{ ratio = 1e-6 }
+    excavate{ "cut" }
+    save("stages.h5")
+    restore("stages.h5")
+  )");
+  const std::vector<long>& cycles = interpreter.context().model().stage_cycles();
+  ASSERT_EQ(cycles.size(), 2u);
+  EXPECT_GT(cycles[0], 0);
+  EXPECT_GT(cycles[1], cycles[0]);
+  std::filesystem::remove("stages.h5");
+}
+
+}  // namespace
+}  // namespace edem
