@@ -89,8 +89,9 @@ const Command& save_command() {
           "HDF5 checkpoint that restore() continues from bit for bit. The file also keeps the script's text and "
           "EDEM's version; it is written under a temporary name and renamed, so a run killed while saving "
           "leaves the previous file intact. Lua functions are not saved: after restore() the script registers "
-          "its every() callbacks again and gives fn histories and a judge criterion again. Not from inside a "
-          "callback while cycling. `edem info FILE` summarises a checkpoint.",
+          "its every() callbacks again and gives fn histories and a judge criterion again. From an every() "
+          "callback it saves the state at that cycle (periodic checkpoints of one long cycle()). `edem info "
+          "FILE` summarises a checkpoint.",
       .form = Form::call,
       .positional =
           {

@@ -177,8 +177,10 @@ class Model {
   // ---- Checkpoints (model/checkpoint.cpp, io/checkpoint_file.hpp): the whole model in one HDF5
   // file, so that a restored model cycles on bit for bit as the saved one would have. Lua
   // functions are not saved: after restore the script registers its callbacks again, and gives
-  // fn histories and a judge criterion again (cycling refuses to start until it has). Saving is
-  // refused while cycling (from a callback). A restored model's geometry is fixed.
+  // fn histories and a judge criterion again (cycling refuses to start until it has). A save from
+  // a callback while cycling holds the state at the end of that cycle (the energy balance's
+  // stored energy is taken before callbacks run), so periodic checkpoints of one cycle() go on bit
+  // for bit. A restored model's geometry is fixed.
   void save(const std::string& path, const CheckpointNote& note) const;
   static Model restore(const std::string& path, CheckpointNote* note = nullptr);
 
