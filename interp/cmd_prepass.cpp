@@ -142,7 +142,13 @@ int run_prepass(lua_State* L, Context& context, const Args& args) {
   def.joints = args.boolean("joints");
   def.duration = args.number("duration");
   def.newton.keep_on_failure = args.string("on_failure") == "keep";
-  const PrepassResult r = context.model().prepass(def);
+  const PrepassResult r = [&] {
+    struct Closer {  // the progress line ends with the prepass, however it ends
+      Context& context;
+      ~Closer() { context.close_progress_line(); }
+    } closer{context};
+    return context.model().prepass(def);
+  }();
   if (!context.quiet) {
     int iterations = 0;
     for (const PrepassStage& s : r.stages) iterations += s.log.iterations;

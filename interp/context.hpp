@@ -60,6 +60,7 @@ struct Context {
   // The progress line of long runs (every model gets it; none with --quiet), and whether a
   // terminal line is showing that the next output must clear first.
   std::function<void(const RunProgress&)> progress;
+  std::function<void(const PrepassProgress&)> prepass_progress;
   double progress_every = 0.0;  // [s]
   bool progress_line_open = false;
   // Raised (to the signal's number) by SIGINT or SIGTERM: cycling stops at the end of its cycle
@@ -83,6 +84,7 @@ struct Context {
   void replace_model(std::unique_ptr<Model> next) {
     next->set_threads(threads);
     next->set_progress(progress, progress_every);
+    next->set_prepass_progress(prepass_progress);
     next->set_stop(stop);
     current = std::move(next);
     histories_written = false;

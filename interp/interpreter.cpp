@@ -61,7 +61,18 @@ int write_histories_at_end(lua_State* L) {
   });
 }
 
-// The progress line: on a terminal one line rewritten in place, otherwise plain lines.
+// A progress line: on a terminal one line rewritten in place, otherwise a plain line.
+void show_progress(Context& context, bool terminal, const std::string& line) {
+  if (terminal) {
+    fmt::print("\r{}\033[K", line);
+    context.progress_line_open = true;
+  } else {
+    fmt::print("{}\n", line);
+  }
+  std::fflush(stdout);
+}
+
+// The progress lines of cycling and of the prepass.
 void start_progress(Context& context, const InterpreterOptions& options) {
   if (options.quiet || options.progress_seconds == 0.0) return;
   const bool terminal = ::isatty(::fileno(stdout)) != 0;
@@ -69,15 +80,11 @@ void start_progress(Context& context, const InterpreterOptions& options) {
   context.progress = [&context, terminal, last = RunProgress{}](const RunProgress& p) mutable {
     if (context.quiet) return;  // quiet set after the start (tests, embedding) silences it too
     if (p.run_cycles < last.run_cycles || last.seconds > p.seconds) last = RunProgress{};  // a new run
-    const std::string line = progress_line(last, p);
+    show_progress(context, terminal, progress_line(last, p));
     last = p;
-    if (terminal) {
-      fmt::print("\r{}\033[K", line);
-      context.progress_line_open = true;
-    } else {
-      fmt::print("{}\n", line);
-    }
-    std::fflush(stdout);
+  };
+  context.prepass_progress = [&context, terminal](const PrepassProgress& p) {
+    if (!context.quiet) show_progress(context, terminal, prepass_progress_line(p));
   };
 }
 

@@ -51,4 +51,10 @@ std::string progress_line(const RunProgress& last, const RunProgress& now) {
                      clock_time(now.seconds), time_left(last, now, rate), ratio_jump(last, now));
 }
 
+std::string prepass_progress_line(const PrepassProgress& p) {
+  const std::string stage = p.index == 0 ? "the present state" : fmt::format("stage {} of {} ({})", p.index, p.count, p.stage);
+  return fmt::format("prepass: {}, load factor {:.3g}, {} Newton iterations, {} run", stage, p.load, p.iterations,
+                     clock_time(p.seconds));
+}
+
 }  // namespace edem

@@ -13,6 +13,9 @@ namespace edem {
 // previous report (all zero for its first).
 std::string progress_line(const RunProgress& last, const RunProgress& now);
 
+// "prepass: stage 3 of 17 (warhead_arch_right), load factor 0.62, 240 Newton iterations, 12 s run".
+std::string prepass_progress_line(const PrepassProgress& p);
+
 // Seconds as "42 s", "3 min 05 s" or "2 h 07 min".
 std::string clock_time(double seconds);
 

@@ -248,6 +248,15 @@ struct RunProgress {
   long releasing = 0;     // cycles an excavation's release still has to go
 };
 
+// Where a long prepass{} stands, for a progress line (Model::set_prepass_progress).
+struct PrepassProgress {
+  std::string stage;       // "present state", or the stage's region
+  int index = 0, count = 0;  // the stage's place (0: the present state) and the stages to solve
+  double load = 0.0;       // load factor of the stage reached so far
+  int iterations = 0;      // Newton iterations of the whole prepass so far
+  double seconds = 0.0;    // wall clock since the prepass started
+};
+
 // Zone state flags (bits): failing now and failed in the past, in shear and in tension.
 enum ZoneState : std::uint8_t {
   kShearNow = 1,

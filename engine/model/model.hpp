@@ -83,6 +83,9 @@ class Model {
   // `report` is called during cycle() and solve{} each time `every_seconds` of wall clock have
   // passed (never for a shorter run); a null function or 0 seconds: no reports.
   void set_progress(std::function<void(const RunProgress&)> report, double every_seconds);
+  // `report` is called during prepass{} after a load step each time the progress interval has
+  // passed (set_progress's); null: no reports.
+  void set_prepass_progress(std::function<void(const PrepassProgress&)> report);
   // Cycling ends at the end of the cycle running when `*flag` turns non-zero (a signal's number:
   // Ctrl-C), with SolveResult::interrupted; null: never. The flag must outlive the model.
   void set_stop(const std::atomic<int>* flag);

@@ -240,6 +240,10 @@ void Model::set_progress(std::function<void(const RunProgress&)> report, double 
 
 void Model::set_stop(const std::atomic<int>* flag) { mechanics_->stop = flag; }
 
+void Model::set_prepass_progress(std::function<void(const PrepassProgress&)> report) {
+  mechanics_->prepass_progress = std::move(report);
+}
+
 void Model::set_threads(int threads) {
   if (threads < 0) fail("threads must be >= 1, got {}", threads);
   mechanics_->threads = threads;

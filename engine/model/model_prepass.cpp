@@ -92,6 +92,9 @@ PrepassResult Model::prepass(const PrepassDef& def) {
   std::vector<Stress> stress = m.stress;
   std::vector<double> u = m.u;
   std::vector<int> zones = result.zones;
+  const auto started = std::chrono::steady_clock::now();
+  auto reported = started;
+  int iterations = 0;
   for (size_t stage = 0; stage <= stage_zones.size(); ++stage) {
     const std::string name = stage == 0 ? "present state" : stage_names[stage - 1];
     if (stage > 0) {
@@ -110,7 +113,23 @@ PrepassResult Model::prepass(const PrepassDef& def) {
         if ((m.fix[i / 2] & (1u << (i % 2))) && m.v[i] != 0.0) p.drive[i] = m.v[i] * def.duration;
     }
     std::vector<std::uint8_t> yielded;
-    StageLog log = solve_stage(m, p, def.newton, stage == 0 ? name : fmt::format("stage {} ({})", stage, name), yielded);
+    // Progress: the stage, its load factor and the iterations so far, every progress interval.
+    const int before = iterations;
+    const StepDone step_done = [&](double reached, int stage_iterations) {
+      if (!m.prepass_progress || !(m.progress_every > 0.0)) return;
+      const auto now = std::chrono::steady_clock::now();
+      if (std::chrono::duration<double>(now - reported).count() < m.progress_every) return;
+      reported = now;
+      m.prepass_progress({.stage = name,
+                          .index = static_cast<int>(stage),
+                          .count = static_cast<int>(stage_zones.size()),
+                          .load = reached,
+                          .iterations = before + stage_iterations,
+                          .seconds = std::chrono::duration<double>(now - started).count()});
+    };
+    StageLog log = solve_stage(m, p, def.newton, stage == 0 ? name : fmt::format("stage {} ({})", stage, name), yielded,
+                               step_done);
+    iterations += log.iterations;
     for (auto& s : result.state) s.push_back(kExcavatedInPrepass);
     for (size_t k = 0; k < p.zones.size(); ++k) {
       stress[static_cast<size_t>(p.zones[k])] = p.stress0[k];

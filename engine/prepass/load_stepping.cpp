@@ -126,9 +126,12 @@ double infinity_norm(const std::vector<double>& v) {
   return largest;
 }
 
-// The force scale: the larger of what is released and what is applied (a model with neither is
-// balanced already, and any positive scale will do), and, with prescribed displacements, the
-// forces the whole of them gives on the free nodes.
+// The force scale: the larger of what is released and what is applied, and, with prescribed
+// displacements, the forces the whole of them gives on the free nodes. A model with none of these
+// is balanced already; its released force is round-off of the zones' forces, which no Newton step
+// can reduce a further 1e-8: the scale is at least a millionth of the largest zone force (stress
+// times the zone's size), still far below any real load (a jointed square under a uniform 5 MPa
+// with no gravity: a scale of 3.7e-9 N/m, and the present state "failed" after 1,054 iterations).
 double force_scale(const Mechanics& m, ImplicitProblem& p, System& s) {
   std::vector<double> applied(s.r0.size()), out(s.r0.size());
   sum_to_unknowns(p, p.applied, applied.data());
@@ -140,7 +143,13 @@ double force_scale(const Mechanics& m, ImplicitProblem& p, System& s) {
     sum_to_unknowns(p, s.force, out.data());
     for (size_t j = 0; j < out.size(); ++j) driven = std::max(driven, std::abs(out[j] - s.r0[j]));
   }
-  return std::max({infinity_norm(s.r0), infinity_norm(applied), driven, 1e-300});
+  double internal = 0.0;
+  for (size_t k = 0; k < p.zones.size(); ++k) {
+    const Stress& t = p.stress0[k];
+    const double largest = std::max({std::abs(t.xx), std::abs(t.yy), std::abs(t.xy)});
+    internal = std::max(internal, largest * std::sqrt(m.geometry[static_cast<size_t>(p.zones[k])].area));
+  }
+  return std::max({infinity_norm(s.r0), infinity_norm(applied), driven, 1e-6 * internal, 1e-300});
 }
 
 // KINSOL set up for n unknowns: exact Newton (a fresh tangent every iteration), converged on the
@@ -208,7 +217,8 @@ int newton(Kinsol& k, System& s, ImplicitProblem& p, double to, StageLog& log) {
 // One attempt at the stage in `steps` load steps, from p's start; on failure log.failure says why
 // and p stays at the last converged step.
 StageLog solve_in_steps(const Mechanics& m, ImplicitProblem& p, const NewtonSettings& settings,
-                        int steps, const std::string& stage, std::vector<std::uint8_t>& yielded) {
+                        int steps, const std::string& stage, std::vector<std::uint8_t>& yielded,
+                        const StepDone& step_done, int iterations_before) {
   StageLog log;
   const sunindextype n = p.unknowns;
   yielded.assign(p.zones.size(), 0);
@@ -241,6 +251,7 @@ StageLog solve_in_steps(const Mechanics& m, ImplicitProblem& p, const NewtonSett
     log.steps.push_back({done, to, false, {}});
     s.log = &log.steps.back();
     const int flag = newton(k, s, p, to, log);
+    if (step_done) step_done(done, iterations_before + log.iterations);
     // Check the answer on its own terms: KINSOL's step-size stops are not convergence.
     evaluate(m, p, s.u, s.force);
     sum_to_unknowns(p, s.force, out.data());
@@ -288,16 +299,16 @@ StageLog solve_in_steps(const Mechanics& m, ImplicitProblem& p, const NewtonSett
 // factor 0.625; in 4 or 10, complete). A stage that every path fails may be near collapse, or
 // may be Newton's failure alone: the message cannot tell which.
 StageLog solve_stage(const Mechanics& m, ImplicitProblem& p, const NewtonSettings& settings,
-                     const std::string& stage, std::vector<std::uint8_t>& yielded) {
+                     const std::string& stage, std::vector<std::uint8_t>& yielded, const StepDone& step_done) {
   const auto start = std::chrono::steady_clock::now();
   const ImplicitProblem at_start = p;
   int steps = settings.steps;
-  StageLog log = solve_in_steps(m, p, settings, steps, stage, yielded);
+  StageLog log = solve_in_steps(m, p, settings, steps, stage, yielded, step_done, 0);
   for (int restart = 1; restart <= settings.restarts && !log.failure.empty(); ++restart) {
     if (steps > std::numeric_limits<int>::max() / 2) break;  // no finer path to count
     p = at_start;
     steps *= 2;
-    StageLog again = solve_in_steps(m, p, settings, steps, stage, yielded);
+    StageLog again = solve_in_steps(m, p, settings, steps, stage, yielded, step_done, log.iterations);
     again.iterations += log.iterations;
     again.cutbacks += log.cutbacks;
     again.steps.insert(again.steps.begin(), log.steps.begin(), log.steps.end());

@@ -2,6 +2,8 @@
 // out-of-balance force at the start applied in load steps, cut back when Newton fails.
 #pragma once
 
+#include <functional>
+
 #include <string>
 #include <vector>
 
@@ -16,7 +18,10 @@ namespace edem {
 // converged step or'ed in. A stage whose step fails after the cut-backs is solved again from its
 // start in twice as many steps, settings.restarts times; throws edem::Error naming `stage` when the
 // last attempt fails too (settings.keep_on_failure: returns with log.failure set instead).
+// `step_done`, if given, hears of every load step tried: the load factor reached and the stage's
+// Newton iterations so far (progress reports).
+using StepDone = std::function<void(double reached, int iterations)>;
 StageLog solve_stage(const Mechanics& m, ImplicitProblem& p, const NewtonSettings& settings, const std::string& stage,
-                     std::vector<std::uint8_t>& yielded);
+                     std::vector<std::uint8_t>& yielded, const StepDone& step_done = {});
 
 }  // namespace edem

@@ -248,6 +248,7 @@ struct Mechanics {
   int next_handle = 1;
   std::function<void(const RunProgress&)> progress;  // reports a long run (Model::set_progress)
   const std::atomic<int>* stop = nullptr;            // cycling ends when it is non-zero (Model::set_stop)
+  std::function<void(const PrepassProgress&)> prepass_progress;  // every progress_every [s] of a prepass
   double progress_every = 0.0;                       // [s] between reports; 0: none
   std::vector<History> histories;
   EnergyLedger energy;  // the energy balance (state/energy_ledger.hpp)

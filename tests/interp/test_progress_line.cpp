@@ -1,13 +1,16 @@
 // The progress line: elapsed time, an estimate of the time left, and why the ratio jumped.
 #include <gtest/gtest.h>
 
+#include "cli_test.hpp"
 #include "interp_test.hpp"
 #include "progress_line.hpp"
 
 namespace edem {
 namespace {
 
+using test::Cli;
 using test::contains;
+using test::Outcome;
 
 TEST(ProgressLine, SaysHowLongTheRunHasRunAndHasLeft) {
   EXPECT_EQ(clock_time(42.4), "42 s");
@@ -42,6 +45,38 @@ TEST(ProgressLine, SaysWhatChangedWhenTheRatioJumps) {
   EXPECT_TRUE(contains(progress_line(before, after), "no crack, slip or opening: the model is moving"));
   after.ratio = 5e-7;  // fivefold: not a jump
   EXPECT_FALSE(contains(progress_line(before, after), "ratio up"));
+}
+
+TEST(ProgressLine, PrepassSaysItsStageLoadFactorAndIterations) {
+  EXPECT_EQ(prepass_progress_line({.stage = "heading", .index = 2, .count = 17, .load = 0.6234, .iterations = 240,
+                                   .seconds = 12.2}),
+            "prepass: stage 2 of 17 (heading), load factor 0.623, 240 Newton iterations, 12 s run");
+  EXPECT_EQ(prepass_progress_line({.stage = "present state", .index = 0, .count = 2, .load = 0.5, .iterations = 3}),
+            "prepass: the present state, load factor 0.5, 3 Newton iterations, 0 s run");
+}
+
+// A prepass{} that runs longer than the progress interval reports as cycling does.
+TEST_F(Cli, APrepassReportsItsProgress) {
+  write("pre.lua", R"(block{ x = {-20, 20}, y = {-20, 20} }
+jset{ angle = 60, spacing = 6, origin = {1, 0} }
+region{ name = "hole", polygon = {{-3, -3}, {3, -3}, {3, 3}, {-3, 3}} }
+zone{ edge = 0.5, far = 3, near = { "hole" } }
+material{ "rock", model = "mohr", density = 2600, young = 5e9, poisson = 0.25, cohesion = 0.5e6, friction = 35,
+          tension = 0.2e6 }
+assign{ material = "rock" }
+joint_material{ "joint", kn = 5e9, ks = 1e9, friction = 30 }
+jassign{ material = "joint" }
+insitu{ sxx = -4e6, syy = -5e6 }
+boundary{ side = "left", fix = "x" }
+boundary{ side = "right", fix = "x" }
+boundary{ side = "bottom", fix = "y" }
+boundary{ side = "top", fix = "y" }
+prepass{ stages = { "hole" } }
+)");
+  const Outcome r = edem("--threads 1 --progress 0.001 run pre.lua");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(contains(r.out, "prepass: stage 1 of 1 (hole), load factor ")) << r.out;
+  EXPECT_TRUE(contains(r.out, " Newton iterations, ")) << r.out;
 }
 
 }  // namespace
