@@ -11,6 +11,11 @@
 namespace edem {
 namespace {
 
+const std::vector<std::string>& plot_vectors() {
+  static const std::vector<std::string> names{"displacement"};
+  return names;
+}
+
 int run_plot(lua_State*, Context& context, const Args& args) {
   PlotDef def;
   def.file = context.output_path(args.string("file"));
@@ -30,6 +35,7 @@ int run_plot(lua_State*, Context& context, const Args& args) {
   }
   def.bands = static_cast<int>(args.integer("bands"));
   if (args.has("title")) def.title = args.string("title");
+  if (args.has("vectors")) def.vectors = args.string("vectors");
   plot(context.model(), def);
   return 0;
 }
@@ -73,6 +79,10 @@ const Command& plot_command() {
                "from the least to the largest value in place"},
               {"bands", Type::integer, "", between(2, 16), "8", "the number of colour bands"},
               {"title", Type::string, "", any_value, kOptional, "the picture's title", "the model's title"},
+              {"vectors", Type::string, "", any_value, kOptional,
+               "\"displacement\": arrows of the zones' displacement (their corners' mean) on a grid of about 30 "
+               "cells across the model, the largest a cell long and named in the legend",
+               "none", plot_vectors},
               {"size", Type::int_pair, "px", between(kPlotMinSize, kPlotMaxSize), "{1200, 900}",
                "width and height (points for SVG and PDF)"},
               {"window", Type::numbers, "m", any_value, kOptional,

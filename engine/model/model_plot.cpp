@@ -306,6 +306,7 @@ Pen swatch_pen(Rgb colour) {
 const Pen kCompressionTick{rgb(0x202020), 0.9, {}, false};
 const Pen kTensionTick{rgb(0xd62728), 0.9, {}, false};
 const Pen kBoltTension{rgb(0xb2182b), 2.2, {}};
+const Pen kVectorPen{rgb(0x202020), 1.1, {}};
 const Pen kBoltCompression{rgb(0x2166ac), 2.2, {}};
 const Pen kBoltOut{rgb(0x9a9a9a), 1.6, {3.0, 2.0}};
 const Pen kBlockPen{rgb(0x404040), 0.8, {}, false};
@@ -366,6 +367,9 @@ struct Gathered {
   // bolts layer: segments in tension, compression, out of service; largest force of each [N/m]
   Polylines bolts_tension, bolts_compression, bolts_out;
   double max_bolt_tension = 0.0, max_bolt_compression = 0.0;
+  // vectors: displacement arrows; the largest displacement [m]
+  Polylines arrows;
+  double max_displacement = 0.0;
 };
 
 // Zones in place: not excavated, with a material.
@@ -494,6 +498,40 @@ void gather_stress(const Model& model, Gathered& g) {
   }
 }
 
+// Displacement arrows on a grid of about 30 cells across the model: in each cell, the first zone
+// in place, from its centroid along its corners' mean displacement; the largest a cell long.
+void gather_vectors(const Model& model, Gathered& g) {
+  const Mesh& mesh = model.mesh();
+  const double cell = std::max(g.box.x1 - g.box.x0, g.box.y1 - g.box.y0) / 30.0;
+  std::map<std::pair<long, long>, std::pair<Vec2, Vec2>> picked;  // by cell: centroid, displacement
+  for (int z = 0; z < mesh.zone_count(); ++z) {
+    const ZoneView zone = model.zone_view(z);
+    if (!in_place(zone)) continue;
+    const std::pair<long, long> key{std::lround(std::floor((zone.centroid.x - g.box.x0) / cell)),
+                                    std::lround(std::floor((zone.centroid.y - g.box.y0) / cell))};
+    if (picked.count(key)) continue;
+    Vec2 u{0.0, 0.0};
+    for (int gp : mesh.zone_gp[static_cast<std::size_t>(z)]) u = u + (1.0 / 3.0) * model.gridpoint(gp).u;
+    picked[key] = {zone.centroid, u};
+    g.max_displacement = std::max(g.max_displacement, norm(u));
+  }
+  if (picked.empty() || !(g.max_displacement > 0.0)) return;
+  const double scale = cell / g.max_displacement;
+  for (const auto& [key, at_u] : picked) {
+    const auto& [at, u] = at_u;
+    const Vec2 d = scale * u;
+    const double length = norm(d);
+    if (!(length > 0.02 * cell)) continue;  // too short to see
+    const Vec2 tip = at + d, dir = (1.0 / length) * d, normal{-dir.y, dir.x};
+    const double head = 0.3 * length;  // the head's length, half as wide each side
+    g.arrows.begin(at);
+    g.arrows.add(tip);
+    g.arrows.begin(tip - head * dir + 0.5 * head * normal);
+    g.arrows.add(tip);
+    g.arrows.add(tip - head * dir - 0.5 * head * normal);
+  }
+}
+
 void gather_bolts(const Model& model, Gathered& g) {
   for (int b = 0; b < model.bolt_count(); ++b) {
     const BoltView bolt = model.bolt(b);
@@ -541,6 +579,7 @@ Gathered gather(Model& model, const Layers& layers, const PlotDef& def) {
   if (!def.colour.empty()) gather_bands(model, def.colour, def.range, def.bands, g);
   if (layers.stress) gather_stress(model, g);
   if (layers.bolts) gather_bolts(model, g);
+  if (def.vectors == "displacement") gather_vectors(model, g);
   return g;
 }
 
@@ -581,6 +620,8 @@ std::vector<LegendEntry> legend_of(const Gathered& g) {
         {fmt::format("bolt in compression (largest {:.3g} kN/m)", g.max_bolt_compression * 1e-3),
          kBoltCompression});
   if (!g.bolts_out.empty()) entries.push_back({"bolt broken or out of service", kBoltOut});
+  if (!g.arrows.empty())
+    entries.push_back({"displacement (largest " + with_unit(g.max_displacement, "m") + ")", kVectorPen});
   constexpr std::array<const char*, 3> kYieldNames{"shear", "tension", "shear and tension"};
   for (std::size_t i = 0; i < g.yielded.size(); ++i)
     if (!g.yielded[i].empty())
@@ -625,9 +666,11 @@ Scene scene_of(Gathered g) {
     const Rgb colour = band_colour(b, bands);
     scene.fills.push_back({std::move(g.bands[static_cast<std::size_t>(b)]), colour, 1.0, fill_pen(colour)});
   }
+  // Over colour bands the yielded zones are translucent, so that the contours show through.
+  const double yield_opacity = bands > 0 ? 0.45 : 1.0;
   for (std::size_t i = 0; i < g.yielded.size(); ++i)
     scene.fills.push_back(
-        {std::move(g.yielded[i]), kYieldColours[i], 1.0, fill_pen(kYieldColours[i])});
+        {std::move(g.yielded[i]), kYieldColours[i], yield_opacity, fill_pen(kYieldColours[i])});
   auto add = [&](Polylines& lines, const Pen& pen, bool hairlines = false) {
     scene.lines.push_back({std::move(lines), pen, hairlines});
   };
@@ -640,6 +683,7 @@ Scene scene_of(Gathered g) {
   add(g.bolts_out, kBoltOut);
   add(g.bolts_compression, kBoltCompression);
   add(g.bolts_tension, kBoltTension);
+  add(g.arrows, kVectorPen);
   return scene;
 }
 
@@ -660,6 +704,8 @@ Scene gather_scene(Model& model, const PlotDef& def) {
     fail("range must be {{lo, hi}} with lo < hi, got {{{}, {}}}", (*def.range)[0], (*def.range)[1]);
   if (def.bands < 2 || def.bands > 16) fail("bands must be 2 to 16, got {}", def.bands);
   if ((def.range || def.bands != 8) && def.colour.empty()) fail("range and bands are for colour = ...: give a colour");
+  if (!def.vectors.empty() && def.vectors != "displacement")
+    fail("vectors must be \"displacement\", got \"{}\"", def.vectors);
   Scene scene = scene_of(gather(model, layers, def));
   if (def.window)
     scene.box = Box{(*def.window)[0], (*def.window)[1], (*def.window)[2], (*def.window)[3]};

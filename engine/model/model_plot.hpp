@@ -33,6 +33,9 @@ struct PlotDef {
   std::optional<std::array<double, 2>> range;
   int bands = 8;       // 2 to 16
   std::string title;   // "": the model's title
+  // "displacement": arrows of the zones' displacement on a grid of about 30 cells across the
+  // model, the largest a cell long; "": none.
+  std::string vectors;
 };
 
 // The layer names `show` accepts, in drawing order:

@@ -104,6 +104,29 @@ TEST(PlotBands, ExcavatedZonesAreNotDrawn) {
   EXPECT_EQ(inside, 0) << "zone edges inside the excavated cut";
 }
 
+// vectors = "displacement": arrows on a grid, the largest displacement named in the legend.
+TEST(PlotBands, DisplacementVectors) {
+  Interpreter interpreter;
+  dig(interpreter);
+  Model& model = interpreter.context().model();
+  PlotDef def;
+  def.show = {"blocks"};
+  def.vectors = std::string("displacement");
+  const Scene scene = gather_scene(model, def);
+  double largest = 0.0;
+  for (int g = 0; g < model.mesh().gp_count(); ++g) largest = std::max(largest, norm(model.gridpoint(g).u));
+  bool named = false;
+  for (const LegendEntry& e : scene.legend) named = named || e.label.rfind("displacement (largest ", 0) == 0;
+  EXPECT_TRUE(named);
+  size_t arrows = 0;
+  for (const Scene::Lines& l : scene.lines) arrows = std::max(arrows, l.lines.starts.size());
+  EXPECT_GT(arrows, 100u);   // a shaft and a head each
+  EXPECT_LT(arrows, 2000u);  // on a grid of about 30 cells across, not one a zone
+  EXPECT_GT(largest, 0.0);
+  def.vectors = std::string("velocity");
+  EXPECT_THROW(gather_scene(model, def), Error);
+}
+
 // Each excavation stage keeps the cycle it was dug at (a history chart marks them), in checkpoints too.
 TEST(PlotBands, StagesKeepTheCycleTheyWereDugAt) {
   Interpreter interpreter;
