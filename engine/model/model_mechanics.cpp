@@ -447,10 +447,6 @@ double energy_term(const Mechanics& m, std::string_view term) {
   return r.error;
 }
 
-}  // namespace
-
-namespace {
-
 // The sampler of a quantity of the whole model.
 std::function<double()> global_sampler(const Mechanics* m, std::string_view quantity) {
   if (quantity == "ratio") return [m] { return m->info.ratio; };
