@@ -36,6 +36,7 @@ int run_plot(lua_State*, Context& context, const Args& args) {
   def.bands = static_cast<int>(args.integer("bands"));
   if (args.has("title")) def.title = args.string("title");
   if (args.has("vectors")) def.vectors = args.string("vectors");
+  def.axes = args.boolean("axes");
   plot(context.model(), def);
   return 0;
 }
@@ -83,6 +84,8 @@ const Command& plot_command() {
                "\"displacement\": arrows of the zones' displacement (their corners' mean) on a grid of about 30 "
                "cells across the model, the largest a cell long and named in the legend",
                "none", plot_vectors},
+              {"axes", Type::boolean, "", any_value, "false",
+               "coordinates [m] ticked along the bottom and left edges of the model"},
               {"size", Type::int_pair, "px", between(kPlotMinSize, kPlotMaxSize), "{1200, 900}",
                "width and height (points for SVG and PDF)"},
               {"window", Type::numbers, "m", any_value, kOptional,

@@ -158,31 +158,39 @@ LegendPlan plan_legend(Canvas& p, const std::vector<LegendEntry>& legend, double
   return best.k >= 0.5 * none.k ? best : none;
 }
 
+// Room for coordinate axes: the y labels' width left of the scene, a line of x labels below it,
+// and half the last x label (with its unit) right of it.
+constexpr double kAxisLeft = 52.0, kAxisBelow = 18.0, kAxisRight = 18.0;
+
 Layout layout(Canvas& p, const Box& box, double width, double height, bool has_title,
-              const std::vector<LegendEntry>& legend) {
+              const std::vector<LegendEntry>& legend, bool axes) {
   const double s = p.s(), margin = kMargin * s;
-  const double title_h = has_title ? kTitleHeight * s : 0.0, footer_h = kFooterHeight * s;
+  const double title_h = has_title ? kTitleHeight * s : 0.0;
+  const double axis_left = axes ? kAxisLeft * s : 0.0, axis_below = axes ? kAxisBelow * s : 0.0;
+  const double axis_right = axes ? kAxisRight * s : 0.0;
+  const double footer_h = kFooterHeight * s + axis_below;
   double ew = box.x1 - box.x0, eh = box.y1 - box.y0;
   if (!(ew > 0)) ew = eh > 0 ? eh : 1.0;
   if (!(eh > 0)) eh = ew;
   const LegendPlan plan =
-      plan_legend(p, legend, width - 2 * margin, height - 2 * margin - title_h - footer_h, ew, eh);
+      plan_legend(p, legend, width - 2 * margin - axis_left - axis_right, height - 2 * margin - title_h - footer_h,
+                  ew, eh);
   const bool right = plan.place == LegendPlace::right, below = plan.place == LegendPlace::below;
 
   // The block of title, scene, scale bar and legend, centred on the canvas.
   const double mw = plan.k * ew, mh = plan.k * eh;
-  const double block_w = right ? mw + margin + plan.w : std::max(mw, plan.w);
+  const double block_w = axis_left + axis_right + (right ? mw + margin + plan.w : std::max(mw, plan.w));
   const double block_h = title_h + mh + footer_h + (below ? plan.h + 0.5 * margin : 0.0);
-  const double x0 = 0.5 * (width - block_w), y0 = 0.5 * (height - block_h);
+  const double x0 = 0.5 * (width - block_w) + axis_left, y0 = 0.5 * (height - block_h);
 
   Layout out;
-  out.area = {right ? x0 : x0 + 0.5 * (block_w - mw), y0 + title_h, mw, mh};
-  if (right) out.legend = {x0 + mw + margin, out.area.y, plan.w, plan.h};
+  out.area = {right ? x0 : x0 + 0.5 * (block_w - axis_left - axis_right - mw), y0 + title_h, mw, mh};
+  if (right) out.legend = {x0 + mw + margin + axis_right, out.area.y, plan.w, plan.h};
   if (below)
-    out.legend = {x0 + 0.5 * (block_w - plan.w), out.area.y + mh + footer_h, plan.w, plan.h};
+    out.legend = {x0 + 0.5 * (block_w - axis_left - axis_right - plan.w), out.area.y + mh + footer_h, plan.w, plan.h};
   out.legend_columns = plan.columns;
   out.title_y = y0 + 0.5 * title_h;
-  out.footer_y = out.area.y + mh + 0.5 * footer_h;
+  out.footer_y = out.area.y + mh + axis_below + 0.5 * (footer_h - axis_below);
   out.right = right ? out.legend.x + out.legend.w : out.area.x + mw;
   out.view = View{box, plan.k, out.area.x + 0.5 * (mw - plan.k * (box.x1 - box.x0)),
                   out.area.y + 0.5 * (mh - plan.k * (box.y1 - box.y0))};
@@ -225,6 +233,45 @@ double draw_scale_bar(Canvas& p, const Layout& lay) {
   return label_x + p.text_width(label, kLabelFont);
 }
 
+// Coordinates along the scene's bottom and left edges: round steps, about six a side, ticked
+// outward, each labelled in metres.
+void draw_axes(Canvas& p, const Layout& lay) {
+  const double s = p.s(), tick = 4.0 * s;
+  const Box& b = lay.view.box;
+  const Rect& a = lay.area;
+  const auto round_steps = [](double lo, double hi) {
+    std::vector<double> at;
+    const double step = round_length((hi - lo) / 6.0);
+    if (!(std::isfinite(step) && step > 0)) return at;
+    for (double v = std::ceil(lo / step - 1e-9) * step; v <= hi + 1e-9 * step; v += step)
+      at.push_back(std::abs(v) < 1e-9 * step ? 0.0 : v);
+    return at;
+  };
+  std::vector<std::pair<double, double>> xs, ys;  // (device position, coordinate)
+  for (const double x : round_steps(b.x0, b.x1)) {
+    const double dx = lay.view(Vec2{x, b.y0}).x;
+    if (dx >= a.x - 0.5 && dx <= a.x + a.w + 0.5) xs.push_back({dx, x});
+  }
+  for (const double y : round_steps(b.y0, b.y1)) {
+    const double dy = lay.view(Vec2{b.x0, y}).y;
+    if (dy >= a.y - 0.5 && dy <= a.y + a.h + 0.5) ys.push_back({dy, y});
+  }
+  cairo_new_path(p.cr());
+  for (const auto& [dx, x] : xs) p.segment(dx, a.y + a.h, dx, a.y + a.h + tick);
+  for (const auto& [dy, y] : ys) p.segment(a.x - tick, dy, a.x, dy);
+  p.pen({kInk, 0.8, {}});
+  cairo_stroke(p.cr());
+  // The x labels under the ticks, the last with the unit; the y labels left of theirs, but for one
+  // so near the bottom corner that it would run into the first x label.
+  const double below = a.y + a.h + tick + 0.8 * kNoteFont * s;
+  for (std::size_t i = 0; i < xs.size(); ++i)
+    p.text(fmt::format("{:g}{}", xs[i].second, i + 1 == xs.size() ? " m" : ""), xs[i].first, below,
+           Align::centre, {kNoteFont});
+  for (const auto& [dy, y] : ys)
+    if (a.y + a.h - dy > 1.2 * kNoteFont * s || xs.empty() || xs.front().first - a.x > 3.0 * kNoteFont * s)
+      p.text(fmt::format("{:g}", y), a.x - tick - 2.0 * s, dy, Align::right, {kNoteFont});
+}
+
 // The title, shrunk to fit the canvas; left out when it would be too small to read.
 void draw_title(Canvas& p, const std::string& title, double width, double y) {
   const double size = p.fitted_size(title, kTitleFont, width - 2 * kMargin * p.s());
@@ -240,7 +287,7 @@ void draw_note(Canvas& p, const std::string& note, const Layout& lay, double lef
 
 void render(cairo_t* cr, const Scene& scene, double width, double height) {
   Canvas p(cr, width, height);
-  const Layout lay = layout(p, scene.box, width, height, !scene.title.empty(), scene.legend);
+  const Layout lay = layout(p, scene.box, width, height, !scene.title.empty(), scene.legend, scene.axes);
   const View& view = lay.view;
 
   p.paint(rgb(0xffffff));
@@ -257,6 +304,7 @@ void render(cairo_t* cr, const Scene& scene, double width, double height) {
   draw_labels(p, scene.labels, view);
   cairo_restore(cr);
 
+  if (scene.axes) draw_axes(p, lay);
   if (!scene.title.empty()) draw_title(p, scene.title, width, lay.title_y);
   if (lay.has_legend()) p.legend(lay.legend, scene.legend, {.columns = lay.legend_columns});
   draw_note(p, scene.note, lay, draw_scale_bar(p, lay));

@@ -58,6 +58,7 @@ struct Scene {
   std::vector<Label> labels;
   std::vector<LegendEntry> legend;
   std::string note;  // right of the scale bar, when there is room
+  bool axes = false;  // coordinates [m] ticked along the scene's bottom and left edges
 };
 
 // Draws the scene to `file`, width x height px (points for SVG and PDF). Throws edem::Error,

@@ -709,6 +709,7 @@ Scene gather_scene(Model& model, const PlotDef& def) {
   Scene scene = scene_of(gather(model, layers, def));
   if (def.window)
     scene.box = Box{(*def.window)[0], (*def.window)[1], (*def.window)[2], (*def.window)[3]};
+  scene.axes = def.axes;
   return scene;
 }
 

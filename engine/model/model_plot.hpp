@@ -36,6 +36,7 @@ struct PlotDef {
   // "displacement": arrows of the zones' displacement on a grid of about 30 cells across the
   // model, the largest a cell long; "": none.
   std::string vectors;
+  bool axes = false;   // coordinates [m] along the bottom and left edges
 };
 
 // The layer names `show` accepts, in drawing order:

@@ -127,6 +127,23 @@ TEST(PlotBands, DisplacementVectors) {
   EXPECT_THROW(gather_scene(model, def), Error);
 }
 
+// axes = true: coordinates along the bottom and left edges; without, the picture is as it was.
+TEST(PlotBands, AxesTickTheCoordinates) {
+  Interpreter interpreter;
+  dig(interpreter);
+  test::expect_runs(interpreter, R"(
+    plot{ file = "plain.png", show = {"blocks"} }
+    plot{ file = "axes.png", show = {"blocks"}, axes = true }
+  )");
+  PlotDef def;
+  def.axes = true;
+  EXPECT_TRUE(gather_scene(interpreter.context().model(), def).axes);
+  const auto size = [](const char* f) { return std::filesystem::file_size(f); };
+  EXPECT_GT(size("axes.png"), size("plain.png")) << "no tick labels drawn";
+  std::filesystem::remove("plain.png");
+  std::filesystem::remove("axes.png");
+}
+
 // Each excavation stage keeps the cycle it was dug at (a history chart marks them), in checkpoints too.
 TEST(PlotBands, StagesKeepTheCycleTheyWereDugAt) {
   Interpreter interpreter;
