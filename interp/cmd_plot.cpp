@@ -37,6 +37,7 @@ int run_plot(lua_State*, Context& context, const Args& args) {
   if (args.has("title")) def.title = args.string("title");
   if (args.has("vectors")) def.vectors = args.string("vectors");
   def.axes = args.boolean("axes");
+  def.deform = args.number("deform");
   plot(context.model(), def);
   return 0;
 }
@@ -84,6 +85,10 @@ const Command& plot_command() {
                "\"displacement\": arrows of the zones' displacement (their corners' mean) on a grid of about 30 "
                "cells across the model, the largest a cell long and named in the legend",
                "none", plot_vectors},
+              {"deform", Type::number, "-", ge(0), "0",
+               "draw the zones where they are with their displacements magnified this many times (the blocks "
+               "as their zones' outer edges); only with the zones' layers (regions, plastic, prepass, zones, "
+               "blocks, colour, vectors); 0: where they were made"},
               {"axes", Type::boolean, "", any_value, "false",
                "coordinates [m] ticked along the bottom and left edges of the model"},
               {"size", Type::int_pair, "px", between(kPlotMinSize, kPlotMaxSize), "{1200, 900}",

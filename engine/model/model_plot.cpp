@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <tuple>
 #include <numbers>
 #include <optional>
 #include <string_view>
@@ -167,7 +168,7 @@ std::map<EdgeClass, Polylines> collect_edges(const BlockSet& set, const Classify
 }
 
 // The edges of the zones not excavated, each once (interior edges are shared by two zones).
-Polylines zone_edges(const Model& model) {
+Polylines zone_edges(const Model& model, const std::vector<Vec2>& at) {
   const Mesh& mesh = model.mesh();
   std::vector<std::uint64_t> keys;
   keys.reserve(mesh.zone_gp.size() * 3);
@@ -188,8 +189,8 @@ Polylines zone_edges(const Model& model) {
   lines.points.reserve(keys.size() * 2);
   lines.starts.reserve(keys.size());
   for (const std::uint64_t key : keys) {
-    lines.begin(mesh.gp_position[key >> 32]);
-    lines.add(mesh.gp_position[key & 0xffffffffu]);
+    lines.begin(at[key >> 32]);
+    lines.add(at[key & 0xffffffffu]);
   }
   return lines;
 }
@@ -370,6 +371,7 @@ struct Gathered {
   // vectors: displacement arrows; the largest displacement [m]
   Polylines arrows;
   double max_displacement = 0.0;
+  double deform = 0.0;  // displacements magnified this many times (0: not drawn deformed)
 };
 
 // Zones in place: not excavated, with a material.
@@ -377,16 +379,45 @@ bool in_place(const ZoneView& zone) {
   return zone.excavated == 0 && !zone.material.empty();
 }
 
-Polygon triangle_of(const Mesh& mesh, int zone) {
+Polygon triangle_of(const Mesh& mesh, const std::vector<Vec2>& at, int zone) {
   Polygon triangle;
-  for (int gp : mesh.zone_gp[static_cast<std::size_t>(zone)])
-    triangle.push_back(mesh.gp_position[static_cast<std::size_t>(gp)]);
+  for (int gp : mesh.zone_gp[static_cast<std::size_t>(zone)]) triangle.push_back(at[static_cast<std::size_t>(gp)]);
   return triangle;
+}
+
+// Where each gridpoint is drawn: where it was made, moved by `deform` times its displacement.
+std::vector<Vec2> drawn_positions(const Model& model, double deform) {
+  std::vector<Vec2> at = model.mesh().gp_position;
+  if (deform > 0.0)
+    for (std::size_t gp = 0; gp < at.size(); ++gp) at[gp] = at[gp] + deform * model.gridpoint(static_cast<int>(gp)).u;
+  return at;
+}
+
+// The blocks' outlines as their zones' outer edges (an edge of one zone of its block only), drawn
+// at `at`: the deformed shape of the blocks.
+Polylines block_edges_of_zones(const Model& model, const std::vector<Vec2>& at) {
+  const Mesh& mesh = model.mesh();
+  std::map<std::tuple<int, int, int>, int> uses;  // (block, lower gp, higher gp) -> zones using it
+  for (int z = 0; z < mesh.zone_count(); ++z) {
+    if (model.zone_view(z).excavated != 0) continue;
+    const auto& corners = mesh.zone_gp[static_cast<std::size_t>(z)];
+    for (int i = 0; i < 3; ++i) {
+      const int a = corners[static_cast<std::size_t>(i)], b = corners[static_cast<std::size_t>((i + 1) % 3)];
+      ++uses[{mesh.zone_block[static_cast<std::size_t>(z)], std::min(a, b), std::max(a, b)}];
+    }
+  }
+  Polylines lines;
+  for (const auto& [key, count] : uses)
+    if (count == 1) {
+      lines.begin(at[static_cast<std::size_t>(std::get<1>(key))]);
+      lines.add(at[static_cast<std::size_t>(std::get<2>(key))]);
+    }
+  return lines;
 }
 
 // Zones that yielded, as the seed's Figure 8 shows them: in the model's own run (plastic: now
 // or earlier) or in the last prepass{} (over all its stages), filled by mode.
-void gather_yielded(const Model& model, bool from_prepass, Gathered& g) {
+void gather_yielded(const Model& model, bool from_prepass, const std::vector<Vec2>& at, Gathered& g) {
   const Mesh& mesh = model.mesh();
   const std::vector<std::uint8_t>& prepass = model.prepass_yield();
   if (from_prepass && prepass.size() != mesh.zone_gp.size())
@@ -398,7 +429,7 @@ void gather_yielded(const Model& model, bool from_prepass, Gathered& g) {
     const bool shear = bits & (kShearNow | kShearPast),
                tension = bits & (kTensionNow | kTensionPast);
     if (!shear && !tension) continue;
-    g.yielded[shear && tension ? 2 : shear ? 0 : 1].push_back(triangle_of(mesh, z));
+    g.yielded[shear && tension ? 2 : shear ? 0 : 1].push_back(triangle_of(mesh, at, z));
   }
 }
 
@@ -420,7 +451,7 @@ std::string with_unit(double value, const char* unit) {
 // Zones in place by `quantity` in `count` equal bands over `range` (none: from its least to its
 // largest value); beyond the range, the end bands. The legend gives every bound in one unit.
 void gather_bands(const Model& model, const std::string& quantity, std::optional<std::array<double, 2>> range,
-                  int count, Gathered& g) {
+                  int count, const std::vector<Vec2>& at, Gathered& g) {
   const Mesh& mesh = model.mesh();
   if (mesh.zone_count() == 0)
     fail("colour = \"{}\": the model has no zones (zone{{}} first)", quantity);
@@ -456,7 +487,7 @@ void gather_bands(const Model& model, const std::string& quantity, std::optional
   g.bands.assign(static_cast<std::size_t>(count), {});
   for (std::size_t i = 0; i < zones.size(); ++i) {
     const int band = width > 0 ? std::clamp(static_cast<int>(std::floor((values[i] - lo) / width)), 0, count - 1) : 0;
-    g.bands[static_cast<std::size_t>(band)].push_back(triangle_of(mesh, zones[i]));
+    g.bands[static_cast<std::size_t>(band)].push_back(triangle_of(mesh, at, zones[i]));
   }
   for (int b = count - 1; b >= 0; --b) {  // the legend reads from the highest down
     const double from = lo + b * width, to = lo + (b + 1) * width;
@@ -549,6 +580,7 @@ void gather_bolts(const Model& model, Gathered& g) {
 
 Gathered gather(Model& model, const Layers& layers, const PlotDef& def) {
   Gathered g;
+  const std::vector<Vec2> at = drawn_positions(model, def.deform);
   g.title = def.title.empty() ? model.title() : def.title;
   const BlockSet& set = model.blocks();
   const auto box = extent_of(set);
@@ -559,7 +591,7 @@ Gathered gather(Model& model, const Layers& layers, const PlotDef& def) {
   if (layers.zones) {
     const Mesh& mesh = model.mesh();
     g.zones = mesh.zone_gp.size();
-    g.zone_lines = zone_edges(model);
+    g.zone_lines = zone_edges(model, at);
   }
   // Edges the joints or cracks layer restyles are left out of the neutral block outlines,
   // so that dashes are not filled in underneath.
@@ -572,14 +604,16 @@ Gathered gather(Model& model, const Layers& layers, const PlotDef& def) {
     if (!joints && o.kind != EdgeKind::crack) return std::nullopt;
     return class_of(o);
   };
-  if (layers.blocks) g.block_lines = std::move(collect_edges(set, neutral)[EdgeClass{}]);
+  if (layers.blocks)
+    g.block_lines = def.deform > 0.0 ? block_edges_of_zones(model, at) : std::move(collect_edges(set, neutral)[EdgeClass{}]);
   if (joints || cracks) g.edges = collect_edges(set, styled);
   if (cracks) g.new_cracks = new_cracks_of(model);
-  if (layers.plastic || layers.prepass) gather_yielded(model, layers.prepass, g);
-  if (!def.colour.empty()) gather_bands(model, def.colour, def.range, def.bands, g);
+  if (layers.plastic || layers.prepass) gather_yielded(model, layers.prepass, at, g);
+  if (!def.colour.empty()) gather_bands(model, def.colour, def.range, def.bands, at, g);
   if (layers.stress) gather_stress(model, g);
   if (layers.bolts) gather_bolts(model, g);
   if (def.vectors == "displacement") gather_vectors(model, g);
+  if (def.deform > 0.0) g.deform = def.deform;
   return g;
 }
 
@@ -633,6 +667,7 @@ std::vector<LegendEntry> legend_of(const Gathered& g) {
 
 std::string counts_of(const Gathered& g) {
   std::string counts = fmt::format("{} block{}", g.blocks, g.blocks == 1 ? "" : "s");
+  if (g.deform > 0.0) counts = fmt::format("displacements x {:g}; ", g.deform) + counts;
   if (g.zones && *g.zones == 0) counts += ", not zoned";
   if (g.zones && *g.zones > 0)
     counts += fmt::format(", {} zone{}", *g.zones, *g.zones == 1 ? "" : "s");
@@ -704,6 +739,11 @@ Scene gather_scene(Model& model, const PlotDef& def) {
     fail("range must be {{lo, hi}} with lo < hi, got {{{}, {}}}", (*def.range)[0], (*def.range)[1]);
   if (def.bands < 2 || def.bands > 16) fail("bands must be 2 to 16, got {}", def.bands);
   if ((def.range || def.bands != 8) && def.colour.empty()) fail("range and bands are for colour = ...: give a colour");
+  if (!(def.deform >= 0.0 && std::isfinite(def.deform))) fail("deform must be a number >= 0, got {}", def.deform);
+  if (def.deform > 0.0 && (layers.joints || layers.cracks || layers.stress || layers.bolts))
+    fail("deform draws the zones' layers only (regions, plastic, prepass, zones, blocks, a colour, vectors); "
+         "leave out joints, cracks, stress and bolts, or deform");
+  if (def.deform > 0.0 && model.mesh().zone_count() == 0) fail("deform needs zones: zone{{}} the blocks first");
   if (!def.vectors.empty() && def.vectors != "displacement")
     fail("vectors must be \"displacement\", got \"{}\"", def.vectors);
   Scene scene = scene_of(gather(model, layers, def));

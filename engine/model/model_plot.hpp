@@ -37,6 +37,10 @@ struct PlotDef {
   // model, the largest a cell long; "": none.
   std::string vectors;
   bool axes = false;   // coordinates [m] along the bottom and left edges
+  // > 0: the zones drawn where they are, their displacements magnified this many times (the
+  // blocks as their zones' outer edges); only the layers of zones (regions, plastic, prepass,
+  // zones, blocks, a colour, vectors) can be drawn so. 0: where they were made.
+  double deform = 0.0;
 };
 
 // The layer names `show` accepts, in drawing order:

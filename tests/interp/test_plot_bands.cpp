@@ -144,6 +144,37 @@ TEST(PlotBands, AxesTickTheCoordinates) {
   std::filesystem::remove("axes.png");
 }
 
+// deform = k: the zones and the blocks' outlines drawn where they are, displacements magnified k
+// times; the layers drawn from the blocks' own geometry are refused with it.
+TEST(PlotBands, DeformMagnifiesTheDisplacements) {
+  Interpreter interpreter;
+  dig(interpreter);
+  Model& model = interpreter.context().model();
+  double settled = 0.0;  // the top's settlement, 2 m above the cut's middle
+  for (int g = 0; g < model.mesh().gp_count(); ++g) {
+    const GridpointView v = model.gridpoint(g);
+    if (std::abs(v.position.y - 4.0) < 1e-9 && std::abs(v.position.x - 2.0) < 0.3) settled = std::min(settled, v.u.y);
+  }
+  ASSERT_LT(settled, -1e-3);
+  PlotDef def;
+  def.show = {"zones", "blocks"};
+  def.deform = 100.0;
+  const Scene scene = gather_scene(model, def);
+  double top = -1e300;
+  for (const Scene::Lines& l : scene.lines)
+    for (const Vec2& p : l.lines.points)
+      if (std::abs(p.x - 2.0) < 0.3) top = std::max(top, p.y);
+  EXPECT_NEAR(top, 4.0 + 100.0 * settled, 100.0 * 0.2 * std::abs(settled)) << "the top drawn 100 times its settlement down";
+  EXPECT_TRUE(contains(scene.note, "displacements x 100"));
+  def.show = {"joints"};
+  try {
+    gather_scene(model, def);
+    ADD_FAILURE() << "joints drawn deformed";
+  } catch (const Error& e) {
+    EXPECT_TRUE(contains(e.what(), "deform draws the zones' layers only"));
+  }
+}
+
 // Each excavation stage keeps the cycle it was dug at (a history chart marks them), in checkpoints too.
 TEST(PlotBands, StagesKeepTheCycleTheyWereDugAt) {
   Interpreter interpreter;
