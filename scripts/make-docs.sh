@@ -2,7 +2,8 @@
 # Regenerates EDEM's documentation from the repository, with one command:
 #   bash scripts/make-docs.sh [BUILD_DIR]      (default: build; build it first)
 # - the language reference in README.md, from the command schema (`edem reference --update`);
-# - the main example's picture, scripts/examples/jointed_cavern.png, which README.md shows;
+# - the main example's picture, scripts/examples/jointed_cavern.png, which README.md shows, and
+#   the staged tunnel tutorial's crown history and cracks (tunnel_crown.png, tunnel_cracks.png);
 # - the verification chapter, tests/verification/README.md: each verification script run with
 #   `--set report=DIR` writes its own section (its opening comment, a table of its checks and a
 #   chart of their errors against their tolerances, edem.check), assembled in file order.
@@ -18,6 +19,8 @@ edem=$build/interp/edem
 
 (cd "$root/scripts/examples" && "$edem" --quiet run jointed_cavern.lua)
 echo "make-docs: scripts/examples/jointed_cavern.png"
+(cd "$root/scripts/examples" && "$edem" --quiet run staged_tunnel.lua > /dev/null)
+echo "make-docs: scripts/examples/tunnel_crown.png, tunnel_cracks.png"
 
 chapter=$root/tests/verification
 report=$chapter/report
