@@ -530,8 +530,9 @@ void gather_stress(const Model& model, Gathered& g) {
 }
 
 // Displacement arrows on a grid of about 30 cells across the model: in each cell, the first zone
-// in place, from its centroid along its corners' mean displacement; the largest a cell long.
-void gather_vectors(const Model& model, Gathered& g) {
+// in place, from its centroid as drawn (deformed, with deform) along its corners' mean
+// displacement; the largest a cell long.
+void gather_vectors(const Model& model, const std::vector<Vec2>& drawn, Gathered& g) {
   const Mesh& mesh = model.mesh();
   const double cell = std::max(g.box.x1 - g.box.x0, g.box.y1 - g.box.y0) / 30.0;
   std::map<std::pair<long, long>, std::pair<Vec2, Vec2>> picked;  // by cell: centroid, displacement
@@ -541,9 +542,12 @@ void gather_vectors(const Model& model, Gathered& g) {
     const std::pair<long, long> key{std::lround(std::floor((zone.centroid.x - g.box.x0) / cell)),
                                     std::lround(std::floor((zone.centroid.y - g.box.y0) / cell))};
     if (picked.count(key)) continue;
-    Vec2 u{0.0, 0.0};
-    for (int gp : mesh.zone_gp[static_cast<std::size_t>(z)]) u = u + (1.0 / 3.0) * model.gridpoint(gp).u;
-    picked[key] = {zone.centroid, u};
+    Vec2 u{0.0, 0.0}, centre{0.0, 0.0};
+    for (int gp : mesh.zone_gp[static_cast<std::size_t>(z)]) {
+      u = u + (1.0 / 3.0) * model.gridpoint(gp).u;
+      centre = centre + (1.0 / 3.0) * drawn[static_cast<std::size_t>(gp)];
+    }
+    picked[key] = {centre, u};
     g.max_displacement = std::max(g.max_displacement, norm(u));
   }
   if (picked.empty() || !(g.max_displacement > 0.0)) return;
@@ -612,7 +616,7 @@ Gathered gather(Model& model, const Layers& layers, const PlotDef& def) {
   if (!def.colour.empty()) gather_bands(model, def.colour, def.range, def.bands, at, g);
   if (layers.stress) gather_stress(model, g);
   if (layers.bolts) gather_bolts(model, g);
-  if (def.vectors == "displacement") gather_vectors(model, g);
+  if (def.vectors == "displacement") gather_vectors(model, at, g);
   if (def.deform > 0.0) g.deform = def.deform;
   return g;
 }
