@@ -10,19 +10,12 @@ from paraview.simple import OpenDataFile, WarpByVector
 from paraview.vtk.numpy_interface import dataset_adapter as dsa
 import numpy as np
 
+from expected import Checks, read_expected
+
 directory = sys.argv[1]
-expected = {}
-for line in open(f"{directory}/expected.txt"):
-    key, value = line.split(" = ")
-    expected[key] = float(value)
-failures = []
-
-
-def check(what, measured, wanted, tolerance=0.0):
-    ok = abs(measured - wanted) <= tolerance * max(abs(wanted), 1.0)
-    print(f"{what}: measured {measured!r}, expected {wanted!r}{'' if ok else '  FAIL'}")
-    if not ok:
-        failures.append(what)
+expected = read_expected(directory)
+check = Checks()
+failures = check.failures
 
 
 reader = OpenDataFile(f"{directory}/stages.xdmf")
