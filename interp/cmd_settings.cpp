@@ -1,14 +1,18 @@
-// A script's settings: settings{} declares the keys `--set KEY=VALUE` may give, with their
-// defaults, and out_dir() tells where --out puts the files commands write.
+// What a script shares with whoever runs it: settings{} declares the keys `--set KEY=VALUE` may
+// give, with their defaults; out_dir() tells where --out puts the files commands write; result{}
+// reports the run's result row (result.csv there), which edem sweep gathers.
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <fstream>
 #include <lua.hpp>
 
 #include "commands.hpp"
 #include "context.hpp"
 #include "core/error.hpp"
 #include "core/names.hpp"
+#include "csv.hpp"
 #include "lua_util.hpp"
 
 namespace edem {
@@ -45,6 +49,15 @@ int run_settings(lua_State* L, Context& context, const Args& args) {
     lua_pop(L, 1);
   }
   std::sort(keys.begin(), keys.end());
+  if (context.probe != nullptr) {  // edem sweep wants the declarations only: stop here
+    context.probe->reached = true;
+    for (const std::string& key : keys) {
+      lua_getfield(L, defaults, key.c_str());
+      context.probe->declared.push_back({key, luaL_typename(L, -1), luaL_tolstring(L, -1, nullptr)});
+      lua_pop(L, 2);
+    }
+    fail("the settings are read; the script stops here (edem sweep checks its table)");
+  }
   for (const auto& [key, text] : context.settings)
     if (!std::binary_search(keys.begin(), keys.end(), key))
       fail("--set {}={}: this script has no setting '{}'{} (its settings: {})", key, text, key,
@@ -69,6 +82,52 @@ int run_out_dir(lua_State* L, Context& context, const Args&) {
   const std::string dir = context.out_dir.empty() ? "." : context.out_dir;
   lua_pushlstring(L, dir.data(), dir.size());
   return 1;
+}
+
+// A result's value as text: integers as such, other numbers in the fewest digits that read back
+// exactly.
+std::string value_text(lua_State* L, int index) {
+  if (lua_isinteger(L, index)) return fmt::format("{}", lua_tointeger(L, index));
+  if (lua_type(L, index) == LUA_TNUMBER) return fmt::format("{}", lua_tonumber(L, index));
+  if (lua_type(L, index) == LUA_TBOOLEAN) return lua_toboolean(L, index) ? "true" : "false";
+  return lua_tostring(L, index);
+}
+
+int run_result(lua_State* L, Context& context, const Args& args) {
+  const int values = args.get<TableArg>("values").index;
+  std::vector<std::pair<std::string, std::string>> given;
+  lua_pushnil(L);
+  while (lua_next(L, values) != 0) {
+    if (lua_type(L, -2) != LUA_TSTRING) fail("the result is named values, key = value; got a key {}", describe(L, -2));
+    const std::string key = lua_tostring(L, -2);
+    const int type = lua_type(L, -1);
+    if (type != LUA_TNUMBER && type != LUA_TSTRING && type != LUA_TBOOLEAN)
+      fail("{} must be a number, a string or a boolean, got {}", key, describe(L, -1));
+    given.emplace_back(key, value_text(L, -1));
+    lua_pop(L, 1);
+  }
+  std::sort(given.begin(), given.end());  // a table's own order is Lua's whim
+  for (auto& [key, value] : given) {
+    const auto same = std::find_if(context.results.begin(), context.results.end(),
+                                   [&](const auto& r) { return r.first == key; });
+    if (same != context.results.end()) same->second = value;
+    else context.results.emplace_back(key, value);
+  }
+  // Written whole each time, through a temporary file, so that a reader never sees half a row.
+  const std::string file = context.output_path("result.csv");
+  const std::string temporary = file + ".tmp";
+  {
+    std::ofstream out(temporary);
+    std::vector<std::string> keys, texts;
+    for (const auto& [key, value] : context.results) {
+      keys.push_back(key);
+      texts.push_back(value);
+    }
+    out << csv_line(keys) << '\n' << csv_line(texts) << '\n';
+    if (!out) fail("cannot write {}", temporary);
+  }
+  if (std::rename(temporary.c_str(), file.c_str()) != 0) fail("cannot write {}", file);
+  return 0;
 }
 
 }  // namespace
@@ -101,6 +160,26 @@ const Command& out_dir_command() {
       .run = run_out_dir,
       .returns = "a string",
       .usage = "local f = io.open(out_dir() .. \"/table.csv\", \"w\")",
+  };
+  return command;
+}
+
+const Command& result_command() {
+  static const Command command{
+      .name = "result",
+      .help =
+          "Reports the run's result: named values written as one row (a header, then the values) to "
+          "result.csv in the --out folder. A later call adds columns or replaces values, so a script may report "
+          "as it goes; the columns are in the order first given, a call's own in alphabetical order. `edem "
+          "sweep` gathers each run's row beside its settings.",
+      .form = Form::call,
+      .positional =
+          {
+              {"values", Type::table, "", any_value, kRequired,
+               "key = value for each result (a number, a string or a boolean)"},
+          },
+      .run = run_result,
+      .usage = "result{ cracks = info().cracks, crown = gp_near(0, 5).uy }",
   };
   return command;
 }

@@ -65,6 +65,7 @@ const std::vector<const Command*>& commands() {
       &restore_command(),        //
       &settings_command(),       // cmd_settings.cpp
       &out_dir_command(),        //
+      &result_command(),         //
   };
   return table;
 }
@@ -100,6 +101,11 @@ int dispatch(lua_State* L) {
   const RunningScope scope(context_of(L), running);
   std::vector<std::string> doubts;
   const int results = guarded(L, command.name, [&] {
+    if (Context& context = context_of(L); context.probe != nullptr && command.name != "settings" &&
+                                          command.name != "out_dir") {
+      context.probe->first_command = command.name;  // edem sweep looks no further
+      fail("the script stops here: edem sweep reads its settings{{}} only");
+    }
     const Args args = read_args(L, command, lua_upvalueindex(2));
     const int count = command.run(L, context_of(L), args);
     doubts = args.doubts;

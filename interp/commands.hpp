@@ -64,6 +64,7 @@ const Command& fill_command();
 const Command& stage_command();
 const Command& settings_command();
 const Command& out_dir_command();
+const Command& result_command();
 const Command& bolt_material_command();
 const Command& bolt_command();
 const Command& bolt_head_command();

@@ -17,6 +17,7 @@
 #include <string_view>
 #include <vector>
 
+#include "settings_probe.hpp"
 #include "io/field_output.hpp"
 #include "model/model.hpp"
 
@@ -50,6 +51,8 @@ struct Context {
   std::map<std::string, FieldSeries> outputs;  // output{} series by XDMF file
   std::vector<std::string> stage_outputs;      // output{ at = "stage" }: their files
   std::set<std::string> said;                  // warnings and notes said so far (each once)
+  std::vector<std::pair<std::string, std::string>> results;  // result{}: KEY, VALUE as written
+  SettingsProbe* probe = nullptr;  // edem sweep's look at the settings (settings_probe.hpp); null: a run
 
   // Appends a frame of the current model to the series of `file` (output{}).
   void write_frame(const std::string& file) { outputs.at(file).append(model().field_frame()); }

@@ -122,6 +122,7 @@ Interpreter::Interpreter(InterpreterOptions options)
   settings_ = options.settings;
   context_.settings = options.settings;
   context_.stop = options.stop;
+  context_.probe = options.probe;
   context_.lua = L_;
   attach(L_, context_);
   luaL_openlibs(L_);

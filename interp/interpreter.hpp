@@ -39,6 +39,8 @@ struct InterpreterOptions {
   // Raised to a signal's number by the caller's SIGINT / SIGTERM handler: cycling stops at the
   // end of its cycle and the model is saved to interrupted.h5 (Context::stop). Null: none.
   const std::atomic<int>* stop = nullptr;
+  // edem sweep's look at the script's settings{} (settings_probe.hpp); null for a run.
+  SettingsProbe* probe = nullptr;
 };
 
 class Interpreter {

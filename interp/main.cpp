@@ -4,6 +4,9 @@
 //        (or: edem FILE.lua [ARGS...]; the options may follow `run` too)
 //   edem reference [--update README.md]
 //   edem info FILE.h5 [--script]   (what a checkpoint holds)
+//   edem sweep [--jobs N] [--threads M] [--out DIR] [--resume] [--only NAME] [--collect]
+//              [--slurm [--partition P] [--time T] [--chunk K] [--no-submit]] [--set KEY=VALUE]...
+//              TABLE SCRIPT   (a run of SCRIPT a row of TABLE: sweep.hpp)
 //   edem --version | --help
 //
 // Exit status: 0 on success, 1 when the script stops on an error (the message on stderr),
@@ -26,6 +29,7 @@
 #include "core/error.hpp"
 #include "interpreter.hpp"
 #include "reference.hpp"
+#include "sweep.hpp"
 
 namespace {
 
@@ -43,6 +47,9 @@ struct Options {
   std::vector<std::string> settings;  // --set KEY=VALUE, as given
   std::string out_dir;                // --out DIR
   double progress = -1.0;             // --progress SECONDS; < 0: the default
+  std::string error_file;             // --error-file: the error is written there too (edem sweep's runs)
+  edem::SweepOptions sweep;           // edem sweep
+  std::vector<std::string> sweep_settings;
 };
 
 // An installed edem finds its stdlib next to itself: PREFIX/bin/edem, PREFIX/share/edem/stdlib.
@@ -91,6 +98,15 @@ extern "C" void ask_to_stop(int signal) {
   [[maybe_unused]] const auto written = ::write(2, text, sizeof text - 1);
 }
 
+// A sweep passes the first SIGINT or SIGTERM on to its runs (which save their models and end)
+// and starts no more; a second one ends it at once.
+extern "C" void ask_sweep_to_stop(int signal) {
+  stop_signal.store(signal);
+  std::signal(signal, SIG_DFL);
+  const char text[] = "\nedem: sweep: stopping the runs (again to quit at once)\n";
+  [[maybe_unused]] const auto written = ::write(2, text, sizeof text - 1);
+}
+
 int run_script(const Options& options, std::vector<std::pair<std::string, std::string>> settings) {
   if (!options.out_dir.empty()) {
     std::error_code ec;
@@ -114,6 +130,7 @@ int run_script(const Options& options, std::vector<std::pair<std::string, std::s
   if (!error) return 0;
   std::fflush(stdout);  // what the script printed comes before the error
   fmt::print(stderr, "{}\n", *error);
+  if (!options.error_file.empty()) std::ofstream(options.error_file) << *error << '\n';
   // Stopped by a signal: the status a shell expects of one (130 for SIGINT).
   const int interrupted = interpreter.context().interrupted_by;
   return interrupted != 0 ? 128 + interrupted : 1;
@@ -188,17 +205,54 @@ int main(int argc, char** argv) {
   auto* info = app.add_subcommand("info", "summarise a checkpoint written by save()");
   info->add_option("file", options.checkpoint, "the checkpoint (.h5)")->required();
   info->add_flag("--script", options.show_script, "also print the script saved in it");
+  app.add_option("--error-file", options.error_file, "also write the error to this file")->group("");
+
+  auto* sweep = app.add_subcommand(
+      "sweep",
+      "run SCRIPT once for each row of TABLE (CSV, or YADE's blank-separated batch table: a header of the "
+      "script's settings{} keys and an optional name column, a row a run), each run in a folder of its own "
+      "under --out, its result{} row gathered into OUT/sweep.csv as runs end; locally or as a Slurm job array");
+  sweep->add_option("table", options.sweep.table, "the table of runs")->required();
+  sweep->add_option("script", options.sweep.script, "the Lua script each row runs")->required();
+  sweep->add_option("--out", options.sweep.out, "the sweep's folder [TABLE's name without extension + _sweep]");
+  sweep->add_option("--jobs", options.sweep.jobs,
+                    "runs at a time [as many as the cores hold at --threads each; never more]")
+      ->check(CLI::Range(1, 4096));
+  sweep->add_option("--threads", options.sweep.threads, "threads of each run (Slurm: cpus per task) [1]")
+      ->check(CLI::Range(1, 4096));
+  sweep->add_option("--set", options.sweep_settings, "KEY=VALUE for every run (a key the table has not)")
+      ->allow_extra_args(false);
+  sweep->add_flag("--resume", options.sweep.resume,
+                  "run only the rows without an ok outcome of their settings in --out");
+  sweep->add_option("--only", options.sweep.only, "run the row of this name alone");
+  sweep->add_flag("--collect", options.sweep.collect,
+                  "run nothing: gather the outcomes in --out into sweep.csv and say what is missing");
+  sweep->add_flag("--slurm", options.sweep.slurm,
+                  "write OUT/sweep.sbatch, a Slurm job array of the runs, and submit it with sbatch");
+  sweep->add_option("--partition", options.sweep.partition, "Slurm: the partition");
+  sweep->add_option("--time", options.sweep.time, "Slurm: each task's time limit (e.g. 1:00:00)");
+  sweep->add_option("--chunk", options.sweep.chunk, "Slurm: rows a task runs, one after another [1]")
+      ->check(CLI::Range(1, 1000000));
+  sweep->add_flag("!--no-submit", options.sweep.submit, "Slurm: write the job script, do not submit it");
+  sweep->add_option("--task", options.sweep.task, "run this array task's rows (the job script's call)")->group("");
   app.require_subcommand(0, 1);
 
   std::vector<std::pair<std::string, std::string>> settings;
   try {
     app.parse(argc, argv);
     settings = parse_settings(options.settings);
+    options.sweep.common = parse_settings(options.sweep_settings);
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;
   }
   if (options.reference || reference->parsed()) return print_reference(options);
   if (info->parsed()) return print_checkpoint(options);
+  if (sweep->parsed()) {
+    options.sweep.stop = &stop_signal;
+    std::signal(SIGINT, ask_sweep_to_stop);
+    std::signal(SIGTERM, ask_sweep_to_stop);
+    return edem::run_sweep(options.sweep);
+  }
   if (options.script.empty()) {
     fmt::print(stderr, "{}", app.help());
     return 2;
