@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what EDEM needs to build and test, from Debian's packages only; skips what is
-# already installed. Run as root (or with sudo available). `--paraview` adds ParaView.
+# already installed. Run as root (or with sudo available). `--paraview` adds ParaView,
+# `--slurm` Slurm and munge.
 set -euo pipefail
 
 packages=(
@@ -14,7 +15,15 @@ packages=(
 
 # --paraview: Debian's paraview as well, for the long test that opens the field output in it
 # (ctest -L long -R output.paraview); large, so only on request.
-if [[ ${1:-} == --paraview ]]; then packages+=(paraview python3-paraview); fi
+# --slurm: Slurm's daemons and commands and munge, for the long test that runs edem sweep on a
+# single-node cluster it starts (ctest -L long -R sweep.slurm).
+for option in "$@"; do
+  case $option in
+    --paraview) packages+=(paraview python3-paraview) ;;
+    --slurm) packages+=(slurm-wlm munge) ;;
+    *) echo "install-deps: unknown option '$option' (--paraview, --slurm)" >&2; exit 2 ;;
+  esac
+done
 
 missing=()
 for package in "${packages[@]}"; do
