@@ -103,6 +103,8 @@ int run_result(lua_State* L, Context& context, const Args& args) {
     const int type = lua_type(L, -1);
     if (type != LUA_TNUMBER && type != LUA_TSTRING && type != LUA_TBOOLEAN)
       fail("{} must be a number, a string or a boolean, got {}", key, describe(L, -1));
+    for (const char* own : {"name", "status", "seconds", "message"})
+      if (key == own) fail("'{}' is a column edem sweep writes itself; give the result another name", key);
     given.emplace_back(key, value_text(L, -1));
     lua_pop(L, 1);
   }
@@ -171,7 +173,8 @@ const Command& result_command() {
           "Reports the run's result: named values written as one row (a header, then the values) to "
           "result.csv in the --out folder. A later call adds columns or replaces values, so a script may report "
           "as it goes; the columns are in the order first given, a call's own in alphabetical order. `edem "
-          "sweep` gathers each run's row beside its settings.",
+          "sweep` gathers each run's row beside its settings (name, status, seconds and message are the sweep's own "
+          "columns, not a result's).",
       .form = Form::call,
       .positional =
           {

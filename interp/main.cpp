@@ -234,7 +234,9 @@ int main(int argc, char** argv) {
   sweep->add_option("--chunk", options.sweep.chunk, "Slurm: rows a task runs, one after another [1]")
       ->check(CLI::Range(1, 1000000));
   sweep->add_flag("!--no-submit", options.sweep.submit, "Slurm: write the job script, do not submit it");
-  sweep->add_option("--task", options.sweep.task, "run this array task's rows (the job script's call)")->group("");
+  sweep->add_option("--task", options.sweep.task, "run this array task's rows (the job script's call)")
+      ->check(CLI::Range(0, 1 << 30))
+      ->group("");
   app.require_subcommand(0, 1);
 
   std::vector<std::pair<std::string, std::string>> settings;
@@ -248,7 +250,14 @@ int main(int argc, char** argv) {
   if (options.reference || reference->parsed()) return print_reference(options);
   if (info->parsed()) return print_checkpoint(options);
   if (sweep->parsed()) {
+    if (!options.settings.empty() || !options.out_dir.empty() || options.threads != 0) {
+      fmt::print(stderr, "edem: sweep: give --set, --out and --threads after 'sweep' (they are the sweep's)\n");
+      return 2;
+    }
+    options.sweep.quiet = options.quiet;
+    options.sweep.stdlib_dirs = stdlib_near_executable();
     options.sweep.stop = &stop_signal;
+    std::signal(SIGCHLD, SIG_DFL);  // an inherited "ignore" would make the runs' exit statuses unreadable
     std::signal(SIGINT, ask_sweep_to_stop);
     std::signal(SIGTERM, ask_sweep_to_stop);
     return edem::run_sweep(options.sweep);

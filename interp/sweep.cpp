@@ -21,6 +21,7 @@
 #include "errors.hpp"
 #include "interpreter.hpp"
 #include "sweep_runs.hpp"
+#include "sweep_slurm.hpp"
 
 extern char** environ;
 
@@ -31,9 +32,9 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
 // The settings SCRIPT declares, learnt by running it up to its settings{} call (settings_probe.hpp).
-std::vector<DeclaredSetting> declared_settings(const std::string& script) {
+std::vector<DeclaredSetting> declared_settings(const std::string& script, const std::vector<std::string>& stdlib_dirs) {
   SettingsProbe probe;
-  Interpreter interpreter({.quiet = true, .probe = &probe});
+  Interpreter interpreter({.quiet = true, .stdlib_dirs = stdlib_dirs, .probe = &probe});
   lua_pushcfunction(interpreter.state(), [](lua_State*) { return 0; });  // nothing printed
   lua_setglobal(interpreter.state(), "print");
   const auto error = interpreter.run_file(script);
@@ -141,7 +142,11 @@ int run_locally(const SweepOptions& options, const SweepTable& table, const std:
       --tally.left;
       ++(o.status == "ok" ? tally.done : tally.failed);
       tally.seconds += o.seconds;
-      gather(plan.out, table, options.common);
+      try {
+        gather(plan.out, table, options.common);
+      } catch (const std::exception& e) {  // the next run's gathering, or --collect, tries again
+        fmt::print(stderr, "edem: sweep: cannot gather the rows: {}\n", e.what());
+      }
       if (!options.quiet || o.status != "ok") {
         fmt::print("sweep: {} {} in {}{} ({})\n", row->name, o.status, duration_text(o.seconds),
                    o.message.empty() ? "" : ": " + o.message, tally_text(tally, jobs));
@@ -161,7 +166,8 @@ int run_locally(const SweepOptions& options, const SweepTable& table, const std:
 }
 
 // The Slurm array task `task`: its chunk of rows, one after another, then the rows gathered.
-int run_task(const SweepOptions& options, const SweepTable& table, const RunPlan& plan) {
+int run_task(const SweepOptions& options, const SweepTable& table, RunPlan plan) {
+  plan.pass_on_signals = false;  // Slurm signals every process of a cancelled task itself
   const size_t first = static_cast<size_t>(options.task) * static_cast<size_t>(options.chunk);
   if (first >= table.rows.size())
     fail("--task {}: the table has {} rows, {} a task", options.task, table.rows.size(), options.chunk);
@@ -170,109 +176,19 @@ int run_task(const SweepOptions& options, const SweepTable& table, const RunPlan
     if (options.stop != nullptr && options.stop->load() != 0) break;
     if (const auto o = outcome_of(plan.out, table.rows[r], options.common); options.resume && o && o->status == "ok")
       continue;
+    if (!options.only.empty() && table.rows[r].name != options.only) continue;
     const RunOutcome o = run_row(plan, table.rows[r], options.stop);
     fmt::print("sweep: {} {} in {}{}\n", table.rows[r].name, o.status, duration_text(o.seconds),
                o.message.empty() ? "" : ": " + o.message);
     all_ok = all_ok && o.status == "ok";
-    gather(plan.out, table, options.common);  // the last task to end leaves every row gathered
+    try {
+      gather(plan.out, table, options.common);  // the last task to end leaves every row gathered
+    } catch (const std::exception& e) {  // the run's outcome is kept; --collect gathers it
+      fmt::print(stderr, "edem: sweep: cannot gather the rows: {}\n", e.what());
+    }
   }
   if (options.stop != nullptr && options.stop->load() != 0) return 128 + options.stop->load();
   return all_ok ? 0 : 1;
-}
-
-std::string shell_quoted(const std::string& word) {
-  if (!word.empty() && word.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-+=./:,@") == std::string::npos)
-    return word;
-  std::string quoted = "'";
-  for (const char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
-// "0-3,7": the array indices of the tasks whose chunks hold `rows`.
-std::string array_indices(const SweepTable& table, const std::vector<const SweepRow*>& rows, int chunk) {
-  std::vector<long> tasks;
-  for (const SweepRow* row : rows) tasks.push_back((row - table.rows.data()) / chunk);
-  tasks.erase(std::unique(tasks.begin(), tasks.end()), tasks.end());
-  std::string text;
-  for (size_t i = 0; i < tasks.size();) {
-    size_t j = i;
-    while (j + 1 < tasks.size() && tasks[j + 1] == tasks[j] + 1) ++j;
-    if (!text.empty()) text += ',';
-    text += j == i ? fmt::format("{}", tasks[i]) : fmt::format("{}-{}", tasks[i], tasks[j]);
-    i = j + 1;
-  }
-  return text;
-}
-
-// Runs `words` and returns what it printed on stdout, with its exit status.
-std::pair<int, std::string> capture(const std::vector<std::string>& words) {
-  int pipe_ends[2];
-  if (::pipe(pipe_ends) != 0) fail("cannot make a pipe");
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_adddup2(&actions, pipe_ends[1], 1);
-  posix_spawn_file_actions_addclose(&actions, pipe_ends[0]);
-  std::vector<std::string> copy = words;
-  std::vector<char*> argv;
-  for (std::string& w : copy) argv.push_back(w.data());
-  argv.push_back(nullptr);
-  pid_t pid = 0;
-  const int spawned = posix_spawnp(&pid, argv[0], &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  ::close(pipe_ends[1]);
-  std::string text;
-  char buffer[4096];
-  for (ssize_t n; (n = ::read(pipe_ends[0], buffer, sizeof buffer)) > 0;) text.append(buffer, static_cast<size_t>(n));
-  ::close(pipe_ends[0]);
-  if (spawned != 0) fail("cannot run {}: {}", words[0], std::strerror(spawned));
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), text};
-}
-
-// Writes OUT/sweep.sbatch, a job array of the selected rows' chunks, and submits it.
-int submit_to_slurm(const SweepOptions& options, const SweepTable& table, const std::vector<const SweepRow*>& rows,
-                    const RunPlan& plan) {
-  const fs::path logs = fs::path(plan.out) / "slurm";
-  fs::create_directories(logs);
-  std::vector<std::string> call = {plan.edem, "sweep", "--task", "${SLURM_ARRAY_TASK_ID}", "--chunk",
-                                   std::to_string(options.chunk), "--threads", std::to_string(plan.threads),
-                                   "--out", plan.out};
-  for (const auto& [key, value] : options.common) {
-    call.push_back("--set");
-    call.push_back(key + "=" + value);
-  }
-  if (options.resume) call.push_back("--resume");
-  call.push_back(absolute(table.path));
-  call.push_back(plan.script);
-  std::string line = "exec";
-  for (const std::string& word : call)
-    line += ' ' + (word == "${SLURM_ARRAY_TASK_ID}" ? "\"$SLURM_ARRAY_TASK_ID\"" : shell_quoted(word));
-  std::string text = "#!/bin/sh\n# edem sweep's job array: task K runs the table's rows K*chunk ... (its chunk).\n";
-  text += fmt::format("#SBATCH --job-name={}\n", shell_quoted("edem-" + fs::path(table.path).stem().string()));
-  text += fmt::format("#SBATCH --array={}\n", array_indices(table, rows, options.chunk));
-  text += fmt::format("#SBATCH --cpus-per-task={}\n#SBATCH --ntasks=1\n", plan.threads);
-  text += fmt::format("#SBATCH --output={}\n", (logs / "%A_%a.out").string());
-  if (!options.partition.empty()) text += fmt::format("#SBATCH --partition={}\n", options.partition);
-  if (!options.time.empty()) text += fmt::format("#SBATCH --time={}\n", options.time);
-  text += line + "\n";
-  const fs::path job = fs::path(plan.out) / "sweep.sbatch";
-  std::ofstream(job) << text;
-  if (!options.submit) {
-    fmt::print("sweep: {} written ({} run{}); submit it with sbatch\n", job.string(), rows.size(), rows.size() == 1 ? "" : "s");
-    return 0;
-  }
-  const auto [status, printed] = capture({"sbatch", "--parsable", job.string()});
-  if (status != 0) {
-    fmt::print(stderr, "edem: sweep: sbatch {} failed (exit status {}): {}\n", job.string(), status, printed);
-    return 1;
-  }
-  const std::string id = printed.substr(0, printed.find_first_of(";\n"));
-  fmt::print("sweep: submitted job {} ({} run{}, {} a task); each task gathers {} as it ends; "
-             "`edem sweep --collect` says what is done\n",
-             id, rows.size(), rows.size() == 1 ? "" : "s", options.chunk, (fs::path(plan.out) / "sweep.csv").string());
-  std::ofstream(fs::path(plan.out) / "slurm" / "job_id") << id << '\n';
-  return 0;
 }
 
 int collect(const SweepTable& table, const std::string& out, const Settings& common) {
@@ -298,20 +214,28 @@ int run_sweep(const SweepOptions& options) {
   std::vector<const SweepRow*> rows;
   RunPlan plan;
   try {
+    if (!options.slurm && options.task < 0 && (!options.partition.empty() || !options.time.empty() || options.chunk != 1))
+      fail("--partition, --time and --chunk are for --slurm");
     table = read_sweep_table(options.table);
     if (!fs::is_regular_file(options.script)) fail("{}: no such script", options.script);
-    check_sweep_table(table, declared_settings(options.script), fs::path(options.script).filename().string(),
-                      options.common);
-    if (options.chunk < 1) fail("--chunk must be 1 or more, got {}", options.chunk);
+    check_sweep_table(table, declared_settings(options.script, options.stdlib_dirs),
+                      fs::path(options.script).filename().string(), options.common);
     out = absolute(options.out.empty() ? default_out(options.table) : options.out);
-    fs::create_directories(out);
     rows = selected_rows(options, table, out);
+    for (const SweepRow* row : rows)  // a run's folder is emptied when it starts: never anything else
+      if (!is_run_folder((fs::path(out) / row->name).string()))
+        fail("{}: row '{}' would run in {}, which holds files of something else than a run: give another --out",
+             table.path, row->name, (fs::path(out) / row->name).string());
     std::error_code ec;
-    plan = RunPlan{.edem = fs::read_symlink("/proc/self/exe", ec).string(),
+    const std::string edem = fs::read_symlink("/proc/self/exe", ec).string();
+    if (ec) fail("cannot find this edem's own path to start the runs with: {}", ec.message());
+    fs::create_directories(out);
+    plan = RunPlan{.edem = edem,
                    .script = absolute(options.script),
                    .out = out,
                    .threads = std::max(1, options.threads),
-                   .common = options.common};
+                   .common = options.common,
+                   .pass_on_signals = true};
   } catch (const std::exception& e) {
     fmt::print(stderr, "edem: sweep: {}\n", e.what());
     return 2;

@@ -8,6 +8,7 @@
 
 #include <atomic>
 #include <string>
+#include <vector>
 
 #include "sweep_table.hpp"
 
@@ -30,6 +31,7 @@ struct SweepOptions {
   std::string partition, time;
   int task = -1;  // the array task to run (the job script's own call): rows task*chunk ...
   const std::atomic<int>* stop = nullptr;  // a signal's number: pass it on to the runs, start no more
+  std::vector<std::string> stdlib_dirs;     // searched first for require "edem.x" (InterpreterOptions)
 };
 
 // The whole sweep; returns the exit status: 0 when every run selected ended ok, 1 when one did

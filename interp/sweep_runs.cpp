@@ -35,7 +35,9 @@ std::string read_text(const fs::path& file) {
 
 // Writes `text` to `file` through a temporary file, so that a reader never sees half of it.
 void write_whole(const fs::path& file, const std::string& text) {
-  const fs::path temporary = file.string() + ".tmp";
+  char host[256] = {};
+  ::gethostname(host, sizeof host - 1);
+  const fs::path temporary = fmt::format("{}.{}.{}.tmp", file.string(), host, ::getpid());
   {
     std::ofstream out(temporary);
     out << text;
@@ -84,8 +86,13 @@ Settings run_settings_of(const SweepRow& row, const Settings& common) {
 // An RAII advisory lock on a file (flock), for the gathering of tasks that end at once.
 class FileLock {
  public:
+  // Where flock is not supported (some network file systems) the gathering goes on unlocked:
+  // each writer's temporary file is its own, and the last rename wins whole.
   explicit FileLock(const fs::path& file) : fd_(::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644)) {
-    if (fd_ >= 0) ::flock(fd_, LOCK_EX);
+    if (fd_ >= 0 && ::flock(fd_, LOCK_EX) != 0) {
+      ::close(fd_);
+      fd_ = -1;
+    }
   }
   ~FileLock() {
     if (fd_ >= 0) ::close(fd_);  // closing releases the lock
@@ -99,28 +106,30 @@ class FileLock {
 
 }  // namespace
 
-RunOutcome run_row(const RunPlan& plan, const SweepRow& row, const std::atomic<int>* stop) {
-  const fs::path folder = fs::path(plan.out) / row.name;
-  fs::create_directories(folder);
-  for (const char* stale : {"run.csv", "result.csv", "error.txt"}) fs::remove(folder / stale);
-  RunOutcome outcome{.status = {}, .seconds = 0.0, .message = {}, .settings = run_settings_of(row, plan.common), .results = {}};
+namespace {
 
-  std::vector<std::string> words = {plan.edem, "--threads", std::to_string(plan.threads), "--progress", "10",
-                                    "--out", folder.string(), "--error-file", (folder / "error.txt").string()};
-  for (const auto& [key, value] : outcome.settings) {
-    words.push_back("--set");
-    words.push_back(key + "=" + value);
-  }
-  words.push_back("run");
-  words.push_back(plan.script);
+// How a run ended: its exit code (128 + N for signal N), or why it could not start.
+struct Ended {
+  int code = 0;
+  std::string not_started;
+};
+
+// Starts edem with `words` in `folder` (its output in log.txt, no terminal input: a run in a
+// process group of its own would stop reading one) and waits for it, passing a signal in `stop`
+// on once when `pass_on` is set.
+Ended spawn_and_wait(std::vector<std::string> words, const fs::path& folder, int threads,
+                     const std::atomic<int>* stop, bool pass_on) {
   std::vector<char*> argv;
   for (std::string& w : words) argv.push_back(w.data());
   argv.push_back(nullptr);
-  // The run's environment: OpenMP held to its share of the cores.
+  // The run's environment: OpenMP held to its share of the cores and bound to none of them (runs
+  // side by side would be bound to the same ones).
   std::vector<std::string> environment;
   for (char** e = environ; *e != nullptr; ++e)
-    if (std::strncmp(*e, "OMP_NUM_THREADS=", 16) != 0) environment.emplace_back(*e);
-  environment.push_back(fmt::format("OMP_NUM_THREADS={}", plan.threads));
+    if (std::strncmp(*e, "OMP_NUM_THREADS=", 16) != 0 && std::strncmp(*e, "OMP_PROC_BIND=", 14) != 0 &&
+        std::strncmp(*e, "OMP_PLACES=", 11) != 0)
+      environment.emplace_back(*e);
+  environment.push_back(fmt::format("OMP_NUM_THREADS={}", threads));
   std::vector<char*> envp;
   for (std::string& e : environment) envp.push_back(e.data());
   envp.push_back(nullptr);
@@ -128,51 +137,97 @@ RunOutcome run_row(const RunPlan& plan, const SweepRow& row, const std::atomic<i
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addchdir_np(&actions, folder.c_str());
+  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
   posix_spawn_file_actions_addopen(&actions, 1, (folder / "log.txt").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   posix_spawn_file_actions_adddup2(&actions, 1, 2);
   posix_spawnattr_t attributes;
   posix_spawnattr_init(&attributes);
   posix_spawnattr_setpgroup(&attributes, 0);  // a terminal's Ctrl-C reaches the sweep alone, which passes it on
   posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
-  const auto started = std::chrono::steady_clock::now();
   pid_t pid = 0;
-  const int spawned = posix_spawn(&pid, plan.edem.c_str(), &actions, &attributes, argv.data(), envp.data());
+  const int spawned = posix_spawn(&pid, argv[0], &actions, &attributes, argv.data(), envp.data());
   posix_spawn_file_actions_destroy(&actions);
   posix_spawnattr_destroy(&attributes);
+  if (spawned != 0)
+    return {.code = 0, .not_started = fmt::format("cannot start {}: {}", words[0], std::error_code(spawned, std::generic_category()).message())};
+  bool passed_on = false;
   int status = 0;
-  if (spawned != 0) {
-    outcome.status = "error";
-    outcome.message = fmt::format("cannot start {}: {}", plan.edem, std::strerror(spawned));
-  } else {
-    bool passed_on = false;
-    while (::waitpid(pid, &status, WNOHANG) == 0) {
-      if (stop != nullptr && stop->load() != 0 && !passed_on) {
-        ::kill(pid, stop->load());
-        passed_on = true;
-      }
-      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  for (;;) {
+    const pid_t waited = ::waitpid(pid, &status, WNOHANG);
+    if (waited == pid) break;
+    if (waited < 0) return {.code = 0, .not_started = fmt::format("lost the run (waitpid: {})", std::error_code(errno, std::generic_category()).message())};
+    if (pass_on && stop != nullptr && stop->load() != 0 && !passed_on) {
+      ::kill(pid, stop->load());
+      passed_on = true;
     }
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  return {.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), .not_started = {}};
+}
+
+// The first line of `text`: an error's headline, without its traceback.
+std::string first_line(const std::string& text) { return text.substr(0, text.find('\n')); }
+
+void classify(const Ended& ended, const fs::path& folder, RunOutcome& outcome) {
+  if (!ended.not_started.empty()) {
+    outcome.status = "error";
+    outcome.message = ended.not_started;
+    return;
+  }
+  const int code = ended.code;
+  const std::string error = first_line(read_text(folder / "error.txt"));
+  if (code == 0) {
+    outcome.status = "ok";
+  } else if (code == 128 + SIGINT || code == 128 + SIGTERM) {
+    outcome.status = "interrupted";
+    outcome.message = error.empty() ? fmt::format("stopped by signal {}", code - 128) : error;
+  } else if (code > 128) {
+    const char* name = sigabbrev_np(code - 128);
+    outcome.status = "crashed";
+    outcome.message = fmt::format("killed by signal {} (SIG{}); its log: {}", code - 128, name != nullptr ? name : "?",
+                                  (folder / "log.txt").string());
+  } else {
+    outcome.status = "error";
+    outcome.message = !error.empty() ? error : fmt::format("exit status {}: {}", code, last_line(read_text(folder / "log.txt")));
+  }
+}
+
+}  // namespace
+
+bool is_run_folder(const std::string& folder) {
+  std::error_code ec;
+  return !fs::exists(folder, ec) || fs::exists(fs::path(folder) / "run.csv", ec) || fs::is_empty(folder, ec);
+}
+
+RunOutcome run_row(const RunPlan& plan, const SweepRow& row, const std::atomic<int>* stop) {
+  const fs::path folder = fs::path(plan.out) / row.name;
+  RunOutcome outcome{.status = {}, .seconds = 0.0, .message = {}, .settings = run_settings_of(row, plan.common), .results = {}};
+  const auto started = std::chrono::steady_clock::now();
+  try {
+    // A run starts afresh, so that nothing of an earlier one is read as its own (only a run's
+    // folder is emptied: the sweep checks that before any run).
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    std::vector<std::string> words = {plan.edem, "--threads", std::to_string(plan.threads), "--progress", "10",
+                                      "--out", folder.string(), "--error-file", (folder / "error.txt").string()};
+    for (const auto& [key, value] : outcome.settings) {
+      words.push_back("--set");
+      words.push_back(key + "=" + value);
+    }
+    words.push_back("run");
+    words.push_back(plan.script);
+    classify(spawn_and_wait(words, folder, plan.threads, stop, plan.pass_on_signals), folder, outcome);
+    outcome.results = read_result(folder / "result.csv");
+  } catch (const std::exception& e) {  // a full disk, a folder that cannot be made: this run's error
+    outcome.status = "error";
+    outcome.message = e.what();
   }
   outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  if (spawned == 0) {
-    const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    const std::string error = last_line(read_text(folder / "error.txt"));
-    if (code == 0) {
-      outcome.status = "ok";
-    } else if (code == 128 + SIGINT || code == 128 + SIGTERM) {
-      outcome.status = "interrupted";
-      outcome.message = error.empty() ? fmt::format("stopped by signal {}", code - 128) : error;
-    } else if (code > 128) {
-      outcome.status = "crashed";
-      outcome.message = fmt::format("killed by signal {} ({}); its log: {}", code - 128, strsignal(code - 128),
-                                    (folder / "log.txt").string());
-    } else {
-      outcome.status = "error";
-      outcome.message = !error.empty() ? error : fmt::format("exit status {}: {}", code, last_line(read_text(folder / "log.txt")));
-    }
+  try {
+    write_whole(folder / "run.csv", outcome_text(outcome));
+  } catch (const std::exception& e) {
+    outcome.message += fmt::format(" (its outcome could not be kept: {})", e.what());
   }
-  outcome.results = read_result(folder / "result.csv");
-  write_whole(folder / "run.csv", outcome_text(outcome));
   return outcome;
 }
 

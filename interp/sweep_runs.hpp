@@ -28,7 +28,14 @@ struct RunPlan {
   std::string out;     // the sweep's folder, absolute
   int threads = 1;
   Settings common;  // --set for every run
+  // Pass a stop signal on to the run: locally, where each run has a process group of its own;
+  // not in a Slurm task, whose runs Slurm signals itself (a second signal would end a run
+  // before it saves).
+  bool pass_on_signals = true;
 };
+
+// Whether `folder` may be emptied for a run: missing, empty, or a run's (it has a run.csv).
+bool is_run_folder(const std::string& folder);
 
 // Runs `row` and waits for it; a signal number in `stop` is passed on to it once (it then saves
 // its model and ends). Writes and returns the outcome.

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <optional>
@@ -23,8 +24,11 @@ bool is_name(const std::string& key) {
                      [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
 }
 
+// A name for a run's folder under the sweep's: plain characters, not too long for a file
+// system, and none of the sweep's own files (sweep.csv, sweep.sbatch, slurm/).
 bool folder_safe(const std::string& name) {
-  return !name.empty() && name != "." && name != ".." &&
+  return !name.empty() && name != "." && name != ".." && name.size() <= 200 && name != "slurm" &&
+         name.rfind("sweep", 0) != 0 &&
          std::all_of(name.begin(), name.end(), [](char c) {
            return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.' || c == '+';
          });
@@ -78,6 +82,7 @@ SweepTable read_sweep_table(const std::string& path) {
   std::vector<std::string> above;  // the previous row's values, for `=`
   std::string text;
   for (int line = 1; std::getline(in, text); ++line) {
+    if (line == 1 && text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // a spreadsheet's byte-order mark
     if (!csv) {
       if (trim(text).empty() || trim(text)[0] == '#') continue;
       csv = csv_by_name || text.find(',') != std::string::npos;
@@ -97,6 +102,9 @@ SweepTable read_sweep_table(const std::string& path) {
         if (!column.empty() && column[0] == '!')
           fail("{}:{}: column '{}': environment columns (YADE's !NAME) are not read; give the run's threads "
                "with edem sweep --threads", path, line, column);
+        if (column == "status" || column == "seconds" || column == "message")
+          fail("{}:{}: column '{}' is one the sweep writes itself (name, status, seconds, message); a setting "
+               "of that name cannot be swept", path, line, column);
         if (!is_name(column))
           fail("{}:{}: column {}: '{}' is not a setting's name (letters, digits, _; not a digit first)", path,
                line, c + 1, column);
@@ -129,12 +137,15 @@ SweepTable read_sweep_table(const std::string& path) {
     }
     if (name_column < 0) row.name = row.settings.empty() ? fmt::format("row-{}", table.rows.size() + 1) : name_from(row.settings);
     if (!folder_safe(row.name))
-      fail("{}:{}: name '{}' cannot name a folder: use letters, digits and _ - . + only", path, line, row.name);
+      fail("{}:{}: name '{}' cannot name a run's folder: use letters, digits and _ - . + only, at most 200 of "
+           "them, and not slurm or sweep... (the sweep's own files)", path, line, row.name);
     for (const SweepRow& earlier : table.rows)
       if (earlier.name == row.name)
         fail("{}:{}: the name '{}' is row {}'s (line {}) too: {}", path, line, row.name,
              &earlier - table.rows.data() + 1, earlier.line,
-             name_column >= 0 ? "each run needs a name of its own" : "the two rows are the same run");
+             name_column >= 0 ? "each run needs a name of its own"
+             : earlier.settings == row.settings ? "the two rows are the same run"
+                                                : "give the runs names of their own (a name column)");
     table.rows.push_back(std::move(row));
   }
   if (header.empty()) fail("{}: the table is empty: give a line of column names, then a row per run", path);
@@ -166,8 +177,8 @@ void check_sweep_table(const SweepTable& table, const std::vector<DeclaredSettin
     const DeclaredSetting& d = *declaration(key);
     if (d.type == "number") {
       char* end = nullptr;
-      std::strtod(value.c_str(), &end);
-      if (end == value.c_str() || *end != '\0')
+      const double number = std::strtod(value.c_str(), &end);
+      if (end == value.c_str() || *end != '\0' || !std::isfinite(number))
         fail("{}: '{}' is not a number ({}'s default is {})", where, value, key, d.value);
     } else if (d.type == "boolean" && value != "true" && value != "false") {
       fail("{}: '{}' is not true or false ({}'s default is {})", where, value, key, d.value);
