@@ -16,7 +16,7 @@
 --             solver, edem.yield_pass) or continuum (prepass{}, joints tied) [jointed]
 --   judge     equilibrium (cracks judged on each step's solved state, in rounds until none
 --             breaks) or cycles (every 10 cycles while the rock moves, the seed's way) [equilibrium]
---   release   cycles over which a step's load comes off [100 judged at equilibrium, else 20000]
+--   release   cycles over which a step's load comes off [0: 100 judged at equilibrium, else 20000]
 --   release_offset  cycles added to release [0]
 --   damping   local (Itasca's, 0.8: UDEC's for static problems) or adaptive (viscous, 2 omega,
 --             quicker, but a sliding block runs on barely damped) in the prepass and the steps [local]
@@ -24,7 +24,7 @@
 --   stages    how many of the 16 steps to dig [16]
 --   similar   deg: crackseed{ auto }'s grouping angle [45]
 --   min_angle deg: crackseed{ auto }'s sharpest corner of a cut with a joint [30; 0: every cut]
---   origin_x, origin_y  m: a point every group's cuts pass through [each group's centroid]
+--   origin_x, origin_y  m: a point every group's cuts pass through [centroid: each group's own]
 --   by_mode   true: crackseed{ auto }'s groups keep to one failure mode [false]
 --   muck      loose (blocks held by nothing, rock that fell), moved (moved 1 m) or opening (moved
 --             1 m into the opening) are mucked out every 200 cycles [loose]
@@ -36,7 +36,8 @@
 --   fracture_energy, shear_fracture_energy  J/m^2: broken sections soften as cohesive cracks
 --             instead of becoming joints at once [0, 0]
 --   table     CSV file the result row is appended to [case_results.csv]; a row after each step
---             goes to NAME_steps.csv; an existing table must have this script's columns
+--             goes to NAME_steps.csv; an existing table must have this script's columns. The
+--             row is also the run's result{} (result.csv), which edem sweep gathers
 --   threads   recorded in the table [OMP_NUM_THREADS, else default]
 --   strict    true: a step stopped by an error fails the script [false]
 -- Steps: the region with the case's joints and the cavern's steps cut as regions; the prepass
@@ -56,69 +57,53 @@ local rockbolts = require "edem.bolts"
 local yield_pass = require "edem.yield_pass"
 local shapes = require "edem.shapes"
 
-local function setting(key, default)
-  local v = arg and arg[key]
-  if v == nil then return default end
-  return v
+local given = settings{
+  case = 3, depth = 158, bolts = "none", bolt_at = "solved", set = "P", prepass = "jointed",
+  judge = "equilibrium", release = 0, release_offset = 0, damping = "local", edge = 1.5, far = 10,
+  stages = 16, similar = 45, min_angle = 30, origin_x = "centroid", origin_y = "centroid",
+  by_mode = false, muck = "loose", first = "left", mirror = false, judge_most = 0, judge_radius = 0,
+  tolerance = 7e-4, fracture_energy = 0, shear_fracture_energy = 0, table = "case_results.csv",
+  threads = os.getenv("OMP_NUM_THREADS") or "default", strict = false,
+}
+-- One of `choices`, or an error naming the setting.
+local function one_of(key, choices)
+  for _, c in ipairs(choices) do if given[key] == c then return given[key] end end
+  local list = table.concat(choices, ", ", 1, #choices - 1) .. " or " .. choices[#choices]
+  error(("%s must be %s, got %s"):format(key, list, given[key]), 0)
 end
-local CASE, DEPTH, BOLTS = setting("case", 3), setting("depth", 158), tostring(setting("bolts", "none"))
-local SET, EDGE, FAR = tostring(setting("set", "P")), setting("edge", 1.5), setting("far", 10)
-if SET ~= "P" and SET ~= "S" and SET ~= "M" then error(("set must be P, S or M, got %s"):format(SET), 0) end
-local JUDGE_AT = tostring(setting("judge", "equilibrium"))
-if JUDGE_AT ~= "cycles" and JUDGE_AT ~= "equilibrium" then
-  error(("judge must be cycles or equilibrium, got %s"):format(JUDGE_AT), 0)
-end
-local STAGES, RELEASE_OFFSET = setting("stages", 16), setting("release_offset", 0)
-local RELEASE = setting("release", JUDGE_AT == "equilibrium" and 100 or 20000) + RELEASE_OFFSET
+local CASE, DEPTH, BOLTS = given.case, given.depth, one_of("bolts", { "none", "1", "2" })
+local SET, EDGE, FAR = one_of("set", { "P", "S", "M" }), given.edge, given.far
+local JUDGE_AT = one_of("judge", { "equilibrium", "cycles" })
+local STAGES, RELEASE_OFFSET = given.stages, given.release_offset
+local RELEASE = (given.release ~= 0 and given.release or (JUDGE_AT == "equilibrium" and 100 or 20000)) + RELEASE_OFFSET
 if not (math.type(RELEASE) == "integer" and RELEASE >= 1) then
   error(("release + release_offset must be a whole number of cycles >= 1, got %s"):format(RELEASE), 0)
 end
-local SIMILAR, TOLERANCE = setting("similar", 45), setting("tolerance", 7e-4)
-local MIN_ANGLE = setting("min_angle", 30)
-local JUDGE_MOST = setting("judge_most", 0)
-local JUDGE_RADIUS = setting("judge_radius", 0)
-local ORIGIN_X, ORIGIN_Y = setting("origin_x", nil), setting("origin_y", nil)
-local FRACTURE_ENERGY, SHEAR_FRACTURE_ENERGY = setting("fracture_energy", 0), setting("shear_fracture_energy", 0)
-for key, value in pairs({ fracture_energy = FRACTURE_ENERGY, shear_fracture_energy = SHEAR_FRACTURE_ENERGY }) do
-  if type(value) ~= "number" or value < 0 then
-    error(("%s must be a number >= 0 (J/m^2), got %s"):format(key, value), 0)
-  end
+local SIMILAR, TOLERANCE, MIN_ANGLE = given.similar, given.tolerance, given.min_angle
+local JUDGE_MOST, JUDGE_RADIUS = given.judge_most, given.judge_radius
+local FRACTURE_ENERGY, SHEAR_FRACTURE_ENERGY = given.fracture_energy, given.shear_fracture_energy
+for _, key in ipairs{ "fracture_energy", "shear_fracture_energy" } do
+  if given[key] < 0 then error(("%s must be a number >= 0 (J/m^2), got %s"):format(key, given[key]), 0) end
 end
 local COHESIVE = FRACTURE_ENERGY > 0 or SHEAR_FRACTURE_ENERGY > 0
-local MUCK = tostring(setting("muck", "loose"))
-if MUCK ~= "loose" and MUCK ~= "moved" and MUCK ~= "opening" then
-  error(("muck must be loose, moved or opening, got %s"):format(MUCK), 0)
+local MUCK = one_of("muck", { "loose", "moved", "opening" })
+local DAMPING = one_of("damping", { "adaptive", "local" })
+local FIRST = one_of("first", { "left", "right" })
+local BOLT_AT = one_of("bolt_at", { "solved", "dug" })
+local MIRROR, BY_MODE = given.mirror, given.by_mode
+local ORIGIN_X, ORIGIN_Y  -- nil: each group's centroid
+if (given.origin_x == "centroid") ~= (given.origin_y == "centroid") then
+  error("give origin_x and origin_y together, or neither", 0)
 end
-local DAMPING = tostring(setting("damping", "local"))
-if DAMPING ~= "adaptive" and DAMPING ~= "local" then
-  error(("damping must be adaptive or local, got %s"):format(DAMPING), 0)
-end
-local FIRST = tostring(setting("first", "left"))
-if FIRST ~= "left" and FIRST ~= "right" then
-  error(("first must be left or right, got %s"):format(FIRST), 0)
-end
-local BOLT_AT = tostring(setting("bolt_at", "solved"))
-if BOLT_AT ~= "solved" and BOLT_AT ~= "dug" then
-  error(("bolt_at must be solved or dug, got %s"):format(BOLT_AT), 0)
-end
-local MIRROR = setting("mirror", false)
-if type(MIRROR) ~= "boolean" then
-  error(("mirror must be true or false, got %s"):format(MIRROR), 0)
-end
-local BY_MODE = setting("by_mode", false)
-if type(BY_MODE) ~= "boolean" then
-  error(("by_mode must be true or false, got %s"):format(BY_MODE), 0)
-end
-if (ORIGIN_X == nil) ~= (ORIGIN_Y == nil) then error("give origin_x and origin_y together, or neither", 0) end
-for key, value in pairs({ origin_x = ORIGIN_X, origin_y = ORIGIN_Y }) do
-  if type(value) ~= "number" then error(("%s must be a number (m), got %s"):format(key, value), 0) end
+if given.origin_x ~= "centroid" then
+  for _, key in ipairs{ "origin_x", "origin_y" } do
+    if tonumber(given[key]) == nil then error(("%s must be a number (m), got %s"):format(key, given[key]), 0) end
+  end
+  ORIGIN_X, ORIGIN_Y = tonumber(given.origin_x), tonumber(given.origin_y)
 end
 local ORIGIN = ORIGIN_X and { ORIGIN_X, ORIGIN_Y } or nil
-local PREPASS = tostring(setting("prepass", "jointed"))
-if PREPASS ~= "jointed" and PREPASS ~= "continuum" then
-  error(("prepass must be jointed or continuum, got %s"):format(PREPASS), 0)
-end
-local TABLE = tostring(setting("table", "case_results.csv"))
+local PREPASS = one_of("prepass", { "jointed", "continuum" })
+local TABLE = given.table
 local STEPS_TABLE = TABLE:gsub("%.csv$", "") .. "_steps.csv"  -- a row after each step
 -- The result row's columns. A table that exists already is appended to, so it must have them,
 -- or its rows would not line up under its header (a table an older case.lua wrote).
@@ -142,10 +127,9 @@ for _, file in ipairs{ TABLE, STEPS_TABLE } do
   end
 end
 -- For the table only: the threads it ran on, as the caller set them (edem --threads N --set threads=N).
-local THREADS = tostring(setting("threads", os.getenv("OMP_NUM_THREADS") or "default"))
-assert(BOLTS == "none" or BOLTS == "1" or BOLTS == "2", "bolts must be none, 1 or 2, got " .. BOLTS)
+local THREADS = given.threads
 local tag = ("case%d_%s_h%g_%s"):format(CASE, SET, DEPTH, BOLTS == "none" and "none" or "pattern" .. BOLTS)
--- Runs that differ only in a nudged release (study.sh --members) keep their pictures apart.
+-- Runs that differ only in a nudged release keep their pictures apart.
 if RELEASE_OFFSET ~= 0 then tag = tag .. ("_release%d"):format(RELEASE) end
 if FIRST == "right" then tag = tag .. "_right_first" end
 if MIRROR then tag = tag .. "_mirror" end
@@ -500,8 +484,13 @@ local function result_row()
                 '"' .. stopped:gsub('"', "'") .. '"', '"' .. points_fallen() .. '"', EDGE, FAR, FIRST, MUCK,
                 DAMPING, MIRROR, ("%.2f"):format(r.length), ORIGIN_X or "", ORIGIN_Y or "", JUDGE_AT, judgments, PREPASS,
                 BOLT_AT }
-  for i, v in ipairs(row) do row[i] = tostring(v) end
-  return r, table.concat(row, ",")
+  local named = {}  -- for result{}: each column's value, unquoted
+  for i, v in ipairs(row) do
+    row[i] = tostring(v)
+    named[columns[i]] = row[i]:match('^"(.*)"$') or row[i]
+  end
+  named.seconds = nil  -- edem sweep times each run itself
+  return r, table.concat(row, ","), named
 end
 local function append_row(file, line)
   local existing = io.open(file, "r")
@@ -574,8 +563,9 @@ for i, s in ipairs(c.stages) do
 end
 cancel(mucking)
 
-local r, line = result_row()
+local r, line, named = result_row()
 append_row(TABLE, line)
+result(named)
 print(("%s: %d steps, %d cracks (%d tension, %d shear; %d left, %d right), crown %.4f m, walls in %.4f (left) "
        .. "and %.4f m (right), 5 m behind their faces %.4f and %.4f m, 15 m behind %.4f and %.4f m, "
        .. "10 m above the crown left / right half %.4f / %.4f m, %d contacts slipping, %d fallen, "
@@ -634,4 +624,4 @@ do
   for i, x in ipairs(final_profile.x) do f:write(("%.3f,%.6f\n"):format(x, final_profile.value[i])) end
   f:close()
 end
-if setting("strict", false) == true and stopped ~= "" then error("stopped at " .. stopped, 0) end
+if given.strict and stopped ~= "" then error("stopped at " .. stopped, 0) end

@@ -1,6 +1,6 @@
 -- The seed's Figure 12: the vertical displacement 10 m above the crown of Case 3 at the
 -- end, without bolts and with bolt patterns 1 and 2, on one chart, from the profiles
--- scripts/paper/case.lua writes (TAG_profile.csv). study.sh draws it in its output folder once the
+-- scripts/paper/case.lua writes (TAG_profile.csv). study.sh draws it in the study's folder once the
 -- three runs are there.
 --
 --   edem --set none=A.csv --set pattern1=B.csv --set pattern2=C.csv run scripts/paper/figure12.lua

@@ -1,13 +1,16 @@
 -- The seed paper's trends checked in the rows scripts/paper/case.lua wrote.
 --
---   edem --set tables=study.csv --set markdown=trends.md run scripts/paper/trends.lua
+--   edem --set sweep=paper-study --set markdown=trends.md run scripts/paper/trends.lua
 --
 -- Settings (--set KEY=VALUE):
+--   sweep     the folder of an edem sweep of case.lua (scripts/paper/study.sh): its gathered rows,
+--             or with step given each run's rows after its steps; instead of tables
 --   tables    CSV files of case.lua's rows, separated by commas [case_results.csv]; rows of one case
---             (case, set, depth, bolts) with different releases are its members (study.sh
---             --members), and so is its mirror image (case.lua's mirror = true: study.sh
---             --mirror), read with left and right swapped back, so that right is the side the
---             joints dip towards in every row; where one member has several rows the last one counts
+--             (case, set, depth, bolts) with different releases are its members (case.lua's
+--             release_offset), and so is its mirror image (case.lua's mirror = true: the
+--             _mirror rows of study_members.csv), read with left and right swapped back, so
+--             that right is the side the joints dip towards in every row; where one member has
+--             several rows the last one counts
 --   set       the parameter set whose rows are compared [P]
 --   depth     the depth of the comparisons that are not about depth [158]
 --   step      N: compare each run's row after step N (the tables are case.lua's _steps files);
@@ -24,8 +27,8 @@
 -- behind them the same way, and is not shown only where neither settles it.
 -- With several members a trend holds only if it holds for every pairing of them; where it holds
 -- for some only, it is "within the spread", and fails. judge = means judges each trend on the
--- members' means instead, each member a fair discretisation of the same problem (study.sh
--- --mirror, --origins): "A above B" holds where a one-sided Welch t of mean(A) - mean(B) reaches
+-- members' means instead, each member a fair discretisation of the same problem (the mirror
+-- image, the cuts through another point: study_members.csv, study_ensemble.csv): "A above B" holds where a one-sided Welch t of mean(A) - mean(B) reaches
 -- the Student quantile at 95 % for its degrees of freedom, fails where -t does, and is "not
 -- resolved" (which does not hold) otherwise; a trend within one run (tension against shear, one
 -- wall against the other) takes the members' differences (a paired t), and so do the bolts' trends,
@@ -77,12 +80,37 @@ local function swap_sides(row)
   end
 end
 
--- Per case key, per member (the run's release: study.sh --members runs each case several times,
+-- Per case key, per member (the run's release: a case may be run several times,
 -- the releases a few cycles apart; "RELEASE mirrored" for a mirror image), the rows in the order
 -- read.
 local rows = {}
 local function key(case, depth, bolts) return ("%s/%g/%s"):format(case, depth, bolts) end
-for file in tostring(setting("tables", "case_results.csv")):gmatch("[^,]+") do
+-- sweep = DIR: the rows edem sweep gathered there (DIR/sweep.csv), or with step given each run's
+-- rows after its steps (DIR/NAME/case_results_steps.csv, NAME from sweep.csv's name column).
+local function sweep_tables(dir)
+  local f = io.open(dir .. "/sweep.csv", "r")
+  if not f then error(("trends: no %s/sweep.csv: run edem sweep (or --collect) first"):format(dir), 0) end
+  if setting("step", nil) == nil then
+    f:close()
+    return dir .. "/sweep.csv"
+  end
+  local files = {}
+  f:read("l")
+  for line in f:lines() do
+    local name = fields(line)[1]
+    local steps = ("%s/%s/case_results_steps.csv"):format(dir, name)
+    local exists = io.open(steps, "r")
+    if exists then
+      exists:close()
+      files[#files + 1] = steps
+    end
+  end
+  f:close()
+  return table.concat(files, ",")
+end
+local SWEEP = setting("sweep", nil)
+local TABLES = SWEEP and sweep_tables(tostring(SWEEP)) or tostring(setting("tables", "case_results.csv"))
+for file in TABLES:gmatch("[^,]+") do
   local f = io.open(file, "r")
   if not f then error(("trends: cannot read the table %s"):format(file), 0) end
   local names
@@ -95,7 +123,7 @@ for file in tostring(setting("tables", "case_results.csv")):gmatch("[^,]+") do
       for i, name in ipairs(names) do row[name] = tonumber(values[i]) or values[i] end
       if row.set == SET then
         local k, member = key(row.case, row.depth, row.bolts), row.release or "default"
-        if type(row.origin_x_m) == "number" then  -- study.sh --origins: the cuts through a point of its own
+        if type(row.origin_x_m) == "number" then  -- the cuts through a point of its own (origin_x, origin_y)
           member = ("%s origin %g %g"):format(member, row.origin_x_m, row.origin_y_m)
         end
         if row.mirror == "true" then

@@ -1,8 +1,8 @@
 -- scripts/paper/trends.lua with judge = means: each trend judged on the members' means by a
--- one-sided Welch t at 95 % (study.sh --origins, --mirror). The fixture (trends_means.csv) has three
--- members of each of the study's seven runs, all at release 100, told apart by the point their
--- cuts pass through (none, (1.22, 0.34), (0.05, 3.07)); its numbers are made up so that each t
--- below can be worked by hand. The bolted runs of a member share its mesh and cuts, so the bolts'
+-- one-sided Welch t at 95 % (study_members.csv: the mirror image, the cuts through another
+-- point). The fixture (trends_means.csv) has three members of each of the study's seven runs,
+-- all at release 100, told apart by the point their cuts pass through (none, (1.22, 0.34),
+-- (0.05, 3.07)); its numbers are made up so that each t below can be worked by hand. The bolted runs of a member share its mesh and cuts, so the bolts'
 -- trends are paired member by member.
 local here = debug.getinfo(1, "S").source:match("^@(.*[/\\])") or "./"
 local check = dofile(here .. "trends_check.lua")

@@ -1,4 +1,4 @@
--- scripts/paper/trends.lua over several runs of each case (study.sh --members): a trend holds only
+-- scripts/paper/trends.lua over several runs of each case (their releases a few cycles apart): a trend holds only
 -- if it holds for every pairing of the runs, fails if for none, is "within the spread" otherwise,
 -- and is "not shown" when a run of a case it needs stopped, or a measuring point it reads fell with
 -- its block. The fixture's numbers are made up to give each verdict (trends_members.csv: two runs
@@ -59,7 +59,7 @@ found, text = verdicts(here .. "trends_members.csv," .. here .. "trends_members_
 expect(found, "The side the joints dip towards (right) moves more (Case 3)", "holds")
 expect(found, "The side the joints dip towards (right) moves more (Case 1)", "within the spread (1 of 3 pairings)")
 
--- Mirror images of Cases 2 and 3 (study.sh --mirror; case.lua's mirror = true): members of their
+-- Mirror images of Cases 2 and 3 (study_members.csv; case.lua's mirror = true): members of their
 -- cases, read with left and right swapped back. Case 3's mirror has fewer cracks than any Case 2
 -- run (6 of 9 pairings). Its left wall, the side its joints dip towards, moved at least 0.45 m,
 -- its point 5 m in fallen, against its right wall's 0.20 m: swapped, right above left is settled
