@@ -261,14 +261,17 @@ Gathered gather(const std::string& out, const SweepTable& table, const Settings&
     ++(o->status == "ok" ? counts.ok : counts.failed);
     ended.emplace_back(&row, std::move(*o));
   }
+  // The settings' columns: the table's, then those --set gave every run.
+  std::vector<std::string> setting_columns = table.columns;
+  for (const auto& [key, value] : common) setting_columns.push_back(key);
   std::vector<std::string> result_columns;  // in the order they first appear
   for (const auto& [row, o] : ended)
     for (const auto& [key, value] : o.results)
-      if (std::find(table.columns.begin(), table.columns.end(), key) == table.columns.end() &&
+      if (std::find(setting_columns.begin(), setting_columns.end(), key) == setting_columns.end() &&
           std::find(result_columns.begin(), result_columns.end(), key) == result_columns.end())
         result_columns.push_back(key);
   std::vector<std::string> header = {"name"};
-  header.insert(header.end(), table.columns.begin(), table.columns.end());
+  header.insert(header.end(), setting_columns.begin(), setting_columns.end());
   header.insert(header.end(), {"status", "seconds"});
   header.insert(header.end(), result_columns.begin(), result_columns.end());
   header.push_back("message");
@@ -279,9 +282,9 @@ Gathered gather(const std::string& out, const SweepTable& table, const Settings&
       return it == pairs.end() ? nullptr : &it->second;
     };
     std::vector<std::string> line = {row->name};
-    for (const std::string& column : table.columns) {
+    for (const std::string& column : setting_columns) {
       const std::string* reported = value_of(o.results, column);
-      line.push_back(reported != nullptr ? *reported : *value_of(row->settings, column));
+      line.push_back(reported != nullptr ? *reported : *value_of(o.settings, column));
     }
     line.push_back(o.status);
     line.push_back(fmt::format("{:.1f}", o.seconds));

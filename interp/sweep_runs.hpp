@@ -49,8 +49,9 @@ struct Gathered {
 };
 
 // Writes out/sweep.csv from the outcomes there (under a lock, for tasks ending at once on a
-// cluster): name, the table's columns, status, seconds, the results' columns, message. A result
-// named like a setting fills that setting's column.
+// cluster): name, the table's columns and those of --set for every run, status, seconds, the
+// results' columns, message. A result named like a setting fills that setting's column (the
+// value the script used).
 Gathered gather(const std::string& out, const SweepTable& table, const Settings& common);
 
 }  // namespace edem

@@ -199,6 +199,15 @@ TEST_F(Sweep, ResumeAfterAKillRunsOnlyTheRowsWithoutAResult) {
   EXPECT_TRUE(contains(nothing.out, "every run has its outcome already")) << nothing.out;
 }
 
+TEST_F(Sweep, ASettingForEveryRunIsAColumnToo) {
+  write("table.csv", "name,height\na,1\n");
+  const Outcome r = edem("sweep --set cycles=100 --out runs table.csv settle.lua");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto rows = rows_of(gathered());
+  EXPECT_EQ(rows[0][2], "cycles");
+  EXPECT_EQ(rows[1][2], "100");
+}
+
 TEST_F(Sweep, AFolderThatIsNotARunsIsNeverEmptied) {
   write("table.csv", "name,height\nsrc,1\n");
   fs::create_directories(dir_ / "runs" / "src");
