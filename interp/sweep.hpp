@@ -16,12 +16,12 @@ namespace edem {
 
 struct SweepOptions {
   std::string table, script;
-  std::string out;   // "": TABLE's name without its extension, and "_sweep"
-  int jobs = 0;      // runs at a time; 0: as many as the cores hold at `threads` each
-  int threads = 1;   // each run's threads
-  bool resume = false;  // run only the rows without an ok outcome of their settings
-  std::string only;     // run this row alone
-  bool collect = false; // run nothing: gather what the runs left, say what is missing
+  std::string out;       // "": TABLE's name without its extension, and "_sweep"
+  int jobs = 0;          // runs at a time; 0: as many as the cores hold at `threads` each
+  int threads = 1;       // each run's threads
+  bool resume = false;   // run only the rows without an ok outcome of their settings
+  std::string only;      // run this row alone
+  bool collect = false;  // run nothing: gather what the runs left, say what is missing
   bool quiet = false;
   Settings common;  // --set for every run
   // Slurm: write a job-array script (one task a `chunk` of rows) and submit it with sbatch.
@@ -30,8 +30,9 @@ struct SweepOptions {
   int chunk = 1;
   std::string partition, time;
   int task = -1;  // the array task to run (the job script's own call): rows task*chunk ...
-  const std::atomic<int>* stop = nullptr;  // a signal's number: pass it on to the runs, start no more
-  std::vector<std::string> stdlib_dirs;     // searched first for require "edem.x" (InterpreterOptions)
+  // A signal's number: pass it on to the runs, start no more.
+  const std::atomic<int>* stop = nullptr;
+  std::vector<std::string> stdlib_dirs;  // searched first for require "edem.x" (InterpreterOptions)
 };
 
 // The whole sweep; returns the exit status: 0 when every run selected ended ok, 1 when one did

@@ -54,7 +54,8 @@ Settings read_result(const fs::path& file) {
   const auto keys = csv_fields(header);
   const auto texts = csv_fields(values);
   Settings result;
-  for (size_t i = 0; i < keys.size() && i < texts.size(); ++i) result.emplace_back(keys[i], texts[i]);
+  for (size_t i = 0; i < keys.size() && i < texts.size(); ++i)
+    result.emplace_back(keys[i], texts[i]);
   return result;
 }
 
@@ -63,7 +64,8 @@ std::string last_line(const std::string& text) {
   const size_t end = text.find_last_not_of("\n ");
   if (end == std::string::npos) return {};
   const size_t start = text.rfind('\n', end);
-  return text.substr(start == std::string::npos ? 0 : start + 1, end - (start == std::string::npos ? 0 : start + 1) + 1);
+  return text.substr(start == std::string::npos ? 0 : start + 1,
+                     end - (start == std::string::npos ? 0 : start + 1) + 1);
 }
 
 // run.csv: one "kind,key,value" line each (setting, result; status, seconds, message).
@@ -88,7 +90,8 @@ class FileLock {
  public:
   // Where flock is not supported (some network file systems) the gathering goes on unlocked:
   // each writer's temporary file is its own, and the last rename wins whole.
-  explicit FileLock(const fs::path& file) : fd_(::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644)) {
+  explicit FileLock(const fs::path& file)
+      : fd_(::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644)) {
     if (fd_ >= 0 && ::flock(fd_, LOCK_EX) != 0) {
       ::close(fd_);
       fd_ = -1;
@@ -126,8 +129,8 @@ Ended spawn_and_wait(std::vector<std::string> words, const fs::path& folder, int
   // side by side would be bound to the same ones).
   std::vector<std::string> environment;
   for (char** e = environ; *e != nullptr; ++e)
-    if (std::strncmp(*e, "OMP_NUM_THREADS=", 16) != 0 && std::strncmp(*e, "OMP_PROC_BIND=", 14) != 0 &&
-        std::strncmp(*e, "OMP_PLACES=", 11) != 0)
+    if (std::strncmp(*e, "OMP_NUM_THREADS=", 16) != 0 &&
+        std::strncmp(*e, "OMP_PROC_BIND=", 14) != 0 && std::strncmp(*e, "OMP_PLACES=", 11) != 0)
       environment.emplace_back(*e);
   environment.push_back(fmt::format("OMP_NUM_THREADS={}", threads));
   std::vector<char*> envp;
@@ -138,35 +141,47 @@ Ended spawn_and_wait(std::vector<std::string> words, const fs::path& folder, int
   posix_spawn_file_actions_init(&actions);
   posix_spawn_file_actions_addchdir_np(&actions, folder.c_str());
   posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, 1, (folder / "log.txt").c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, 1, (folder / "log.txt").c_str(),
+                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
   posix_spawn_file_actions_adddup2(&actions, 1, 2);
   posix_spawnattr_t attributes;
   posix_spawnattr_init(&attributes);
-  posix_spawnattr_setpgroup(&attributes, 0);  // a terminal's Ctrl-C reaches the sweep alone, which passes it on
+  posix_spawnattr_setpgroup(&attributes,
+                            0);  // a terminal's Ctrl-C reaches the sweep alone, which passes it on
   posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
   pid_t pid = 0;
   const int spawned = posix_spawn(&pid, argv[0], &actions, &attributes, argv.data(), envp.data());
   posix_spawn_file_actions_destroy(&actions);
   posix_spawnattr_destroy(&attributes);
   if (spawned != 0)
-    return {.code = 0, .not_started = fmt::format("cannot start {}: {}", words[0], std::error_code(spawned, std::generic_category()).message())};
+    return {
+        .code = 0,
+        .not_started = fmt::format("cannot start {}: {}", words[0],
+                                   std::error_code(spawned, std::generic_category()).message())};
   bool passed_on = false;
   int status = 0;
   for (;;) {
     const pid_t waited = ::waitpid(pid, &status, WNOHANG);
     if (waited == pid) break;
-    if (waited < 0) return {.code = 0, .not_started = fmt::format("lost the run (waitpid: {})", std::error_code(errno, std::generic_category()).message())};
+    if (waited < 0)
+      return {
+          .code = 0,
+          .not_started = fmt::format("lost the run (waitpid: {})",
+                                     std::error_code(errno, std::generic_category()).message())};
     if (pass_on && stop != nullptr && stop->load() != 0 && !passed_on) {
       ::kill(pid, stop->load());
       passed_on = true;
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
-  return {.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), .not_started = {}};
+  return {.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status),
+          .not_started = {}};
 }
 
 // The first line of `text`: an error's headline, without its traceback.
-std::string first_line(const std::string& text) { return text.substr(0, text.find('\n')); }
+std::string first_line(const std::string& text) {
+  return text.substr(0, text.find('\n'));
+}
 
 void classify(const Ended& ended, const fs::path& folder, RunOutcome& outcome) {
   if (!ended.not_started.empty()) {
@@ -184,11 +199,13 @@ void classify(const Ended& ended, const fs::path& folder, RunOutcome& outcome) {
   } else if (code > 128) {
     const char* name = sigabbrev_np(code - 128);
     outcome.status = "crashed";
-    outcome.message = fmt::format("killed by signal {} (SIG{}); its log: {}", code - 128, name != nullptr ? name : "?",
-                                  (folder / "log.txt").string());
+    outcome.message = fmt::format("killed by signal {} (SIG{}); its log: {}", code - 128,
+                                  name != nullptr ? name : "?", (folder / "log.txt").string());
   } else {
     outcome.status = "error";
-    outcome.message = !error.empty() ? error : fmt::format("exit status {}: {}", code, last_line(read_text(folder / "log.txt")));
+    outcome.message = !error.empty() ? error
+                                     : fmt::format("exit status {}: {}", code,
+                                                   last_line(read_text(folder / "log.txt")));
   }
 }
 
@@ -196,33 +213,43 @@ void classify(const Ended& ended, const fs::path& folder, RunOutcome& outcome) {
 
 bool is_run_folder(const std::string& folder) {
   std::error_code ec;
-  return !fs::exists(folder, ec) || fs::exists(fs::path(folder) / "run.csv", ec) || fs::is_empty(folder, ec);
+  return !fs::exists(folder, ec) || fs::exists(fs::path(folder) / "run.csv", ec) ||
+         fs::is_empty(folder, ec);
 }
 
 RunOutcome run_row(const RunPlan& plan, const SweepRow& row, const std::atomic<int>* stop) {
   const fs::path folder = fs::path(plan.out) / row.name;
-  RunOutcome outcome{.status = {}, .seconds = 0.0, .message = {}, .settings = run_settings_of(row, plan.common), .results = {}};
+  RunOutcome outcome{.status = {},
+                     .seconds = 0.0,
+                     .message = {},
+                     .settings = run_settings_of(row, plan.common),
+                     .results = {}};
   const auto started = std::chrono::steady_clock::now();
   try {
     // A run starts afresh, so that nothing of an earlier one is read as its own (only a run's
     // folder is emptied: the sweep checks that before any run).
     fs::remove_all(folder);
     fs::create_directories(folder);
-    std::vector<std::string> words = {plan.edem, "--threads", std::to_string(plan.threads), "--progress", "10",
-                                      "--out", folder.string(), "--error-file", (folder / "error.txt").string()};
+    std::vector<std::string> words = {
+        plan.edem,       "--threads",    std::to_string(plan.threads),
+        "--progress",    "10",           "--out",
+        folder.string(), "--error-file", (folder / "error.txt").string()};
     for (const auto& [key, value] : outcome.settings) {
       words.push_back("--set");
       words.push_back(key + "=" + value);
     }
     words.push_back("run");
     words.push_back(plan.script);
-    classify(spawn_and_wait(words, folder, plan.threads, stop, plan.pass_on_signals), folder, outcome);
+    classify(spawn_and_wait(words, folder, plan.threads, stop, plan.pass_on_signals), folder,
+             outcome);
     outcome.results = read_result(folder / "result.csv");
-  } catch (const std::exception& e) {  // a full disk, a folder that cannot be made: this run's error
+  } catch (
+      const std::exception& e) {  // a full disk, a folder that cannot be made: this run's error
     outcome.status = "error";
     outcome.message = e.what();
   }
-  outcome.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  outcome.seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   try {
     write_whole(folder / "run.csv", outcome_text(outcome));
   } catch (const std::exception& e) {
@@ -231,18 +258,24 @@ RunOutcome run_row(const RunPlan& plan, const SweepRow& row, const std::atomic<i
   return outcome;
 }
 
-std::optional<RunOutcome> outcome_of(const std::string& out, const SweepRow& row, const Settings& common) {
+std::optional<RunOutcome> outcome_of(const std::string& out, const SweepRow& row,
+                                     const Settings& common) {
   std::ifstream in(fs::path(out) / row.name / "run.csv");
   if (!in) return std::nullopt;
   RunOutcome o;
   for (std::string line; std::getline(in, line);) {
     const auto f = csv_fields(line);
     if (f.size() != 3) return std::nullopt;
-    if (f[0] == "setting") o.settings.emplace_back(f[1], f[2]);
-    else if (f[0] == "result") o.results.emplace_back(f[1], f[2]);
-    else if (f[0] == "status") o.status = f[2];
-    else if (f[0] == "seconds") o.seconds = std::strtod(f[2].c_str(), nullptr);
-    else if (f[0] == "message") o.message = f[2];
+    if (f[0] == "setting")
+      o.settings.emplace_back(f[1], f[2]);
+    else if (f[0] == "result")
+      o.results.emplace_back(f[1], f[2]);
+    else if (f[0] == "status")
+      o.status = f[2];
+    else if (f[0] == "seconds")
+      o.seconds = std::strtod(f[2].c_str(), nullptr);
+    else if (f[0] == "message")
+      o.message = f[2];
   }
   if (o.status.empty() || o.settings != run_settings_of(row, common)) return std::nullopt;
   return o;
@@ -278,7 +311,8 @@ Gathered gather(const std::string& out, const SweepTable& table, const Settings&
   std::string text = csv_line(header) + '\n';
   for (const auto& [row, o] : ended) {
     const auto value_of = [&](const Settings& pairs, const std::string& key) -> const std::string* {
-      const auto it = std::find_if(pairs.begin(), pairs.end(), [&](const auto& p) { return p.first == key; });
+      const auto it =
+          std::find_if(pairs.begin(), pairs.end(), [&](const auto& p) { return p.first == key; });
       return it == pairs.end() ? nullptr : &it->second;
     };
     std::vector<std::string> line = {row->name};

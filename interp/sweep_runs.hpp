@@ -42,7 +42,8 @@ bool is_run_folder(const std::string& folder);
 RunOutcome run_row(const RunPlan& plan, const SweepRow& row, const std::atomic<int>* stop);
 
 // The outcome `row` left in `out`, if it ran with the row's settings.
-std::optional<RunOutcome> outcome_of(const std::string& out, const SweepRow& row, const Settings& common);
+std::optional<RunOutcome> outcome_of(const std::string& out, const SweepRow& row,
+                                     const Settings& common);
 
 struct Gathered {
   int ok = 0, failed = 0, missing = 0;

@@ -20,7 +20,10 @@ namespace {
 namespace fs = std::filesystem;
 
 std::string shell_quoted(const std::string& word) {
-  if (!word.empty() && word.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-+=./:,@") == std::string::npos)
+  if (!word.empty() &&
+      word.find_first_not_of(
+          "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-+=./:,@") ==
+          std::string::npos)
     return word;
   std::string quoted = "'";
   for (const char c : word) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
@@ -28,7 +31,8 @@ std::string shell_quoted(const std::string& word) {
 }
 
 // "0-3,7": the array indices of the tasks whose chunks hold `rows`.
-std::string array_indices(const SweepTable& table, const std::vector<const SweepRow*>& rows, int chunk) {
+std::string array_indices(const SweepTable& table, const std::vector<const SweepRow*>& rows,
+                          int chunk) {
   std::vector<long> tasks;
   for (const SweepRow* row : rows) tasks.push_back((row - table.rows.data()) / chunk);
   tasks.erase(std::unique(tasks.begin(), tasks.end()), tasks.end());
@@ -61,9 +65,12 @@ std::pair<int, std::string> capture(const std::vector<std::string>& words) {
   ::close(pipe_ends[1]);
   std::string text;
   char buffer[4096];
-  for (ssize_t n; (n = ::read(pipe_ends[0], buffer, sizeof buffer)) > 0;) text.append(buffer, static_cast<size_t>(n));
+  for (ssize_t n; (n = ::read(pipe_ends[0], buffer, sizeof buffer)) > 0;)
+    text.append(buffer, static_cast<size_t>(n));
   ::close(pipe_ends[0]);
-  if (spawned != 0) fail("cannot run {}: {}", words[0], std::error_code(spawned, std::generic_category()).message());
+  if (spawned != 0)
+    fail("cannot run {}: {}", words[0],
+         std::error_code(spawned, std::generic_category()).message());
   int status = 0;
   ::waitpid(pid, &status, 0);
   return {WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), text};
@@ -71,18 +78,21 @@ std::pair<int, std::string> capture(const std::vector<std::string>& words) {
 
 }  // namespace
 
-int submit_to_slurm(const SweepOptions& options, const SweepTable& table, const std::vector<const SweepRow*>& rows,
-                    const RunPlan& plan) {
+int submit_to_slurm(const SweepOptions& options, const SweepTable& table,
+                    const std::vector<const SweepRow*>& rows, const RunPlan& plan) {
   const fs::path logs = fs::path(plan.out) / "slurm";
   fs::create_directories(logs);
   // The tasks read the table when they start, maybe hours later: a copy of it as submitted, so
   // that an edit of the original meanwhile cannot shift their rows.
-  const fs::path table_copy = fs::path(plan.out) / ("sweep_table" + fs::path(table.path).extension().string());
+  const fs::path table_copy =
+      fs::path(plan.out) / ("sweep_table" + fs::path(table.path).extension().string());
   if (!fs::exists(table_copy) || !fs::equivalent(table_copy, table.path))
     fs::copy_file(table.path, table_copy, fs::copy_options::overwrite_existing);
-  std::vector<std::string> call = {plan.edem, "sweep", "--task", "${SLURM_ARRAY_TASK_ID}", "--chunk",
-                                   std::to_string(options.chunk), "--threads", std::to_string(plan.threads),
-                                   "--out", plan.out};
+  std::vector<std::string> call = {plan.edem,   "sweep",
+                                   "--task",    "${SLURM_ARRAY_TASK_ID}",
+                                   "--chunk",   std::to_string(options.chunk),
+                                   "--threads", std::to_string(plan.threads),
+                                   "--out",     plan.out};
   for (const auto& [key, value] : options.common) {
     call.push_back("--set");
     call.push_back(key + "=" + value);
@@ -96,30 +106,39 @@ int submit_to_slurm(const SweepOptions& options, const SweepTable& table, const 
   call.push_back(plan.script);
   std::string line = "exec";
   for (const std::string& word : call)
-    line += ' ' + (word == "${SLURM_ARRAY_TASK_ID}" ? "\"$SLURM_ARRAY_TASK_ID\"" : shell_quoted(word));
-  std::string text = "#!/bin/sh\n# edem sweep's job array: task K runs the table's rows K*chunk ... (its chunk).\n";
-  text += fmt::format("#SBATCH --job-name={}\n", shell_quoted("edem-" + fs::path(table.path).stem().string()));
+    line +=
+        ' ' + (word == "${SLURM_ARRAY_TASK_ID}" ? "\"$SLURM_ARRAY_TASK_ID\"" : shell_quoted(word));
+  std::string text =
+      "#!/bin/sh\n# edem sweep's job array: task K runs the table's rows K*chunk ... (its "
+      "chunk).\n";
+  text += fmt::format("#SBATCH --job-name={}\n",
+                      shell_quoted("edem-" + fs::path(table.path).stem().string()));
   text += fmt::format("#SBATCH --array={}\n", array_indices(table, rows, options.chunk));
   text += fmt::format("#SBATCH --cpus-per-task={}\n#SBATCH --ntasks=1\n", plan.threads);
   text += fmt::format("#SBATCH --output={}\n", shell_quoted((logs / "%A_%a.out").string()));
-  if (!options.partition.empty()) text += fmt::format("#SBATCH --partition={}\n", shell_quoted(options.partition));
+  if (!options.partition.empty())
+    text += fmt::format("#SBATCH --partition={}\n", shell_quoted(options.partition));
   if (!options.time.empty()) text += fmt::format("#SBATCH --time={}\n", shell_quoted(options.time));
   text += line + "\n";
   const fs::path job = fs::path(plan.out) / "sweep.sbatch";
   std::ofstream(job) << text;
   if (!options.submit) {
-    fmt::print("sweep: {} written ({} run{}); submit it with sbatch\n", job.string(), rows.size(), rows.size() == 1 ? "" : "s");
+    fmt::print("sweep: {} written ({} run{}); submit it with sbatch\n", job.string(), rows.size(),
+               rows.size() == 1 ? "" : "s");
     return 0;
   }
   const auto [status, printed] = capture({"sbatch", "--parsable", job.string()});
   if (status != 0) {
-    fmt::print(stderr, "edem: sweep: sbatch {} failed (exit status {}): {}\n", job.string(), status, printed);
+    fmt::print(stderr, "edem: sweep: sbatch {} failed (exit status {}): {}\n", job.string(), status,
+               printed);
     return 1;
   }
   const std::string id = printed.substr(0, printed.find_first_of(";\n"));
-  fmt::print("sweep: submitted job {} ({} run{}, {} a task); each task gathers {} as it ends; "
-             "`edem sweep --collect` says what is done\n",
-             id, rows.size(), rows.size() == 1 ? "" : "s", options.chunk, (fs::path(plan.out) / "sweep.csv").string());
+  fmt::print(
+      "sweep: submitted job {} ({} run{}, {} a task); each task gathers {} as it ends; "
+      "`edem sweep --collect` says what is done\n",
+      id, rows.size(), rows.size() == 1 ? "" : "s", options.chunk,
+      (fs::path(plan.out) / "sweep.csv").string());
   std::ofstream(fs::path(plan.out) / "slurm" / "job_id") << id << '\n';
   return 0;
 }

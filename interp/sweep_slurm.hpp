@@ -12,7 +12,7 @@ namespace edem {
 
 // Writes the job script for `rows` (their chunks' tasks only) and submits it unless
 // options.submit is off; returns the exit status.
-int submit_to_slurm(const SweepOptions& options, const SweepTable& table, const std::vector<const SweepRow*>& rows,
-                    const RunPlan& plan);
+int submit_to_slurm(const SweepOptions& options, const SweepTable& table,
+                    const std::vector<const SweepRow*>& rows, const RunPlan& plan);
 
 }  // namespace edem

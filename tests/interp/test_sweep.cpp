@@ -21,7 +21,9 @@ using test::Cli;
 using test::Outcome;
 using test::slurp;
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
 
 // A block settling on a fixed base under gravity: a few hundred cycles, a result that depends on
 // every setting in its last digits.
@@ -44,7 +46,8 @@ const char* const kSettling =
     "result{ cycles = s.cycles }\n";
 
 // The rows of a CSV, each its fields, with the column `drop` (seconds: they differ) left out.
-std::vector<std::vector<std::string>> rows_of(const std::string& text, const std::string& drop = "seconds") {
+std::vector<std::vector<std::string>> rows_of(const std::string& text,
+                                              const std::string& drop = "seconds") {
   std::vector<std::vector<std::string>> rows;
   std::istringstream in(text);
   long dropped = -1;
@@ -74,8 +77,8 @@ TEST_F(Sweep, EveryRowIsGatheredAndAFailedOneIsARowWithItsError) {
   const auto rows = rows_of(gathered());
   ASSERT_EQ(rows.size(), 5u) << gathered();
   // The results' columns as first reported: a call's own alphabetically.
-  EXPECT_EQ(rows[0], (std::vector<std::string>{"name", "height", "fail", "status", "label", "settlement", "cycles",
-                                               "message"}));
+  EXPECT_EQ(rows[0], (std::vector<std::string>{"name", "height", "fail", "status", "label",
+                                               "settlement", "cycles", "message"}));
   EXPECT_EQ(rows[1][0], "low");  // the table's order, whichever ended first
   EXPECT_EQ(rows[3][0], "broken");
   EXPECT_EQ(rows[3][3], "error");
@@ -99,22 +102,27 @@ TEST_F(Sweep, ResultsEqualThoseOfTheSameRunsMadeOneByOne) {
                                                {"height-1_density-2700", "1", "2700"},
                                                {"height-2_density-2000", "2", "2000"}}) {
     fs::create_directories(dir_ / name);
-    const Outcome alone = edem("--threads 1 --out " + name + " --set height=" + height + " --set density=" + density +
-                               " run settle.lua");
+    const Outcome alone = edem("--threads 1 --out " + name + " --set height=" + height +
+                               " --set density=" + density + " run settle.lua");
     ASSERT_EQ(alone.status, 0) << alone.err;
-    EXPECT_EQ(slurp(dir_ / "runs" / name / "result.csv"), slurp(dir_ / name / "result.csv")) << name;
+    EXPECT_EQ(slurp(dir_ / "runs" / name / "result.csv"), slurp(dir_ / name / "result.csv"))
+        << name;
   }
 }
 
 TEST_F(Sweep, BadTablesStopBeforeAnyRunNamingRowAndColumn) {
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {"name,height\na,1\nb\n", "table.csv:3: 1 values for 2 columns (no value for column 'height')"},
-      {"name,hieght\na,1\n", "table.csv:1: column 'hieght': settle.lua has no setting 'hieght' (did you mean 'height'?)"},
+      {"name,height\na,1\nb\n",
+       "table.csv:3: 1 values for 2 columns (no value for column 'height')"},
+      {"name,hieght\na,1\n",
+       "table.csv:1: column 'hieght': settle.lua has no setting 'hieght' (did you mean 'height'?)"},
       {"name,height\na,1\na,2\n", "table.csv:3: the name 'a' is row 1's (line 2) too"},
-      {"height\n1\n1\n", "table.csv:3: the name 'height-1' is row 1's (line 2) too: the two rows are the same run"},
+      {"height\n1\n1\n",
+       "table.csv:3: the name 'height-1' is row 1's (line 2) too: the two rows are the same run"},
       {"", "table.csv: the table is empty"},
       {"# only a comment\nname,height\n", "table.csv: the table has column names but no runs"},
-      {"name,height\na,1\nb,tall\n", "table.csv:3: row 'b', column 'height': 'tall' is not a number (height's default is 1)"},
+      {"name,height\na,1\nb,tall\n",
+       "table.csv:3: row 'b', column 'height': 'tall' is not a number (height's default is 1)"},
       {"name,fail\na,yes\n", "table.csv:2: row 'a', column 'fail': 'yes' is not true or false"},
       {"name,height\na,\n", "table.csv:2: column 'height' has no value"},
       {"name,height,height\na,1,2\n", "table.csv:1: column 'height' is named twice"},
@@ -133,9 +141,11 @@ TEST_F(Sweep, BadTablesStopBeforeAnyRunNamingRowAndColumn) {
   }
   write("table.csv", "height\n1\n");
   const Outcome set = edem("sweep --set height=2 --out runs table.csv settle.lua");
-  EXPECT_TRUE(contains(set.err, "column 'height' is set for every run too (--set height=2)")) << set.err;
+  EXPECT_TRUE(contains(set.err, "column 'height' is set for every run too (--set height=2)"))
+      << set.err;
   const Outcome unknown = edem("sweep --set densty=2 --out runs table.csv settle.lua");
-  EXPECT_TRUE(contains(unknown.err, "--set densty=2: settle.lua has no setting 'densty' (did you mean 'density'?)"))
+  EXPECT_TRUE(contains(
+      unknown.err, "--set densty=2: settle.lua has no setting 'densty' (did you mean 'density'?)"))
       << unknown.err;
   const Outcome before = edem("--set height=2 sweep --out runs table.csv settle.lua");
   EXPECT_EQ(before.status, 2);
@@ -143,7 +153,8 @@ TEST_F(Sweep, BadTablesStopBeforeAnyRunNamingRowAndColumn) {
   write("plain.lua", "block{ x = {0, 1}, y = {0, 1} }\n");
   const Outcome undeclared = edem("sweep --out runs table.csv plain.lua");
   EXPECT_EQ(undeclared.status, 2);
-  EXPECT_TRUE(contains(undeclared.err, "plain.lua:1: block comes before any settings{}")) << undeclared.err;
+  EXPECT_TRUE(contains(undeclared.err, "plain.lua:1: block comes before any settings{}"))
+      << undeclared.err;
   EXPECT_FALSE(fs::exists(dir_ / "runs"));
 }
 
@@ -168,10 +179,11 @@ TEST_F(Sweep, ResumeAfterAKillRunsOnlyTheRowsWithoutAResult) {
   for (int k = 1; k <= 6; ++k) table += "r" + std::to_string(k) + ",40000\n";
   write("table.csv", table);
   // Killed once the first row is gathered: the run going is stopped, the rest never start.
-  write("kill.sh",
-        "'" EDEM_EXE "' sweep --jobs 1 --out runs table.csv settle.lua > first.txt 2>&1 & pid=$!\n"
-        "for i in $(seq 1200); do grep -q ',ok,' runs/sweep.csv 2>/dev/null && break; sleep 0.05; done\n"
-        "kill -TERM $pid; wait $pid; echo \"status $?\"\n");
+  write("kill.sh", "'" EDEM_EXE
+                   "' sweep --jobs 1 --out runs table.csv settle.lua > first.txt 2>&1 & pid=$!\n"
+                   "for i in $(seq 1200); do grep -q ',ok,' runs/sweep.csv 2>/dev/null && break; "
+                   "sleep 0.05; done\n"
+                   "kill -TERM $pid; wait $pid; echo \"status $?\"\n");
   const int raw = std::system(("cd '" + dir_.string() + "' && bash kill.sh > killed.txt").c_str());
   ASSERT_EQ(raw, 0);
   EXPECT_EQ(slurp(dir_ / "killed.txt"), "status 143\n") << slurp(dir_ / "first.txt");
@@ -241,8 +253,9 @@ TEST_F(Sweep, NeverAsksForMoreThreadsThanCores) {
 
 TEST_F(Sweep, SlurmJobScriptHasATaskPerChunkOfTheRowsLeft) {
   write("table.csv", "name,height\na,1\nb,2\nc,3\nd,4\ne,5\n");
-  const Outcome r = edem("sweep --slurm --no-submit --chunk 2 --threads 2 --partition short --time 0:10:00 "
-                         "--out runs table.csv settle.lua");
+  const Outcome r = edem(
+      "sweep --slurm --no-submit --chunk 2 --threads 2 --partition short --time 0:10:00 "
+      "--out runs table.csv settle.lua");
   ASSERT_EQ(r.status, 0) << r.err;
   const std::string job = slurp(dir_ / "runs" / "sweep.sbatch");
   EXPECT_TRUE(contains(job, "#SBATCH --array=0-2\n")) << job;
@@ -257,7 +270,8 @@ TEST_F(Sweep, SlurmJobScriptHasATaskPerChunkOfTheRowsLeft) {
   EXPECT_TRUE(fs::exists(dir_ / "runs" / "d" / "run.csv"));
   EXPECT_FALSE(fs::exists(dir_ / "runs" / "a"));
   // Resumed: only the tasks of the chunks with rows left.
-  const Outcome resumed = edem("sweep --slurm --no-submit --resume --chunk 2 --out runs table.csv settle.lua");
+  const Outcome resumed =
+      edem("sweep --slurm --no-submit --resume --chunk 2 --out runs table.csv settle.lua");
   ASSERT_EQ(resumed.status, 0) << resumed.err;
   EXPECT_TRUE(contains(slurp(dir_ / "runs" / "sweep.sbatch"), "#SBATCH --array=0,2\n"));
 }
@@ -270,10 +284,13 @@ TEST_F(Cli, ResultWritesItsRowAndLaterCallsAddOrReplace) {
   write("bad.lua", "result{ a = {} }\n");
   const Outcome bad = edem("run bad.lua");
   EXPECT_EQ(bad.status, 1);
-  EXPECT_TRUE(contains(bad.err, "bad.lua:1: result: a must be a number, a string or a boolean")) << bad.err;
+  EXPECT_TRUE(contains(bad.err, "bad.lua:1: result: a must be a number, a string or a boolean"))
+      << bad.err;
   write("own.lua", "result{ seconds = 3 }\n");
   const Outcome own = edem("run own.lua");
-  EXPECT_TRUE(contains(own.err, "own.lua:1: result: 'seconds' is a column edem sweep writes itself")) << own.err;
+  EXPECT_TRUE(
+      contains(own.err, "own.lua:1: result: 'seconds' is a column edem sweep writes itself"))
+      << own.err;
 }
 
 TEST(Names, ASwapOfNeighbouringLettersIsOneEdit) {
