@@ -95,6 +95,14 @@ std::vector<const SweepRow*> selected_rows(const SweepOptions& options, const Sw
   return rows;
 }
 
+void refuse_foreign_folder(const SweepTable& table, const SweepRow& row, const std::string& out) {
+  const std::string folder = (fs::path(out) / row.name).string();
+  if (!is_run_folder(folder))
+    fail("{}: row '{}' would run in {}, which holds files of something else than a run: give "
+         "another --out",
+         table.path, row.name, folder);
+}
+
 // What the runs so far say, and a guess of the time left.
 struct Tally {
   int done = 0, failed = 0, left = 0;
@@ -188,6 +196,7 @@ int run_task(const SweepOptions& options, const SweepTable& table, RunPlan plan)
         options.resume && o && o->status == "ok")
       continue;
     if (!options.only.empty() && table.rows[r].name != options.only) continue;
+    refuse_foreign_folder(table, table.rows[r], plan.out);
     const RunOutcome o = run_row(plan, table.rows[r], options.stop);
     fmt::print("sweep: {} {} in {}{}\n", table.rows[r].name, o.status, duration_text(o.seconds),
                o.message.empty() ? "" : ": " + o.message);
@@ -237,13 +246,10 @@ int run_sweep(const SweepOptions& options) {
                       fs::path(options.script).filename().string(), options.common);
     out = absolute(options.out.empty() ? default_out(options.table) : options.out);
     rows = selected_rows(options, table, out);
-    for (const SweepRow* row :
-         rows)  // a run's folder is emptied when it starts: never anything else
-      if (!is_run_folder((fs::path(out) / row->name).string()))
-        fail(
-            "{}: row '{}' would run in {}, which holds files of something else than a run: give "
-            "another --out",
-            table.path, row->name, (fs::path(out) / row->name).string());
+    // A run's folder is emptied when it starts: never anything else. (A Slurm task checks its
+    // own rows when it runs them: the others' may be running.)
+    if (options.task < 0)
+      for (const SweepRow* row : rows) refuse_foreign_folder(table, *row, out);
     std::error_code ec;
     const std::string edem = fs::read_symlink("/proc/self/exe", ec).string();
     if (ec) fail("cannot find this edem's own path to start the runs with: {}", ec.message());

@@ -26,6 +26,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// The file that marks a folder as a run's, from the moment it starts (run.csv comes at its end).
+constexpr const char* kRunMark = ".edem_sweep_run";
+
 std::string read_text(const fs::path& file) {
   std::ifstream in(file);
   std::stringstream text;
@@ -213,7 +216,7 @@ void classify(const Ended& ended, const fs::path& folder, RunOutcome& outcome) {
 
 bool is_run_folder(const std::string& folder) {
   std::error_code ec;
-  return !fs::exists(folder, ec) || fs::exists(fs::path(folder) / "run.csv", ec) ||
+  return !fs::exists(folder, ec) || fs::exists(fs::path(folder) / kRunMark, ec) ||
          fs::is_empty(folder, ec);
 }
 
@@ -230,6 +233,7 @@ RunOutcome run_row(const RunPlan& plan, const SweepRow& row, const std::atomic<i
     // folder is emptied: the sweep checks that before any run).
     fs::remove_all(folder);
     fs::create_directories(folder);
+    std::ofstream(folder / kRunMark) << "a run of edem sweep: its folder is emptied when it runs again\n";
     std::vector<std::string> words = {
         plan.edem,       "--threads",    std::to_string(plan.threads),
         "--progress",    "10",           "--out",

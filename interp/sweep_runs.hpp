@@ -34,7 +34,8 @@ struct RunPlan {
   bool pass_on_signals = true;
 };
 
-// Whether `folder` may be emptied for a run: missing, empty, or a run's (it has a run.csv).
+// Whether `folder` may be emptied for a run: missing, empty, or a run's (marked so when the run
+// started).
 bool is_run_folder(const std::string& folder);
 
 // Runs `row` and waits for it; a signal number in `stop` is passed on to it once (it then saves

@@ -15,8 +15,8 @@ fail() { echo "slurm_sweep: FAIL: $*" >&2; exit 1; }
 
 bash "$here/../../scripts/install-deps.sh" --slurm >&2
 rm -rf "$work" && mkdir -p "$work" && cd "$work"
-trap 'bash "$here/slurm_cluster.sh" stop "$work/cluster"' EXIT
-eval "$(bash "$here/slurm_cluster.sh" start "$work/cluster")"
+trap 'bash "$here/slurm_cluster.sh" stop "$work/daemons"' EXIT
+eval "$(bash "$here/slurm_cluster.sh" start "$work/daemons")"
 
 runs=(--set cycles=100000)  # about 2 s a run: long enough to be cancelled while it runs
 table=$here/eight.csv script=$here/settle.lua
@@ -45,10 +45,10 @@ without_seconds local/sweep.csv > local.csv
 [[ $(grep -c ',ok,' local.csv) == 8 ]] || fail "the local sweep did not run all 8 rows: $(cat local.txt)"
 
 # 1. The whole table through the cluster.
-"$edem" sweep --slurm "${runs[@]}" --out cluster "$table" "$script"
-wait_for_job cluster
-without_seconds cluster/sweep.csv > cluster.csv
-diff local.csv cluster.csv || fail "the cluster's table differs from the local one"
+"$edem" sweep --slurm "${runs[@]}" --out through_slurm "$table" "$script"
+wait_for_job through_slurm
+without_seconds through_slurm/sweep.csv > through_slurm.csv
+diff local.csv through_slurm.csv || fail "the cluster's table differs from the local one"
 echo "slurm_sweep: 8 rows through Slurm equal the local sweep's"
 
 # 2. One task cancelled while it runs (row a, task 0), one before it starts (row h, task 7).
@@ -60,7 +60,7 @@ sleep 0.5
 scancel "${id}_0"
 wait_for_job cancelled
 without_seconds cancelled/sweep.csv > cancelled.csv
-status_a=$(grep '^a,' cancelled.csv | cut -d, -f4 || true)
+status_a=$(grep '^a,' cancelled.csv | cut -d, -f5 || true)  # name,height,density,cycles,status
 [[ $status_a == interrupted ]] || fail "row a, cancelled while running, is '$status_a', not interrupted"
 ! grep -q '^h,' cancelled.csv || fail "row h ran though its task was cancelled before it started"
 [[ $(grep -c ',ok,' cancelled.csv) == 6 ]] || fail "not the other 6 rows ok: $(cat cancelled.csv)"
