@@ -46,20 +46,13 @@ class LuaRef {
   int ref_ = LUA_NOREF;
 };
 
-int stack_depth(lua_State* L) {
-  lua_Debug frame;
-  int levels = 0;
-  while (lua_getstack(L, levels, &frame)) ++levels;
-  return levels;
-}
-
 // Message handler of a callback's pcall: returns {headline, traceback line, ...} with the
 // frames of the callback only. Upvalue 1: the stack depth outside the call; 2: the word.
 int callback_handler(lua_State* L) {
   return guarded(L, lua_tostring(L, lua_upvalueindex(2)), [&] {
     const int outside = static_cast<int>(lua_tointeger(L, lua_upvalueindex(1)));
     // Level 0 is this handler; the callback's frames come next, then the `outside` ones.
-    const int inside = stack_depth(L) - outside - 1;
+    const int inside = stack_levels(L) - outside - 1;
     const std::string headline = error_headline(L);
     const std::vector<std::string> frames = traceback_lines(L, 1, inside);
     lua_createtable(L, static_cast<int>(frames.size()) + 1, 0);
@@ -142,7 +135,7 @@ Call call(const LuaRef& fn, Push&& push, int results, std::string_view word,
   if (L == nullptr) fail("{} was called while no script runs", what);
   if (!lua_checkstack(L, 8)) fail("no room on the Lua stack to call {}", what);
   const int top = lua_gettop(L);
-  lua_pushinteger(L, stack_depth(L));
+  lua_pushinteger(L, stack_levels(L));
   lua_pushlstring(L, word.data(), word.size());
   lua_pushcclosure(L, callback_handler, 2);
   lua_rawgeti(L, LUA_REGISTRYINDEX, fn.ref());

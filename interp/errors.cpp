@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <cstring>
 #include <lua.hpp>
 
@@ -128,9 +129,21 @@ std::string error_headline(lua_State* L) {
 }
 
 std::vector<std::string> traceback_lines(lua_State* L, int first, int last) {
+  const int deepest = stack_levels(L) - 1;
+  if (last < 0 || last > deepest) last = deepest;
+  // A deep recursion (a stack overflow has hundreds of thousands of frames) shows its first and
+  // last frames, as format_traceback() would keep them: each lua_getstack walks from the top,
+  // so walking every level would be quadratic.
+  constexpr int kHead = 8, kTail = 3;
+  const bool cut = last - first + 1 > kHead + kTail;
   std::vector<std::string> lines;
   lua_Debug frame;
-  for (int level = first; (last < 0 || level <= last) && lua_getstack(L, level, &frame); ++level) {
+  for (int level = first; level <= last && lua_getstack(L, level, &frame); ++level) {
+    if (cut && level == first + kHead) {
+      lines.push_back(fmt::format("  ... ({} more)", last - kTail - level + 1));
+      level = last - kTail;
+      continue;
+    }
     lua_getinfo(L, "Sln", &frame);
     if (frame.currentline <= 0) continue;  // C functions: the command itself, pcall, ...
     std::string what;
@@ -149,7 +162,11 @@ std::string format_traceback(std::vector<std::string> lines) {
   if (lines.size() < 2) return {};
   constexpr size_t head = 8, tail = 3;  // deep recursion: the ends tell the story
   if (lines.size() > head + tail + 1) {
-    const size_t hidden = lines.size() - head - tail;
+    size_t hidden = 0;  // the lines left out, and those a cut among them stands for
+    for (auto line = lines.begin() + head; line != lines.end() - tail; ++line) {
+      size_t more = 0;
+      hidden += std::sscanf(line->c_str(), "  ... (%zu more)", &more) == 1 ? more : 1;
+    }
     lines.erase(lines.begin() + head, lines.end() - tail);
     lines.insert(lines.begin() + head, fmt::format("  ... ({} more)", hidden));
   }

@@ -23,6 +23,20 @@ std::string where(lua_State* L) {
   return {};
 }
 
+int stack_levels(lua_State* L) {
+  lua_Debug frame;
+  int known = 0, beyond = 1;  // level `known` exists, level `beyond` is to be tried
+  while (lua_getstack(L, beyond, &frame)) {
+    known = beyond;
+    beyond *= 2;
+  }
+  while (known + 1 < beyond) {  // level known exists, level beyond does not
+    const int middle = known + (beyond - known) / 2;
+    (lua_getstack(L, middle, &frame) ? known : beyond) = middle;
+  }
+  return lua_getstack(L, 0, &frame) ? known + 1 : 0;
+}
+
 std::string describe(lua_State* L, int index) {
   switch (lua_type(L, index)) {
     case LUA_TNUMBER:

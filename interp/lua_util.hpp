@@ -19,6 +19,11 @@ std::string source_of(const lua_Debug& frame);
 // "FILE:LINE: " of the innermost Lua frame on the stack, skipping C functions; "" if none.
 std::string where(lua_State* L);
 
+// How many levels the call stack of `L` has (level 0, the running function, included). Found by
+// halving, as Lua's own traceback does: lua_getstack walks from the top, so counting level by
+// level would be quadratic in a deep recursion's hundreds of thousands of frames.
+int stack_levels(lua_State* L);
+
 // A value as an error message shows it after "got": 5, "abc", true, nil, a table.
 std::string describe(lua_State* L, int index);
 
