@@ -49,7 +49,9 @@ int run_info(lua_State* L, Context& context, const Args&) {
   set_field(L, "time", solver.time);
   set_field(L, "step", solver.step);
   set_field(L, "ratio", solver.ratio);
-  set_field(L, "contacts", solver.contacts);
+  // The contacts there are now, as contacts() counts them: a judgment or an excavation leaves them
+  // to be found again at the next cycle, and "as last found" would read 0 meanwhile.
+  set_field(L, "contacts", model.cycling_started() ? model.contact_count() : solver.contacts);
   set_field(L, "late_contacts", static_cast<long long>(solver.late_contacts));
   set_field(L, "contact_searches", static_cast<long long>(solver.contact_searches));
   return 1;
@@ -378,7 +380,8 @@ const Command& info_command() {
           "joint_sets, crack_seeds, sections (potential-crack sections), intact_sections, "
           "cracks, shear_cracks, tension_cracks, stage (excavations so far), title, cycle (cycles run so far), time (model time [s]; static mode: "
           "the cycle count), step (time step [s]), ratio (last unbalanced-force ratio), "
-          "contacts (as last found: 0 until the first cycle or contact query), late_contacts "
+          "contacts (those there are now, as contacts() counts them; before the first cycle as last found: 0 "
+          "until a contact query), late_contacts "
           "(contacts found already pressed in by more than a tenth of their reach, since the "
           "blocks were zoned: detection came too late for them; it should stay 0), contact_searches "
           "(gridpoints whose contacts have been searched for since the blocks were zoned: the cost of "

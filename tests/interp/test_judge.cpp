@@ -54,6 +54,18 @@ TEST(JudgeMost, AllThatFailBreakAtOnceByDefault) {
   EXPECT_EQ(broken(interpreter).count, sections);
 }
 
+// The cracks a judgment makes are contacts at once: info() counts them as contacts() does, not
+// as last found (none: the intact sections are bonded).
+TEST(JudgeMost, InfoCountsTheContactsAJudgmentMakes) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, bar() +
+                               "judge{ every = 10 }\ncycle(10)\n"
+                               "local n = 0\nfor c in contacts() do n = n + 1 end\n"
+                               "assert(info().cracks > 4, 'the sections broke')\n"
+                               "assert(n > 0 and info().contacts == n, ('info %d, contacts() %d'):format(info().contacts, n))");
+}
+
 TEST(JudgeMost, AtMostThatManyBreakAtAJudgmentTheFurthestPastFirst) {
   Interpreter interpreter;
   interpreter.context().quiet = true;
