@@ -64,6 +64,8 @@ CheckpointHeader verified_header(const std::string& path) {
   std::error_code ec;
   if (!fs::exists(path, ec)) fail("cannot read checkpoint '{}': no such file", path);
   if (fs::is_directory(path, ec)) fail("cannot read checkpoint '{}': it is a directory", path);
+  if (!fs::is_regular_file(path, ec))  // a pipe would hang the reader, a device feed it forever
+    fail("cannot read checkpoint '{}': it is not a regular file (a pipe, socket or device)", path);
   FilePtr file(std::fopen(path.c_str(), "rb"));
   if (!file) fail("cannot read checkpoint '{}': {}", path, std::strerror(errno));
   std::fseek(file.get(), 0, SEEK_END);

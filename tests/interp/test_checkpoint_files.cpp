@@ -3,6 +3,7 @@
 // previous checkpoint readable.
 #include <signal.h>
 #include <spawn.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #include <zlib.h>
@@ -221,6 +222,48 @@ TEST_F(CheckpointFiles, KillDuringSaveLeavesThePreviousCheckpoint) {
     EXPECT_EQ(info.status, 0) << "attempt " << attempt << ": " << info.err;
     EXPECT_TRUE(contains(info.out, "cycle 20"));
   }
+}
+
+// A pipe (or a device) named as a checkpoint is refused at once: reading one would wait forever.
+TEST_F(CheckpointFiles, APipeIsRefusedNotWaitedOn) {
+  ASSERT_EQ(::mkfifo((dir_ / "pipe.h5").c_str(), 0644), 0);
+  write("r.lua", "restore(\"pipe.h5\")\n");
+  for (const std::string& args : {std::string("info pipe.h5"), std::string("run r.lua")}) {
+    const std::string command = "cd '" + dir_.string() + "' && timeout 20 '" EDEM_EXE "' " + args +
+                                " > out.txt 2> err.txt";
+    const int raw = std::system(command.c_str());
+    EXPECT_EQ(WEXITSTATUS(raw), 1) << args << " (124: it hung)";
+    EXPECT_TRUE(contains(slurp(dir_ / "err.txt"),
+                         "cannot read checkpoint 'pipe.h5': it is not a regular file"))
+        << args << ": " << slurp(dir_ / "err.txt");
+  }
+}
+
+// The pid of a process that has ended.
+pid_t a_dead_pid() {
+  const pid_t pid = ::fork();
+  if (pid == 0) ::_exit(0);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return pid;
+}
+
+// A save removes the temporaries that killed writers left beside its file, and only those: a
+// live writer's, or one written to in the last minute, stay.
+TEST_F(CheckpointFiles, StaleTemporariesOfDeadWritersAreRemoved) {
+  const fs::path stale = temporary_for(dir_ / "good.h5", a_dead_pid());
+  const fs::path fresh = temporary_for(dir_ / "good.h5", a_dead_pid());
+  const fs::path alive = temporary_for(dir_ / "good.h5", ::getpid());
+  for (const fs::path& file : {stale, fresh, alive}) std::ofstream(file) << "half a checkpoint";
+  const auto old = fs::file_time_type::clock::now() - std::chrono::minutes(5);
+  fs::last_write_time(stale, old);
+  fs::last_write_time(alive, old);
+  write("make.lua", make_script("0.5"));
+  const Outcome r = edem("-q run make.lua");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_FALSE(fs::exists(stale));
+  EXPECT_TRUE(fs::exists(fresh));
+  EXPECT_TRUE(fs::exists(alive));
 }
 
 }  // namespace
