@@ -51,7 +51,7 @@ int run_info(lua_State* L, Context& context, const Args&) {
   set_field(L, "ratio", solver.ratio);
   // The contacts there are now, as contacts() counts them: a judgment or an excavation leaves them
   // to be found again at the next cycle, and "as last found" would read 0 meanwhile.
-  set_field(L, "contacts", model.cycling_started() ? model.contact_count() : solver.contacts);
+  set_field(L, "contacts", model.cycling_started() ? model.contacts_now() : solver.contacts);
   set_field(L, "late_contacts", static_cast<long long>(solver.late_contacts));
   set_field(L, "contact_searches", static_cast<long long>(solver.contact_searches));
   return 1;

@@ -173,6 +173,9 @@ class Model {
   std::vector<int> loose_blocks(double speed) const;
   // Contacts as last found (found now if cycling has not begun); ids are 0-based positions.
   int contact_count() const;
+  // How many contacts there are now, found on a copy if the model changed since they were last
+  // found, so that asking does not change how the run goes on (info().contacts).
+  int contacts_now() const;
   ContactView contact(int id) const;
   int contact_near(Vec2 point) const;  // -1 when there are none
   std::vector<std::string> joint_material_names() const;

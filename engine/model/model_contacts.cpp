@@ -98,6 +98,13 @@ int Model::contact_count() const {
   return static_cast<int>(view_contacts(*mechanics_, mesh_).list.size());
 }
 
+int Model::contacts_now() const {
+  const Mechanics& m = *mechanics_;
+  if (m.contacts.detected) return static_cast<int>(m.contacts.list.size());
+  if (m.cycling_now) return contact_count();  // a copy's, once a cycle
+  return static_cast<int>(contacts_on_copy(m, mesh_).list.size());
+}
+
 ContactView Model::contact(int id) const {
   const ContactSet& set = view_contacts(*mechanics_, mesh_);
   if (id < 0 || id >= static_cast<int>(set.list.size())) fail("no contact {}", id + 1);
