@@ -217,7 +217,7 @@ void classify(const Ended& ended, const fs::path& folder, RunOutcome& outcome) {
 bool is_run_folder(const std::string& folder) {
   std::error_code ec;
   return !fs::exists(folder, ec) || fs::exists(fs::path(folder) / kRunMark, ec) ||
-         fs::is_empty(folder, ec);
+         fs::exists(fs::path(folder) / "run.csv", ec) || fs::is_empty(folder, ec);
 }
 
 RunOutcome run_row(const RunPlan& plan, const SweepRow& row, const std::atomic<int>* stop) {

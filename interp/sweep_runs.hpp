@@ -35,7 +35,7 @@ struct RunPlan {
 };
 
 // Whether `folder` may be emptied for a run: missing, empty, or a run's (marked so when the run
-// started).
+// started, or holding what became of one).
 bool is_run_folder(const std::string& folder);
 
 // Runs `row` and waits for it; a signal number in `stop` is passed on to it once (it then saves

@@ -10,6 +10,7 @@
 #include <new>
 
 #include "core/error.hpp"
+#include "constitutive/zone_law.hpp"
 #include "contact/detect.hpp"
 #include "io/checkpoint_file.hpp"
 #include "io/h5_archive.hpp"
@@ -514,6 +515,48 @@ void check_indices(const Mechanics& m, const Mesh& mesh) {
   check_range(m.bolt_hosts.material, 0, m.bolt_materials.size(), "bolts' materials");
 }
 
+// The bolts' arrays: each per bolt node, per segment or per bolt as long as the others of its kind.
+template <class Expect>
+void check_bolt_sizes(const Mechanics& m, size_t nodes, const Expect& expect) {
+  const BoltNodes& n = m.bolts.nodes;
+  const size_t bolt_nodes = n.x.size();
+  for (const auto& [got, what] : std::initializer_list<std::pair<size_t, std::string_view>>{
+           {n.u.size(), "bolt nodes' u"}, {n.v.size(), "bolt nodes' v"}, {n.force.size(), "bolt nodes' force"},
+           {n.mass.size(), "bolt nodes' mass"}, {n.tributary.size(), "bolt nodes' tributary"},
+           {n.bond_length.size(), "bolt nodes' bond_length"}, {n.grout_stiffness.size(), "bolt nodes' grout_stiffness"},
+           {n.grout_strength.size(), "bolt nodes' grout_strength"}, {n.axis.size(), "bolt nodes' axis"},
+           {n.grout_force.size(), "bolt nodes' grout_force"}, {n.grout_slip.size(), "bolt nodes' grout_slip"},
+           {n.slipping.size(), "bolt nodes' slipping"}, {n.grout_rel.size(), "bolt nodes' grout_rel"}})
+    expect(got, bolt_nodes, what);
+  const BoltSegments& g = m.bolts.segments;
+  for (const auto& [got, what] : std::initializer_list<std::pair<size_t, std::string_view>>{
+           {g.b.size(), "bolt segments' b"}, {g.material.size(), "bolt segments' material"},
+           {g.rest.size(), "bolt segments' rest"}, {g.elongation.size(), "bolt segments' elongation"},
+           {g.direction.size(), "bolt segments' direction"}, {g.force.size(), "bolt segments' force"},
+           {g.state.size(), "bolt segments' state"}, {g.broke.size(), "bolt segments' broke"}})
+    expect(got, g.size(), what);
+  const BoltHosts& h = m.bolt_hosts;
+  for (const auto& [got, what] : std::initializer_list<std::pair<size_t, std::string_view>>{
+           {h.zone.size(), "bolt hosts' zone"}, {h.weight.size(), "bolt hosts' weight"}, {h.u0.size(), "bolt hosts' u0"},
+           {h.host_u.size(), "bolt hosts' host_u"}, {h.slide.size(), "bolt hosts' slide"}, {h.dir.size(), "bolt hosts' dir"},
+           {h.rate.size(), "bolt hosts' rate"}, {h.mass.size(), "bolt hosts' mass"},
+           {h.slide_start.size(), "bolt hosts' slide_start"}, {h.r_start.size(), "bolt hosts' r_start"}})
+    expect(got, bolt_nodes, what);
+  const size_t bolts = h.material.size();
+  for (const auto& [got, what] : std::initializer_list<std::pair<size_t, std::string_view>>{
+           {h.stage.size(), "bolts' stage"}, {h.removed.size(), "bolts' removed"}, {h.drive.size(), "bolts' drive"},
+           {h.drive_value.size(), "bolts' drive_value"}, {h.head_force.size(), "bolts' head_force"},
+           {m.bolts.bolt_first_node.size(), "bolts' first nodes"},
+           {m.bolts.bolt_first_segment.size(), "bolts' first segments"}})
+    expect(got, what.starts_with("bolts' first") ? bolts + 1 : bolts, what);
+  if (!m.dirty) {  // derived when the model is prepared: a dirty model makes them again
+    expect(h.gather_first.size(), nodes + 1, "bolt hosts' gather_first");
+    expect(h.rows.size(), nodes, "bolt hosts' rows");
+    check_first(h.gather_first, nodes, h.gather.size(), "bolt grout gather");
+    check_range(h.gather, 0, 3 * bolt_nodes, "bolt grout gathers' corners");
+  }
+}
+
 // Array lengths that must agree with the mesh and the node count; a file that passed its checksum
 // only fails these if an EDEM of the same schema wrote something else, but then the message is
 // better than a crash.
@@ -530,13 +573,37 @@ void check_sizes(const Mechanics& m, const Mesh& mesh) {
   expect(m.gp_node.size(), static_cast<size_t>(mesh.gp_count()), "gp_node");
   for (const auto* v : {&m.position, &m.u, &m.v, &m.origin, &m.force, &m.load}) expect(v->size(), 2 * nodes, "node vector");
   expect(m.fix.size(), nodes, "fix");
-  expect(m.bolts.segments.broke.size(), m.bolts.segments.size(), "bolt segments' broke");
+  check_bolt_sizes(m, nodes, expect);
+  // Arrays made when the model is prepared, its contacts found or its damping started: whole once
+  // they have been (a prepared model is not prepared again: it would read past them).
+  const auto expect_if = [&](bool made, size_t got, size_t want, std::string_view what) {
+    if (made) expect(got, want, what);  // else stale or empty: made again before they are used
+  };
+  const bool prepared = !m.dirty;
+  // (The damping's start goes with the nodes it was taken on; the next batch takes it again if
+  // they have changed since.)
+  expect(m.adaptive.r_start.size(), m.adaptive.u_start.size(), "adaptive damping's r_start");
+  expect_if(prepared, m.block_live.size(), mesh.block_boundary.size(), "block_live");
+  expect_if(prepared, m.weight.size(), 2 * nodes, "weight");
+  expect_if(prepared, m.real_mass.size(), nodes, "real_mass");
+  expect_if(prepared, m.stiffness.size(), nodes, "stiffness");
+  expect_if(prepared, m.zone_rows.size(), nodes, "zone_rows");
+  const bool contacts_current = prepared && m.contacts.detected;
+  expect_if(contacts_current, m.contacts.x_detected.size(), 2 * nodes, "contacts' x_detected");
+  expect_if(contacts_current, m.contacts.rows.size(), nodes, "contacts' rows");
+  if (contacts_current) {
+    expect(m.contacts.gather_first.size(), nodes + 1, "contacts' gather_first");
+    check_first(m.contacts.gather_first, nodes, m.contacts.gather.size(), "contact gather");
+    check_range(m.contacts.gather, 0, 3 * m.contacts.list.size(), "contact gathers' forces");
+  }
   expect(m.node_block.size(), nodes, "node_block");
   if (!m.dirty) {
     expect(m.geometry.size(), zones, "geometry");
     expect(m.mass.size(), nodes, "mass");
   }
   expect(m.params.size(), m.materials.size(), "params");
+  expect(m.jassign_regions.size(), m.jassign_material.size(), "jassign_regions");
+  expect_if(!m.mean_stress_ref.empty(), m.mean_stress_ref.size(), zones, "mean_stress_ref");
   expect(m.joint_params.size(), m.joint_materials.size(), "joint_params");
   for (int material : m.zone_material)
     if (material >= static_cast<int>(m.materials.size())) fail("a zone's material {} is out of range", material);
@@ -546,6 +613,19 @@ void check_sizes(const Mechanics& m, const Mesh& mesh) {
     if (c.node < 0 || static_cast<size_t>(c.node) >= nodes || c.edge < 0 ||
         static_cast<size_t>(c.edge) >= m.faces.edges.size())
       fail("a contact refers to node {} or edge {}, out of range", c.node, c.edge);
+  for (const MaterialParams& p : m.params)
+    if (static_cast<size_t>(p.model) >= zone_laws().size()) fail("a material's model {} is unknown", static_cast<int>(p.model));
+  if (prepared) {  // the zones that cycle: every zone of rock not dug out, in order
+    size_t live = 0;
+    for (size_t z = 0; z < zones; ++z) {
+      const int material = m.zone_material[z];
+      live += material >= 0 && m.zone_excavated[z] == 0 &&
+              !zone_law(m.params[static_cast<size_t>(material)].model).is_void;
+    }
+    expect(m.active.size(), live, "active zones");
+    for (size_t i = 1; i < m.active.size(); ++i)
+      if (m.active[i] <= m.active[i - 1]) fail("its active zones are out of order");
+  }
 }
 
 std::string local_time_now() {
@@ -569,6 +649,10 @@ struct CheckpointAccess {
     ar("cracks", in.cracks);
     ar("crack_seeds", in.crack_seeds);
     ar("regions", in.regions);
+    for (const BlockDef& b : in.bases)
+      if (b.polygon.size() < 3) fail("a block's outline has {} corners", b.polygon.size());
+    for (const RegionDef& region : in.regions)
+      if (region.polygon.size() < 3) fail("region '{}' has {} corners", region.name, region.polygon.size());
     std::int64_t requests = static_cast<std::int64_t>(in.zone_requests.size());
     ar("zone_requests", requests);
     if (requests < 0 || requests > 1'000'000) fail("it has {} zone requests", requests);
