@@ -89,13 +89,21 @@ Box bounding_box(const Polygon& polygon) {
   return box;
 }
 
+void check_coordinate(Vec2 p, std::string_view what) {
+  if (!std::isfinite(p.x) || !std::isfinite(p.y))
+    fail("{} is not a finite number ({}, {})", what, p.x, p.y);
+  if (std::fabs(p.x) > kMaxCoordinate || std::fabs(p.y) > kMaxCoordinate)
+    fail("{} ({:g}, {:g}) is beyond {:g} m: coordinates are metres about the rock mass (put the "
+         "origin near it)",
+         what, p.x, p.y, kMaxCoordinate);
+}
+
 void validate_polygon(const Polygon& polygon, std::string_view what) {
   if (polygon.size() < 3)
     fail("{} needs at least 3 vertices, got {}", what, polygon.size());
   for (size_t i = 0; i < polygon.size(); ++i) {
     const Vec2 p = polygon[i];
-    if (!std::isfinite(p.x) || !std::isfinite(p.y))
-      fail("{} vertex {} is not a finite number ({}, {})", what, i + 1, p.x, p.y);
+    check_coordinate(p, fmt::format("{} vertex {}", what, i + 1));
     if (p == polygon[(i + 1) % polygon.size()])
       fail("{} repeats vertex {} ({}, {})", what, i + 1, p.x, p.y);
   }

@@ -30,8 +30,17 @@ struct Box {
 };
 Box bounding_box(const Polygon& polygon);
 
+// The largest coordinate a model may have [m]. The exact geometry (CGAL over GMP) and the
+// snapping of small features work on numbers of the model's own size; beyond this, far past any
+// rock mass, a coordinate is a mistake, and numbers like 1e200 overflow the exact arithmetic.
+inline constexpr double kMaxCoordinate = 1e7;
+
+// Throws edem::Error naming `what` for a coordinate that is not finite or is beyond
+// kMaxCoordinate.
+void check_coordinate(Vec2 p, std::string_view what);
+
 // Throws edem::Error naming `what` when the polygon has fewer than three vertices, a
-// non-finite coordinate, repeated consecutive vertices, zero area or crossing edges.
+// non-finite or too large coordinate, repeated consecutive vertices, zero area or crossing edges.
 void validate_polygon(const Polygon& polygon, std::string_view what);
 
 // True when the interiors of two valid polygons share area (touching edges is fine). Exact.

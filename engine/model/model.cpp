@@ -17,6 +17,23 @@ void check_finite(double value, std::string_view what) {
   if (!std::isfinite(value)) fail("{} must be a finite number, got {}", what, value);
 }
 
+Box extent_of(const std::vector<BlockDef>& bases);
+
+// A pattern's origin (jset, crackseed): the lines are laid from it to the blocks, so one far away
+// costs time and memory for nothing (the pattern repeats; an origin among the blocks gives the
+// same lines).
+void check_origin(Vec2 origin, const Box& blocks) {
+  check_coordinate(origin, "origin");
+  const double size = std::max(blocks.diagonal(), 1e-9);
+  const double away = std::max({blocks.x0 - origin.x, origin.x - blocks.x1, blocks.y0 - origin.y,
+                                origin.y - blocks.y1, 0.0});
+  if (away > 1000.0 * size)
+    fail("origin ({:g}, {:g}) is {:.3g} m from the blocks, which are {:.3g} m across: give one "
+         "within 1000 times their size (the pattern repeats: an origin among them gives the same "
+         "lines)",
+         origin.x, origin.y, away, size);
+}
+
 Box extent_of(const std::vector<BlockDef>& bases) {
   Polygon all;
   for (const auto& base : bases) all.insert(all.end(), base.polygon.begin(), base.polygon.end());
@@ -90,9 +107,8 @@ int Model::add_joint_set(const JointSetDef& def) {
     fail("gap_dev must be >= 0 and at most gap ({}), got {}", def.gap, def.gap_dev);
   if (!(def.angle_dev >= 0.0 && def.angle_dev < 90.0))
     fail("angle_dev must be in [0, 90), got {}", def.angle_dev);
-  check_finite(def.origin.x, "origin x");
-  check_finite(def.origin.y, "origin y");
   if (inputs_.bases.empty()) fail("no blocks to cut: define blocks with block{{...}} first");
+  check_origin(def.origin, extent_of(inputs_.bases));
   if (!def.region.empty()) resolve(def.region);  // throws for an unknown name or bad polygon
   Inputs next = inputs_;
   next.joint_sets.push_back(def);
@@ -102,7 +118,8 @@ int Model::add_joint_set(const JointSetDef& def) {
 
 void Model::add_crack(const CrackDef& def) {
   check_geometry_open();
-  for (double v : {def.from.x, def.from.y, def.to.x, def.to.y}) check_finite(v, "crack end");
+  check_coordinate(def.from, "crack end from");
+  check_coordinate(def.to, "crack end to");
   if (norm(def.to - def.from) <= tolerance())
     fail("crack from ({}, {}) to ({}, {}) has zero length", def.from.x, def.from.y, def.to.x,
          def.to.y);
@@ -118,9 +135,8 @@ void Model::add_crackseed(const CrackSeedDef& def) {
   for (double a : def.angles) check_finite(a, "angle");
   if (!(def.spacing > 0.0) || !std::isfinite(def.spacing))
     fail("spacing must be > 0, got {}", def.spacing);
-  check_finite(def.origin.x, "origin x");
-  check_finite(def.origin.y, "origin y");
   if (inputs_.bases.empty()) fail("no blocks to cut: define blocks with block{{...}} first");
+  check_origin(def.origin, extent_of(inputs_.bases));
   if (!def.region.empty()) resolve(def.region);  // throws for an unknown name or bad polygon
   Inputs next = inputs_;
   next.crack_seeds.push_back(def);
