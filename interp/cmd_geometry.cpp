@@ -81,6 +81,7 @@ int run_zone(lua_State*, Context& context, const Args& args) {
   if (args.has("near")) def.near = args.get<std::vector<RegionRef>>("near");
   if (args.has("region")) def.region = args.get<RegionRef>("region");
   def.sliver = args.number("sliver");
+  def.max_zones = args.number("max_zones");
   context.model().zone(def);
   return 0;
 }
@@ -201,6 +202,9 @@ const Command& zone_command() {
                "no block edge shorter than this fraction of the zone edge there: cuts that would make one "
                "are bent together (info().snapped counts them, info().shortest_edge measures what is left); "
                "0: only model{ tolerance }"},
+              {"max_zones", Type::number, "-", gt(0), "1e6",
+               "refused before meshing if the finest edge would make about more zones than this (each block's area over "
+               "a zone's, or a thin block's perimeter over twice its width)"},
           },
       .run = run_zone,
       .usage = R"(zone{ edge = 1.5, far = 10, near = "stage1" })",

@@ -103,6 +103,9 @@ struct ZoneDef {
   // No block edge shorter than this fraction of the zone edge there: cuts are bent together
   // where they would make one (Model::cut); 0: only model{ tolerance }.
   double sliver = 0.1;
+  // Refused before meshing when the finest edge would make about more zones than this
+  // (Model::zone's estimate).
+  double max_zones = 1e6;
 };
 
 // What a checkpoint records beside the model: the script that made it, when, and where.

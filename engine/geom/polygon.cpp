@@ -89,6 +89,12 @@ Box bounding_box(const Polygon& polygon) {
   return box;
 }
 
+double perimeter(const Polygon& polygon) {
+  double length = 0.0;
+  for (size_t i = 0; i < polygon.size(); ++i) length += norm(polygon[(i + 1) % polygon.size()] - polygon[i]);
+  return length;
+}
+
 void check_coordinate(Vec2 p, std::string_view what) {
   if (!std::isfinite(p.x) || !std::isfinite(p.y))
     fail("{} is not a finite number ({}, {})", what, p.x, p.y);

@@ -13,6 +13,7 @@ namespace edem {
 
 // Positive when counter-clockwise [m^2].
 double signed_area(const Polygon& polygon);
+double perimeter(const Polygon& polygon);
 Vec2 centroid(const Polygon& polygon);
 
 // Point strictly inside (not on the boundary), tested exactly.

@@ -1182,6 +1182,33 @@ double SizeField::at(Vec2 point) const {
   return SizeEvaluator(*this).at(point);
 }
 
+double estimated_zone_count(const std::vector<Polygon>& blocks, const SizeField& size) {
+  if (blocks.empty()) return 0.0;
+  const SizeEvaluator at(size);
+  const auto zone_area = [](double edge) { return std::sqrt(3.0) / 4.0 * edge * edge; };
+  Polygon all;
+  for (const Polygon& block : blocks) all.insert(all.end(), block.begin(), block.end());
+  const Box box = bounding_box(all);
+  constexpr int kSamples = 200;
+  const double dx = (box.x1 - box.x0) / kSamples, dy = (box.y1 - box.y0) / kSamples;
+  double count = 0.0;
+  for (int i = 0; i < kSamples; ++i)
+    for (int j = 0; j < kSamples; ++j) {
+      const Vec2 p{box.x0 + (i + 0.5) * dx, box.y0 + (j + 0.5) * dy};
+      for (const Polygon& block : blocks)
+        if (contains(block, p)) {
+          count += dx * dy / zone_area(at.at(p));
+          break;
+        }
+    }
+  for (const Polygon& block : blocks) {  // thin blocks, which the grid may miss
+    const double area = std::fabs(signed_area(block)), length = perimeter(block);
+    const double width = 2.0 * area / length, edge = at.at(block.front());
+    if (width < edge) count += length / (2.0 * width);
+  }
+  return count;
+}
+
 Mesh zone_blocks(const BlockSet& blocks, const std::vector<const SizeField*>& size_of_block,
                  int max_zones_per_block) {
   const size_t count = blocks.blocks.size();

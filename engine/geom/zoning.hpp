@@ -65,6 +65,12 @@ struct SizeField {
   double at(Vec2 point) const;
 };
 
+// About how many zones `size` makes in `blocks`, before any meshing: the blocks' area over an
+// equilateral zone's at the size there (sampled on a 200 x 200 grid over them), and for a block
+// thinner than its zones its perimeter over twice its width (zones of good shape in a strip are
+// no longer than it is wide).
+double estimated_zone_count(const std::vector<Polygon>& blocks, const SizeField& size);
+
 // Minimum zone angle the mesher guarantees away from sharp block corners [deg].
 inline constexpr double kMinZoneAngle = 20.0;
 

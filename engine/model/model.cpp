@@ -79,6 +79,15 @@ Polygon Model::resolve(const RegionRef& ref) const { return resolve_in(inputs_, 
 void Model::add_block(const BlockDef& def) {
   check_geometry_open();
   validate_polygon(def.polygon, "block");
+  // A block thinner than the geometric tolerance cannot be cut or zoned (it is all sliver): say so
+  // now rather than after minutes of mesh refinement.
+  const double width = 2.0 * std::fabs(signed_area(def.polygon)) / perimeter(def.polygon);
+  Inputs with = inputs_;
+  with.bases.push_back(def);
+  if (width < tolerance_of(with))
+    fail("block is {:.3g} m wide (twice its area over its perimeter), thinner than the model's "
+         "geometric tolerance, {:.3g} m: make it wider, or leave it out",
+         width, tolerance_of(with));
   for (size_t i = 0; i < inputs_.bases.size(); ++i)
     if (interiors_overlap(def.polygon, inputs_.bases[i].polygon))
       fail("block overlaps block {} given earlier; blocks must not overlap", i + 1);
@@ -170,6 +179,14 @@ void Model::zone(const ZoneDef& def) {
   request.size.far = far;
   request.size.growth = def.growth;
   for (const RegionRef& ref : def.near) request.size.near.push_back(resolve(ref));
+  // Meshing too many zones takes minutes and gigabytes: refused before it, on an estimate.
+  std::vector<Polygon> bases;
+  for (const BlockDef& base : inputs_.bases) bases.push_back(base.polygon);
+  const double zones = estimated_zone_count(bases, request.size);
+  if (zones > def.max_zones)
+    fail("these zones would be about {:.3g}, more than max_zones = {:.3g}: a larger edge (or far and near, "
+         "fine only where it matters), blocks no thinner than their zones, or a larger max_zones",
+         zones, def.max_zones);
   if (!def.region.name.empty())
     request.region = region_index(def.region.name);
   else if (!def.region.polygon.empty())
