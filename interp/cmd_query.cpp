@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <string_view>
 #include <lua.hpp>
 
 #include "adaptor.hpp"
@@ -19,6 +20,17 @@
 
 namespace edem {
 namespace {
+
+// info().contacts: the contacts there are now, as contacts() counts them (a judgment or an
+// excavation leaves them to be found again at the next cycle; "as last found" would read 0
+// meanwhile). Counting stale ones means finding them on a copy of the model, so it is done only
+// when a script reads the field, not at every info().
+int count_contacts_when_read(lua_State* L) {
+  const char* key = lua_tostring(L, 2);
+  if (key == nullptr || std::string_view(key) != "contacts") return 0;
+  lua_pushinteger(L, context_of(L).model().contacts_now());
+  return 1;
+}
 
 int run_info(lua_State* L, Context& context, const Args&) {
   Model& model = context.model();
@@ -49,11 +61,15 @@ int run_info(lua_State* L, Context& context, const Args&) {
   set_field(L, "time", solver.time);
   set_field(L, "step", solver.step);
   set_field(L, "ratio", solver.ratio);
-  // The contacts there are now, as contacts() counts them: a judgment or an excavation leaves them
-  // to be found again at the next cycle, and "as last found" would read 0 meanwhile.
-  set_field(L, "contacts", model.cycling_started() ? model.contacts_now() : solver.contacts);
+  if (!model.cycling_started()) set_field(L, "contacts", solver.contacts);
   set_field(L, "late_contacts", static_cast<long long>(solver.late_contacts));
   set_field(L, "contact_searches", static_cast<long long>(solver.contact_searches));
+  if (model.cycling_started()) {  // contacts: counted when read (below)
+    lua_createtable(L, 0, 1);
+    lua_pushcfunction(L, count_contacts_when_read);
+    lua_setfield(L, -2, "__index");
+    lua_setmetatable(L, -2);
+  }
   return 1;
 }
 
