@@ -74,7 +74,11 @@ std::string overlap_cause(const Mechanics& m, const Measure& measure) {
   }
   const double moved = m.step * std::hypot(m.v[2 * n], m.v[2 * n + 1]);
   std::string cause;
-  if (needs > 0.5 * limit)
+  if (m.settings.mode == SolverMode::dynamic && m.settings.step > 0.0 && m.settings.step >= m.critical_step)
+    cause = fmt::format("the forced time step {:.6g} s is {:.3g} times the critical step {:.6g} s of the "
+                        "stiffest gridpoint: leave set{{ step }} out to get the automatic step",
+                        m.settings.step, m.settings.step / m.critical_step, m.critical_step);
+  else if (needs > 0.5 * limit)
     cause = fmt::format("joint material '{}' is too soft for this stress: sigma_n / kn is {:.3g} m, more than half "
                         "the limit; give a larger set{{ overlap }}, or a stiffer joint",
                         m.joint_materials[static_cast<size_t>(c.material)].name, needs);
