@@ -89,11 +89,24 @@ std::vector<std::pair<std::string, std::string>> parse_settings(const std::vecto
 std::atomic<int> stop_signal{0};
 static_assert(std::atomic<int>::is_always_lock_free);
 
+// Seconds a run has to stop by itself after the first signal: cycling stops within a cycle and
+// saves; work that does not look at the flag (meshing, a prepass step) is ended when they are up.
+constexpr unsigned kStopGraceSeconds = 20;
+
+// The grace is over: the signal that asked to stop ends the process, as if it were not caught.
+extern "C" void stop_now(int) {
+  const int signal = stop_signal.load();
+  std::signal(signal, SIG_DFL);
+  std::raise(signal);
+}
+
 // The first SIGINT or SIGTERM asks cycling to stop at the end of its cycle (the model is then
-// saved); a second one ends the process at once, as if it were not caught.
+// saved); a second one, or the end of the grace, ends the process at once.
 extern "C" void ask_to_stop(int signal) {
   stop_signal.store(signal);
   std::signal(signal, SIG_DFL);
+  std::signal(SIGALRM, stop_now);
+  ::alarm(kStopGraceSeconds);
   const char text[] = "\nedem: stopping at the end of this cycle (again to quit at once)\n";
   [[maybe_unused]] const auto written = ::write(2, text, sizeof text - 1);
 }
