@@ -19,19 +19,18 @@ void check_finite(double value, std::string_view what) {
 
 Box extent_of(const std::vector<BlockDef>& bases);
 
-// A pattern's origin (jset, crackseed): the lines are laid from it to the blocks, so one far away
-// costs time and memory for nothing (the pattern repeats; an origin among the blocks gives the
-// same lines).
-void check_origin(Vec2 origin, const Box& blocks) {
+// A pattern's origin (jset, crackseed): its lines are laid one by one from the origin to the
+// blocks, so one very many spacings away costs time and memory for nothing (the pattern repeats;
+// an origin among the blocks gives the same lines). Up to 1e7 lines away (far-off map
+// coordinates with a default origin at 0) is allowed.
+void check_origin(Vec2 origin, const Box& blocks, double spacing) {
   check_coordinate(origin, "origin");
-  const double size = std::max(blocks.diagonal(), 1e-9);
   const double away = std::max({blocks.x0 - origin.x, origin.x - blocks.x1, blocks.y0 - origin.y,
                                 origin.y - blocks.y1, 0.0});
-  if (away > 1000.0 * size)
-    fail("origin ({:g}, {:g}) is {:.3g} m from the blocks, which are {:.3g} m across: give one "
-         "within 1000 times their size (the pattern repeats: an origin among them gives the same "
-         "lines)",
-         origin.x, origin.y, away, size);
+  if (away > 1e7 * spacing)
+    fail("origin ({:g}, {:g}) is {:.3g} m from the blocks, {:.3g} spacings: its lines are laid from "
+         "there; give an origin nearer them (the pattern repeats: one among them gives the same lines)",
+         origin.x, origin.y, away, away / spacing);
 }
 
 Box extent_of(const std::vector<BlockDef>& bases) {
@@ -117,7 +116,8 @@ int Model::add_joint_set(const JointSetDef& def) {
   if (!(def.angle_dev >= 0.0 && def.angle_dev < 90.0))
     fail("angle_dev must be in [0, 90), got {}", def.angle_dev);
   if (inputs_.bases.empty()) fail("no blocks to cut: define blocks with block{{...}} first");
-  check_origin(def.origin, extent_of(inputs_.bases));
+  check_origin(def.origin, extent_of(inputs_.bases),
+               *std::min_element(def.spacing.begin(), def.spacing.end()));
   if (!def.region.empty()) resolve(def.region);  // throws for an unknown name or bad polygon
   Inputs next = inputs_;
   next.joint_sets.push_back(def);
@@ -145,7 +145,7 @@ void Model::add_crackseed(const CrackSeedDef& def) {
   if (!(def.spacing > 0.0) || !std::isfinite(def.spacing))
     fail("spacing must be > 0, got {}", def.spacing);
   if (inputs_.bases.empty()) fail("no blocks to cut: define blocks with block{{...}} first");
-  check_origin(def.origin, extent_of(inputs_.bases));
+  check_origin(def.origin, extent_of(inputs_.bases), def.spacing);
   if (!def.region.empty()) resolve(def.region);  // throws for an unknown name or bad polygon
   Inputs next = inputs_;
   next.crack_seeds.push_back(def);
