@@ -27,6 +27,7 @@
 
 #include "checkpoint_summary.hpp"
 #include "core/error.hpp"
+#include "core/names.hpp"
 #include "interpreter.hpp"
 #include "reference.hpp"
 #include "sweep.hpp"
@@ -70,11 +71,7 @@ std::vector<std::pair<std::string, std::string>> parse_settings(const std::vecto
     if (equals == std::string::npos)
       throw CLI::ValidationError("--set", fmt::format("'{}' has no '=': give KEY=VALUE", text));
     const std::string key = text.substr(0, equals);
-    const bool name = !key.empty() && !std::isdigit(static_cast<unsigned char>(key[0])) &&
-                      std::all_of(key.begin(), key.end(), [](char c) {
-                        return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
-                      });
-    if (!name)
+    if (!edem::is_identifier(key))
       throw CLI::ValidationError(
           "--set", fmt::format("'{}': the key must be a name (letters, digits, _; not a digit first)", key));
     for (const auto& [seen, value] : settings)

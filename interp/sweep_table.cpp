@@ -18,21 +18,16 @@
 namespace edem {
 namespace {
 
-bool is_name(const std::string& key) {
-  return !key.empty() && !std::isdigit(static_cast<unsigned char>(key[0])) &&
-         std::all_of(key.begin(), key.end(), [](char c) {
-           return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
-         });
+// A character a run's folder name may have.
+bool folder_char(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.' || c == '+';
 }
 
 // A name for a run's folder under the sweep's: plain characters, not too long for a file
 // system, and none of the sweep's own files (sweep.csv, sweep.sbatch, slurm/).
 bool folder_safe(const std::string& name) {
   return !name.empty() && name != "." && name != ".." && name.size() <= 200 && name != "slurm" &&
-         name.rfind("sweep", 0) != 0 && std::all_of(name.begin(), name.end(), [](char c) {
-           return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.' ||
-                  c == '+';
-         });
+         name.rfind("sweep", 0) != 0 && std::all_of(name.begin(), name.end(), folder_char);
 }
 
 // "case-3_depth-158": a row's settings as a folder name.
@@ -43,9 +38,7 @@ std::string name_from(const Settings& settings) {
     name += key + '-' + value;
   }
   for (char& c : name)
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '-' && c != '.' &&
-        c != '+')
-      c = '-';
+    if (!folder_char(c)) c = '-';
   return name;
 }
 
@@ -117,7 +110,7 @@ SweepTable read_sweep_table(const std::string& path) {
               "a setting "
               "of that name cannot be swept",
               path, line, column);
-        if (!is_name(column))
+        if (!is_identifier(column))
           fail(
               "{}:{}: column {}: '{}' is not a setting's name (letters, digits, _; not a digit "
               "first)",

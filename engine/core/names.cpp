@@ -5,6 +5,12 @@
 
 namespace edem {
 
+bool is_identifier(std::string_view name) {
+  return !name.empty() && !std::isdigit(static_cast<unsigned char>(name[0])) &&
+         std::all_of(name.begin(), name.end(),
+                     [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+}
+
 // Levenshtein's distance with a swap of two neighbouring letters counted as one edit (the
 // commonest typo: "widht"), letters compared without case.
 int edit_distance(std::string_view a, std::string_view b) {

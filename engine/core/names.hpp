@@ -9,7 +9,11 @@
 
 namespace edem {
 
-// Levenshtein distance between two ASCII strings, case-insensitive.
+// A name as Lua and the settings take it: letters, digits and _, not a digit first.
+bool is_identifier(std::string_view name);
+
+// Levenshtein distance between two ASCII strings, case-insensitive, a swap of two neighbouring
+// letters counting as one edit.
 int edit_distance(std::string_view a, std::string_view b);
 
 // The candidate closest to `name` if it is close enough to be a likely typo, else "".

@@ -117,6 +117,7 @@ void write_checkpoint(const std::string& path, const std::function<void(hid_t fi
   if (!target.parent_path().empty() && !fs::is_directory(target.parent_path(), ec))
     fail("cannot write '{}': directory '{}' does not exist", path, target.parent_path().string());
   if (fs::is_directory(target, ec)) fail("cannot write '{}': it is a directory", path);
+  remove_stale_temporaries(target);  // a killed save's (a checkpoint's can be tens of MB)
   TempFile tmp(target);
   {
     const h5::QuietErrors quiet;

@@ -51,9 +51,7 @@ inline void remove_stale_temporaries(const std::filesystem::path& target) {
 class TempFile {
  public:
   explicit TempFile(const std::filesystem::path& target)
-      : target_(target), path_(temporary_for(target)) {
-    remove_stale_temporaries(target);
-  }
+      : target_(target), path_(temporary_for(target)) {}
   TempFile(const TempFile&) = delete;
   TempFile& operator=(const TempFile&) = delete;
   ~TempFile() {
