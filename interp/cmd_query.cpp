@@ -64,6 +64,7 @@ int run_info(lua_State* L, Context& context, const Args&) {
   if (!model.cycling_started()) set_field(L, "contacts", solver.contacts);
   set_field(L, "late_contacts", static_cast<long long>(solver.late_contacts));
   set_field(L, "contact_searches", static_cast<long long>(solver.contact_searches));
+  set_field(L, "threads", solver.threads);
   if (model.cycling_started()) {  // contacts: counted when read (below)
     lua_createtable(L, 0, 1);
     lua_pushcfunction(L, count_contacts_when_read);
@@ -401,7 +402,10 @@ const Command& info_command() {
           "(contacts found already pressed in by more than a tenth of their reach, since the "
           "blocks were zoned: detection came too late for them; it should stay 0), contact_searches "
           "(gridpoints whose contacts have been searched for since the blocks were zoned: the cost of "
-          "detection, which searches again only near blocks that moved)",
+          "detection, which searches again only near blocks that moved), threads (those cycling uses: "
+          "--threads, else the cores the process may run on, no more than the model keeps busy, and fewer "
+          "while its threads wait for each other because another process holds a core; before the first "
+          "cycle, those asked for)",
       .usage = "print(info().blocks)",
   };
   return command;

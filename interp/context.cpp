@@ -3,6 +3,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <string>
 #include <lua.hpp>
 
 namespace edem {
@@ -22,6 +23,16 @@ void Context::close_progress_line() {
   std::fputs("\r\033[K", stdout);  // back to the line's start, erase it
   std::fflush(stdout);
   progress_line_open = false;
+}
+
+void Context::say_run_notice(const std::string& text) {
+  if (quiet) return;
+  close_progress_line();
+  const Running* run = cycling();
+  std::string at = "edem: ";
+  if (run != nullptr) at = run->cycling_at + ": " + std::string(run->command) + ": ";
+  std::fflush(stdout);  // in order with what the script printed
+  std::fprintf(stderr, "%snote: %s\n", at.c_str(), text.c_str());
 }
 
 std::string Context::output_path(const std::string& file) const {

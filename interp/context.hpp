@@ -71,6 +71,10 @@ struct Context {
   const std::atomic<int>* stop = nullptr;
   int interrupted_by = 0;  // the signal that ended the script, once it has
 
+  // Prints what a run says about itself (Model::set_notice) on stderr, after the position of the
+  // command cycling; nothing with --quiet.
+  void say_run_notice(const std::string& text);
+
   // Clears a terminal progress line still showing (after a run, or before its error).
   void close_progress_line();
 
@@ -88,6 +92,7 @@ struct Context {
     next->set_threads(threads);
     next->set_progress(progress, progress_every);
     next->set_prepass_progress(prepass_progress);
+    next->set_notice([this](const std::string& text) { say_run_notice(text); });
     next->set_stop(stop);
     current = std::move(next);
     histories_written = false;

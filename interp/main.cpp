@@ -184,8 +184,9 @@ int main(int argc, char** argv) {
   app.fallthrough();
   app.add_flag("-q,--quiet", options.quiet, "print no progress while running");
   app.add_option("--threads", options.threads,
-                 "threads for cycling the model (default: OpenMP's, e.g. OMP_NUM_THREADS); at "
-                 "most one per 1000 zones, which a smaller model could not keep busy")
+                 "threads for cycling the model (default: OMP_NUM_THREADS, else the cores the process may "
+                 "run on); at most one per 1000 zones, which a smaller model could not keep busy, and fewer "
+                 "while they wait for each other (another process busy on the same cores)")
       ->check(CLI::Range(1, 4096));
   app.add_option("--set", options.settings,
                  "KEY=VALUE for the script, as arg.KEY (a number or boolean when VALUE reads as "

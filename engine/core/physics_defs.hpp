@@ -410,6 +410,7 @@ struct SolverInfo {
   int contacts = 0;      // contacts as last found (0 until found: first cycle or query)
   long late_contacts = 0;  // contacts found already pressed in (ContactSet::late)
   long contact_searches = 0;  // gridpoints searched for contacts (ContactSet::searched)
+  int threads = 1;  // the threads cycling uses (before the first cycle: those it may use)
 };
 
 }  // namespace edem

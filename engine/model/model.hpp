@@ -86,6 +86,8 @@ class Model {
   // `report` is called during prepass{} after a load step each time the progress interval has
   // passed (set_progress's); null: no reports.
   void set_prepass_progress(std::function<void(const PrepassProgress&)> report);
+  // What a run says once about itself while cycling (it took fewer threads than asked).
+  void set_notice(std::function<void(const std::string&)> say);
   // Cycling ends at the end of the cycle running when `*flag` turns non-zero (a signal's number:
   // Ctrl-C), with SolveResult::interrupted; null: never. The flag must outlive the model.
   void set_stop(const std::atomic<int>* flag);

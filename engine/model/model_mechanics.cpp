@@ -244,9 +244,12 @@ void Model::set_prepass_progress(std::function<void(const PrepassProgress&)> rep
   mechanics_->prepass_progress = std::move(report);
 }
 
+void Model::set_notice(std::function<void(const std::string&)> say) { mechanics_->notice = std::move(say); }
+
 void Model::set_threads(int threads) {
   if (threads < 0) fail("threads must be >= 1, got {}", threads);
   mechanics_->threads = threads;
+  mechanics_->thread_watch = ThreadWatch{};
 }
 
 void Model::reset(const ResetWhat& what) {
@@ -276,6 +279,7 @@ SolverInfo Model::solver_info() const {
   info.contacts = mechanics_->contacts.detected ? static_cast<int>(mechanics_->contacts.list.size()) : 0;
   info.late_contacts = mechanics_->contacts.late;
   info.contact_searches = mechanics_->contacts.searched;
+  info.threads = mechanics_->partition.threads > 0 ? thread_count(*mechanics_) : asked_threads(*mechanics_);
   return info;
 }
 

@@ -31,6 +31,7 @@
 #include <array>
 #include <cmath>
 #include <utility>
+#include <vector>
 
 #include "bolt/bolt_coupling.hpp"
 #include "constitutive/mohr_coulomb.hpp"
@@ -517,10 +518,21 @@ Measure run_cycles(Mechanics& m, int count) {
   const bool coupled = !m.contacts.list.empty() || !m.bolt_hosts.gather.empty();
   Measure bolt_measure;
 
+  // Each thread's waits at the barriers, and when it finished (the rest of its wait is the join).
+  std::vector<double> waited(static_cast<size_t>(ranges), 0.0), finished(static_cast<size_t>(ranges), 0.0);
+  int team_size = 1;
+  const double region_start = omp_get_wtime();
 #pragma omp parallel num_threads(ranges)
   {
     // Each thread takes the ranges t, t + team, ...; with a full team that is range t.
     const int team = omp_get_num_threads(), me = omp_get_thread_num();
+    if (me == 0) team_size = team;
+    double wait = 0.0;
+    const auto barrier = [&wait] {
+      const double arrived = omp_get_wtime();
+#pragma omp barrier
+      wait += omp_get_wtime() - arrived;
+    };
     for (int cycle = 0; cycle < count; ++cycle) {
       const bool measure = cycle == count - 1;
       for (int r = me; r < ranges; r += team) {
@@ -536,14 +548,17 @@ Measure run_cycles(Mechanics& m, int count) {
       if (me == 0) step_release(m);
       // The bolts read the nodes' displacements, as the zones do, and move only their own nodes.
       if (me == 0) bolt_cycle(m, motion, record && cycle == 0, measure, bolt_measure);
-#pragma omp barrier
+      barrier();
       for (int r = me; r < ranges; r += team) {
         const int b = part.node_begin[static_cast<size_t>(r)], e = part.node_begin[static_cast<size_t>(r) + 1];
         node_motion(m, b, e, motion, record && cycle == 0, measure, coupled, partials);
       }
-#pragma omp barrier
+      barrier();
     }
+    waited[static_cast<size_t>(me)] = wait;
+    finished[static_cast<size_t>(me)] = omp_get_wtime();
   }
+  const double region_end = omp_get_wtime();
   m.adaptive.have_r_start = true;
   release_work(m);
 
@@ -594,6 +609,10 @@ Measure run_cycles(Mechanics& m, int count) {
   out.rayleigh_den += bolt_measure.rayleigh_den;
   out.finite = out.finite && bolt_measure.finite;
   if (!std::isfinite(out.unbalanced) || !std::isfinite(out.kinetic)) out.finite = false;
+  out.team = team_size;
+  out.wall = region_end - region_start;
+  for (int t = 0; t < team_size; ++t)
+    out.waited += waited[static_cast<size_t>(t)] + (region_end - finished[static_cast<size_t>(t)]);
   return out;
 }
 

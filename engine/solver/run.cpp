@@ -15,6 +15,7 @@
 #include "solver/cycle.hpp"
 #include "solver/energy.hpp"
 #include "solver/excavation.hpp"
+#include "solver/thread_watch.hpp"
 #include "solver/prepare.hpp"
 
 namespace edem {
@@ -271,6 +272,13 @@ struct EnergyAtExit {
   const bool& pending_;
 };
 
+// Shrinks the team while its threads are not all running, grows it back when they are.
+void follow_thread_watch(Mechanics& m, const Measure& batch, long cycles) {
+  const TeamChange change = watch_team(m.thread_watch, batch.team, batch.wall, batch.waited, cycles, wanted_threads(m));
+  if (change.changed) split_among_threads(m);
+  if (!change.notice.empty() && m.notice) m.notice(change.notice);
+}
+
 }  // namespace
 
 SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double target_ratio) {
@@ -347,6 +355,7 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
     }
     m.energy.last_current = false;
     const Measure measure = run_cycles(m, static_cast<int>(batch));
+    follow_thread_watch(m, measure, batch);
     result.cycles += batch;
     m.cycles_run += batch;
     m.info.cycle += batch;

@@ -17,10 +17,20 @@ constexpr size_t kWorkPerThread = 1000;
 
 }  // namespace
 
-int thread_count(const Mechanics& m) {
-  const int wanted = m.threads > 0 ? m.threads : std::max(1, omp_get_max_threads());
+int asked_threads(const Mechanics& m) {
+  // OpenMP's default is the cores the process may run on (its affinity mask), or OMP_NUM_THREADS.
+  return m.threads > 0 ? m.threads : std::max(1, omp_get_max_threads());
+}
+
+int wanted_threads(const Mechanics& m) {
+  const int wanted = asked_threads(m);
   const size_t work = m.active.size() + (m.faces.touchable_blocks > 1 ? m.faces.nodes.size() : 0);
   return static_cast<int>(std::clamp<size_t>(work / kWorkPerThread, 1, static_cast<size_t>(wanted)));
+}
+
+int thread_count(const Mechanics& m) {
+  const int wanted = wanted_threads(m);
+  return m.thread_watch.cap > 0 ? std::min(wanted, m.thread_watch.cap) : wanted;
 }
 
 }  // namespace edem

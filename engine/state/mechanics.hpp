@@ -26,6 +26,7 @@
 #include "state/material_params.hpp"
 #include "state/sections.hpp"
 #include "state/stress.hpp"
+#include "state/thread_watch.hpp"
 
 namespace edem {
 
@@ -248,14 +249,23 @@ struct Mechanics {
   int next_handle = 1;
   std::function<void(const RunProgress&)> progress;  // reports a long run (Model::set_progress)
   const std::atomic<int>* stop = nullptr;            // cycling ends when it is non-zero (Model::set_stop)
+  std::function<void(const std::string&)> notice;    // says something once about a run (Model::set_notice)
+  ThreadWatch thread_watch;                          // how the threads are doing (runtime only)
   std::function<void(const PrepassProgress&)> prepass_progress;  // every progress_every [s] of a prepass
   double progress_every = 0.0;                       // [s] between reports; 0: none
   std::vector<History> histories;
   EnergyLedger energy;  // the energy balance (state/energy_ledger.hpp)
 };
 
-// The number of threads cycling will use: OpenMP's (or the model's own) for a model with
-// enough work for them.
+// The threads asked for: set_threads's, else OpenMP's default.
+int asked_threads(const Mechanics& m);
+
+// The number of threads cycling would use unwatched: OpenMP's (or the model's own) for a model
+// with enough work for them.
+int wanted_threads(const Mechanics& m);
+
+// The number of threads cycling uses: the wanted ones, fewer while the thread watch has found
+// that a smaller team is faster (solver/thread_watch.hpp).
 int thread_count(const Mechanics& m);
 
 }  // namespace edem

@@ -26,6 +26,11 @@ struct Measure {
   int overlapping = -1;      // lowest contact whose overlap is beyond its limit, or -1
   double overlap = 0.0;      // that overlap [m]
   bool finite = true;        // every force and velocity finite
+  // What the batch cost its team of threads: wall time, and the time its threads spent waiting
+  // for each other at barriers, summed over the threads [s].
+  int team = 1;
+  double wall = 0.0;
+  double waited = 0.0;
 };
 
 }  // namespace edem
