@@ -142,6 +142,7 @@ int run_prepass(lua_State* L, Context& context, const Args& args) {
   def.joints = args.boolean("joints");
   def.duration = args.number("duration");
   def.newton.keep_on_failure = args.string("on_failure") == "keep";
+  def.newton.seconds = args.number("seconds");
   const PrepassResult r = [&] {
     struct Closer {  // the progress line ends with the prepass, however it ends
       Context& context;
@@ -219,6 +220,10 @@ const Command& prepass_command() {
               {"duration", Type::number, "s", ge(0), "0",
                "held gridpoints with a velocity (boundary{ xvel, yvel }) move by velocity x duration in the first "
                "stage, in its load steps (static mode: velocities are per cycle, so this is cycles)"},
+              {"seconds", Type::number, "s", gt(0), "600",
+               "the whole prepass's time budget: past it the prepass stops at the Newton iteration running, "
+               "as a stage that fails does (on_failure decides what follows), naming the stage and the load "
+               "factor it reached"},
               {"on_failure", Type::string, "", any_value, "\"error\"",
                "a stage whose Newton iterations do not converge: error stops the script; keep ends the prepass "
                "there and returns the result so far (its failure says why)",

@@ -93,6 +93,11 @@ PrepassResult Model::prepass(const PrepassDef& def) {
   std::vector<double> u = m.u;
   std::vector<int> zones = result.zones;
   const auto started = std::chrono::steady_clock::now();
+  // A budget of a century or more is none (and would overflow the clock's count).
+  const auto deadline = def.newton.seconds >= 3e9
+                            ? std::chrono::steady_clock::time_point::max()
+                            : started + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                            std::chrono::duration<double>(def.newton.seconds));
   auto reported = started;
   int iterations = 0;
   for (size_t stage = 0; stage <= stage_zones.size(); ++stage) {
@@ -128,7 +133,7 @@ PrepassResult Model::prepass(const PrepassDef& def) {
                           .seconds = std::chrono::duration<double>(now - started).count()});
     };
     StageLog log = solve_stage(m, p, def.newton, stage == 0 ? name : fmt::format("stage {} ({})", stage, name), yielded,
-                               step_done);
+                               step_done, deadline);
     iterations += log.iterations;
     for (auto& s : result.state) s.push_back(kExcavatedInPrepass);
     for (size_t k = 0; k < p.zones.size(); ++k) {

@@ -32,6 +32,8 @@ struct System {
   std::string error;          // KINSOL's last message
   bool stop_when_stalled = false;  // this attempt gives up once it stops moving
   bool stalled = false;
+  std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
+  bool out_of_time = false;  // the prepass's time budget ran out during this attempt
 };
 
 // A line search that gives the same out-of-balance force, to the last bit, at this many iterations
@@ -74,6 +76,10 @@ int jacobian(N_Vector x, N_Vector f, SUNMatrix jac, void* data, N_Vector, N_Vect
   if (s.stop_when_stalled && stalled(s.log->residuals)) {
     s.stalled = true;
     return -1;  // unrecoverable: KINSOL stops this attempt, and the load step is cut back
+  }
+  if (std::chrono::steady_clock::now() > s.deadline) {
+    s.out_of_time = true;
+    return -1;  // unrecoverable: KINSOL stops, and so does the prepass
   }
   scatter_unknowns(*s.p, N_VGetArrayPointer_Serial(x), s.u);
   tangent(*s.m, *s.p, s.u, s.triplets);
@@ -197,6 +203,7 @@ int newton(Kinsol& k, System& s, ImplicitProblem& p, double to, StageLog& log) {
   s.error.clear();
   int flag = 0;
   for (const int strategy : {KIN_NONE, KIN_LINESEARCH}) {
+    if (s.out_of_time) break;
     gather_unknowns(p, p.u0, N_VGetArrayPointer_Serial(k.x));
     s.log->residuals.clear();
     s.stop_when_stalled = strategy == KIN_LINESEARCH;  // full steps may well climb back down
@@ -218,7 +225,8 @@ int newton(Kinsol& k, System& s, ImplicitProblem& p, double to, StageLog& log) {
 // and p stays at the last converged step.
 StageLog solve_in_steps(const Mechanics& m, ImplicitProblem& p, const NewtonSettings& settings,
                         int steps, const std::string& stage, std::vector<std::uint8_t>& yielded,
-                        const StepDone& step_done, int iterations_before) {
+                        const StepDone& step_done, int iterations_before,
+                        std::chrono::steady_clock::time_point deadline) {
   StageLog log;
   const sunindextype n = p.unknowns;
   yielded.assign(p.zones.size(), 0);
@@ -232,6 +240,7 @@ StageLog solve_in_steps(const Mechanics& m, ImplicitProblem& p, const NewtonSett
   s.r0.resize(static_cast<size_t>(n));
   sum_to_unknowns(p, s.force, s.r0.data());
   s.scale = force_scale(m, p, s);
+  s.deadline = deadline;
   log.scale = s.scale;
   Kinsol k;
   start_kinsol(k, s, n, p.zones.size(), settings);
@@ -257,6 +266,17 @@ StageLog solve_in_steps(const Mechanics& m, ImplicitProblem& p, const NewtonSett
     sum_to_unknowns(p, s.force, out.data());
     double largest = 0.0;
     for (size_t j = 0; j < out.size(); ++j) largest = std::max(largest, std::abs(out[j] - (1.0 - to) * s.r0[j]));
+    if (s.out_of_time) {
+      log.failure = fmt::format(
+          "{}: the prepass's time budget of {:.6g} s ran out at load factor {:.6g} (this stage so far: "
+          "Newton iterations {}, cut-backs {}, in {} load steps from its start); prepass{{ seconds = ... }} "
+          "gives it more. A load path this slow is usually one Newton creeps along in ever smaller steps: "
+          "rock yielding through, or a block or wedge near losing its support",
+          stage, settings.seconds, done, iterations_before + log.iterations, log.cutbacks, steps);
+      log.reached = done;
+      log.out_of_time = true;
+      break;
+    }
     if (flag >= 0 && largest <= settings.tolerance * s.scale) {
       s.log->residuals.push_back(largest / s.scale);
       s.log->converged = true;
@@ -299,16 +319,17 @@ StageLog solve_in_steps(const Mechanics& m, ImplicitProblem& p, const NewtonSett
 // factor 0.625; in 4 or 10, complete). A stage that every path fails may be near collapse, or
 // may be Newton's failure alone: the message cannot tell which.
 StageLog solve_stage(const Mechanics& m, ImplicitProblem& p, const NewtonSettings& settings,
-                     const std::string& stage, std::vector<std::uint8_t>& yielded, const StepDone& step_done) {
+                     const std::string& stage, std::vector<std::uint8_t>& yielded, const StepDone& step_done,
+                     std::chrono::steady_clock::time_point deadline) {
   const auto start = std::chrono::steady_clock::now();
   const ImplicitProblem at_start = p;
   int steps = settings.steps;
-  StageLog log = solve_in_steps(m, p, settings, steps, stage, yielded, step_done, 0);
-  for (int restart = 1; restart <= settings.restarts && !log.failure.empty(); ++restart) {
+  StageLog log = solve_in_steps(m, p, settings, steps, stage, yielded, step_done, 0, deadline);
+  for (int restart = 1; restart <= settings.restarts && !log.failure.empty() && !log.out_of_time; ++restart) {
     if (steps > std::numeric_limits<int>::max() / 2) break;  // no finer path to count
     p = at_start;
     steps *= 2;
-    StageLog again = solve_in_steps(m, p, settings, steps, stage, yielded, step_done, log.iterations);
+    StageLog again = solve_in_steps(m, p, settings, steps, stage, yielded, step_done, log.iterations, deadline);
     again.iterations += log.iterations;
     again.cutbacks += log.cutbacks;
     again.steps.insert(again.steps.begin(), log.steps.begin(), log.steps.end());
@@ -316,6 +337,7 @@ StageLog solve_stage(const Mechanics& m, ImplicitProblem& p, const NewtonSetting
     log = std::move(again);
   }
   log.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (log.out_of_time && !settings.keep_on_failure) fail("{}", log.failure);
   if (!log.failure.empty() && !settings.keep_on_failure)
     fail("{}; if it is Newton's failure alone, more steps or a softer load path may help", log.failure);
   // keep_on_failure: p stays at the last attempt's last converged step, and the caller solves no

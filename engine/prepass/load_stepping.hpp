@@ -2,6 +2,7 @@
 // out-of-balance force at the start applied in load steps, cut back when Newton fails.
 #pragma once
 
+#include <chrono>
 #include <functional>
 
 #include <string>
@@ -21,7 +22,9 @@ namespace edem {
 // `step_done`, if given, hears of every load step tried: the load factor reached and the stage's
 // Newton iterations so far (progress reports).
 using StepDone = std::function<void(double reached, int iterations)>;
+// The stage fails, saying so, once `deadline` has passed (checked at every Newton iteration).
 StageLog solve_stage(const Mechanics& m, ImplicitProblem& p, const NewtonSettings& settings, const std::string& stage,
-                     std::vector<std::uint8_t>& yielded, const StepDone& step_done = {});
+                     std::vector<std::uint8_t>& yielded, const StepDone& step_done = {},
+                     std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max());
 
 }  // namespace edem

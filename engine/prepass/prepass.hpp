@@ -24,6 +24,7 @@ struct NewtonSettings {
   int restarts = 2;              // a failed stage solved again from its start in twice the steps
   PrepassSolver solver = PrepassSolver::umfpack;
   bool keep_on_failure = false;  // a stage that fails ends the prepass there instead of throwing
+  double seconds = 600.0;        // the whole prepass's time budget [s]; past it, it fails as a stage does
 };
 
 struct LoadStep {
@@ -41,6 +42,7 @@ struct StageLog {
   double seconds = 0.0;
   std::string failure;            // keep_on_failure: why the stage stopped short of its full load
   double reached = 1.0;           // the load factor of its last converged step
+  bool out_of_time = false;       // stopped by the prepass's time budget
 };
 
 
