@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/error.hpp"
+#include "io/rect_clip.hpp"
 
 namespace edem {
 namespace {
@@ -23,21 +24,30 @@ struct View {
   Box box{};
   double k = 1.0;             // device units per metre
   double ox = 0.0, oy = 0.0;  // device position of the box's top-left corner
+  Rect guard{};               // what is drawn is cut to this, a margin beyond the visible area
   Vec2 operator()(Vec2 p) const { return {ox + k * (p.x - box.x0), oy + k * (box.y1 - p.y)}; }
 };
 
-// One path, one stroke for the whole batch.
+// One path, one stroke for the whole batch, cut to the guard.
 void stroke(Canvas& p, const Polylines& lines, const View& view, const Pen& pen) {
   if (lines.empty()) return;
   cairo_t* cr = p.cr();
   cairo_new_path(cr);
   for (std::size_t i = 0; i < lines.starts.size(); ++i) {
     const std::size_t end = i + 1 < lines.starts.size() ? lines.starts[i + 1] : lines.points.size();
-    const Vec2 a = view(lines.points[lines.starts[i]]);
-    cairo_move_to(cr, a.x, a.y);
-    for (std::size_t j = lines.starts[i] + 1; j < end; ++j) {
-      const Vec2 b = view(lines.points[j]);
+    bool drawing = false;  // a piece of this line was drawn, ending at `at`
+    Vec2 at{};
+    for (std::size_t j = lines.starts[i]; j + 1 < end; ++j) {
+      const auto piece = clip_segment(view(lines.points[j]), view(lines.points[j + 1]), view.guard);
+      if (!piece) {
+        drawing = false;
+        continue;
+      }
+      const auto [a, b] = *piece;
+      if (!drawing || a.x != at.x || a.y != at.y) cairo_move_to(cr, a.x, a.y);
       cairo_line_to(cr, b.x, b.y);
+      at = b;
+      drawing = true;
     }
   }
   p.pen(pen);
@@ -59,7 +69,9 @@ void hairlines(Canvas& p, const Polylines& lines, const View& view, const Pen& p
   for (std::size_t i = 0; i < lines.starts.size(); ++i) {
     const std::size_t end = i + 1 < lines.starts.size() ? lines.starts[i + 1] : lines.points.size();
     for (std::size_t j = lines.starts[i]; j + 1 < end; ++j) {
-      const Vec2 a = view(lines.points[j]), b = view(lines.points[j + 1]);
+      const auto piece = clip_segment(view(lines.points[j]), view(lines.points[j + 1]), view.guard);
+      if (!piece) continue;
+      const auto [a, b] = *piece;
       const double length = norm(b - a);
       if (!(length > 0)) continue;
       const Vec2 n{-(b.y - a.y) * half / length, (b.x - a.x) * half / length};
@@ -84,15 +96,22 @@ void draw_fill(Canvas& p, const Scene::Fill& fill, const View& view) {
   if (fill.polygons.empty()) return;
   cairo_t* cr = p.cr();
   cairo_new_path(cr);
+  std::vector<Vec2> device;
   for (const Polygon& polygon : fill.polygons) {
-    for (std::size_t i = 0; i < polygon.size(); ++i) {
-      const Vec2 d = view(polygon[i]);
-      if (i == 0)
-        cairo_move_to(cr, d.x, d.y);
-      else
-        cairo_line_to(cr, d.x, d.y);
+    device.clear();
+    bool inside = true;
+    for (const Vec2& corner : polygon) {
+      device.push_back(view(corner));
+      inside = inside && view.guard.contains(device.back().x, device.back().y);
     }
-    cairo_close_path(cr);
+    if (!inside) device = clip_polygon(device, view.guard);
+    for (std::size_t i = 0; i < device.size(); ++i) {
+      if (i == 0)
+        cairo_move_to(cr, device[i].x, device[i].y);
+      else
+        cairo_line_to(cr, device[i].x, device[i].y);
+    }
+    if (!device.empty()) cairo_close_path(cr);
   }
   p.colour(fill.colour, fill.opacity);
   cairo_fill_preserve(cr);
@@ -108,6 +127,7 @@ void draw_labels(Canvas& p, const std::vector<Scene::Label>& labels, const View&
         kLabelFont * p.s() > 2.0 * view.k * (box.y1 - box.y0))
       continue;
     const Vec2 c = view(label.at);
+    if (!view.guard.grown(view.guard.w).contains(c.x, c.y)) continue;  // too far out to reach into view
     p.text(label.text, c.x, c.y, Align::centre, {.size = kLabelFont, .halo = true});
   }
 }
@@ -194,6 +214,7 @@ Layout layout(Canvas& p, const Box& box, double width, double height, bool has_t
   out.right = right ? out.legend.x + out.legend.w : out.area.x + mw;
   out.view = View{box, plan.k, out.area.x + 0.5 * (mw - plan.k * (box.x1 - box.x0)),
                   out.area.y + 0.5 * (mh - plan.k * (box.y1 - box.y0))};
+  out.view.guard = out.area.grown(32.0 * p.s());
   return out;
 }
 
@@ -239,20 +260,32 @@ void draw_axes(Canvas& p, const Layout& lay) {
   const double s = p.s(), tick = 4.0 * s;
   const Box& b = lay.view.box;
   const Rect& a = lay.area;
-  const auto round_steps = [](double lo, double hi) {
+  // Ticks at whole steps, counted in steps, not added up: far from 0 a step can be below the
+  // coordinates' resolution. None where more than 20 would be needed.
+  const auto round_steps = [](double lo, double hi, double step) {
     std::vector<double> at;
-    const double step = round_length((hi - lo) / 6.0);
     if (!(std::isfinite(step) && step > 0)) return at;
-    for (double v = std::ceil(lo / step - 1e-9) * step; v <= hi + 1e-9 * step; v += step)
+    const double first = std::ceil(lo / step - 1e-9), last = std::floor(hi / step + 1e-9);
+    if (!(last - first <= 20.0)) return at;
+    for (double n = first; n <= last; ++n) {
+      const double v = n * step;
+      if (!at.empty() && v == at.back()) continue;
       at.push_back(std::abs(v) < 1e-9 * step ? 0.0 : v);
+    }
     return at;
   };
+  // Labels with as many decimals as the step needs, so that a narrow window's ticks differ.
+  const auto label = [](double v, double step) {
+    const int decimals = std::clamp(static_cast<int>(-std::floor(std::log10(step) + 1e-9)), 0, 17);
+    return fmt::format("{:.{}f}", v, decimals);
+  };
+  const double x_step = round_length((b.x1 - b.x0) / 6.0), y_step = round_length((b.y1 - b.y0) / 6.0);
   std::vector<std::pair<double, double>> xs, ys;  // (device position, coordinate)
-  for (const double x : round_steps(b.x0, b.x1)) {
+  for (const double x : round_steps(b.x0, b.x1, x_step)) {
     const double dx = lay.view(Vec2{x, b.y0}).x;
     if (dx >= a.x - 0.5 && dx <= a.x + a.w + 0.5) xs.push_back({dx, x});
   }
-  for (const double y : round_steps(b.y0, b.y1)) {
+  for (const double y : round_steps(b.y0, b.y1, y_step)) {
     const double dy = lay.view(Vec2{b.x0, y}).y;
     if (dy >= a.y - 0.5 && dy <= a.y + a.h + 0.5) ys.push_back({dy, y});
   }
@@ -265,11 +298,11 @@ void draw_axes(Canvas& p, const Layout& lay) {
   // so near the bottom corner that it would run into the first x label.
   const double below = a.y + a.h + tick + 0.8 * kNoteFont * s;
   for (std::size_t i = 0; i < xs.size(); ++i)
-    p.text(fmt::format("{:g}{}", xs[i].second, i + 1 == xs.size() ? " m" : ""), xs[i].first, below,
+    p.text(label(xs[i].second, x_step) + (i + 1 == xs.size() ? " m" : ""), xs[i].first, below,
            Align::centre, {kNoteFont});
   for (const auto& [dy, y] : ys)
     if (a.y + a.h - dy > 1.2 * kNoteFont * s || xs.empty() || xs.front().first - a.x > 3.0 * kNoteFont * s)
-      p.text(fmt::format("{:g}", y), a.x - tick - 2.0 * s, dy, Align::right, {kNoteFont});
+      p.text(label(y, y_step), a.x - tick - 2.0 * s, dy, Align::right, {kNoteFont});
 }
 
 // The title, shrunk to fit the canvas; left out when it would be too small to read.

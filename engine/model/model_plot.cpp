@@ -68,7 +68,8 @@ Layers layers_of(const std::vector<std::string>& show) {
   return layers;
 }
 
-void check_window(const std::optional<std::array<double, 4>>& window) {
+// A window narrower than the model's geometric tolerance shows nothing it could tell apart.
+void check_window(const std::optional<std::array<double, 4>>& window, double tolerance) {
   if (!window) return;
   const auto& [x0, x1, y0, y1] = *window;
   if (!(std::isfinite(x0) && std::isfinite(x1) && std::isfinite(y0) && std::isfinite(y1) &&
@@ -77,6 +78,10 @@ void check_window(const std::optional<std::array<double, 4>>& window) {
         "window must be {{x0, x1, y0, y1}} with x0 < x1 and y0 < y1, got {{{:g}, {:g}, {:g}, "
         "{:g}}}",
         x0, x1, y0, y1);
+  if (x1 - x0 < tolerance || y1 - y0 < tolerance)
+    fail("window is {:.3g} m by {:.3g} m, smaller than the model's geometric tolerance, {:.3g} m: nothing in it "
+         "could be told apart; give a larger window",
+         x1 - x0, y1 - y0, tolerance);
 }
 
 void check_colour(const std::string& colour) {
@@ -731,7 +736,7 @@ Scene scene_of(Gathered g) {
 void plot(Model& model, const PlotDef& def) {
   picture_format(def.file);  // checked before anything is computed
   check_size(def.width, def.height);
-  check_window(def.window);
+  check_window(def.window, model.tolerance());
   check_writable(def.file);
   plot_scene(gather_scene(model, def), def.file, def.width, def.height);
 }

@@ -110,6 +110,36 @@ TEST_F(PlotTest, BadWindowThrowsNamingItAndLeavesNoFile) {
   EXPECT_TRUE(dir_is_empty());
 }
 
+TEST_F(PlotTest, AWindowBelowTheToleranceIsRefusedAtOnce) {
+  Model model = jointed_box();
+  PlotDef def = all_layers(file("tiny.pdf"));
+  def.axes = true;
+  def.window = std::array<double, 4>{5, 5 + 1e-15, 5, 5 + 1e-15};
+  EXPECT_NE(message_of(model, def).find("smaller than the model's geometric tolerance"), std::string::npos)
+      << message_of(model, def);
+  EXPECT_TRUE(dir_is_empty());
+}
+
+// A window a thousandth of the model wide: what is far outside it is not drawn at all (Cairo would
+// wrap its coordinates round into the picture), and the file holds only what the window shows.
+TEST_F(PlotTest, ANarrowWindowDrawsOnlyWhatIsNearIt) {
+  Model model = jointed_box();
+  PlotDef def = all_layers(file("whole.svg"));
+  def.axes = true;
+  plot(model, def);
+  def.file = file("narrow.svg");
+  def.window = std::array<double, 4>{5.2, 5.21, 5.2, 5.21};
+  plot(model, def);
+  // Line segments drawn, after the font's glyphs (which both files define alike).
+  const auto segments = [](const std::string& svg) {
+    std::size_t count = 0;
+    for (std::size_t at = svg.find("</defs>"); (at = svg.find(" L ", at)) != std::string::npos; at += 3) ++count;
+    return count;
+  };
+  const std::size_t whole = segments(read_all(file("whole.svg"))), narrow = segments(read_all(file("narrow.svg")));
+  EXPECT_LT(narrow, whole / 20) << whole << " " << narrow;
+}
+
 TEST_F(PlotTest, WritesSvg) {
   Model model = jointed_box();
   const PlotDef def = all_layers(file("box.svg"));
