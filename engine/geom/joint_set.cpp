@@ -61,21 +61,28 @@ std::vector<CutSegment> joint_set_traces(const JointSetDef& def, const Box& exte
 
   Deviation deviation(def.seed);
   // Offsets of the lines across the set: the spacing list in turn going up from the origin,
-  // and backwards going down, so the pattern is periodic with period sum(spacing).
-  std::vector<double> offsets{0.0};
+  // and backwards going down, so the pattern is periodic with period sum(spacing). Only those
+  // across the model are kept: an origin far from it costs steps, not memory.
+  std::vector<double> offsets;
   const size_t n = def.spacing.size();
-  for (size_t i = 0; offsets.back() <= s1; ++i)
-    offsets.push_back(offsets.back() + def.spacing[i % n] + deviation(def.spacing_dev));
+  const auto keep = [&](double offset) {
+    if (offset >= s0 && offset <= s1) offsets.push_back(offset);
+  };
+  double above = 0.0;
+  keep(above);
+  for (size_t i = 0; above <= s1; ++i) {
+    above += def.spacing[i % n] + deviation(def.spacing_dev);
+    keep(above);
+  }
   double below = 0.0;
   for (size_t i = 0; below >= s0; ++i) {
     below -= def.spacing[n - 1 - i % n] + deviation(def.spacing_dev);
-    offsets.push_back(below);
+    keep(below);
   }
 
   std::vector<CutSegment> traces;
   const EdgeOrigin origin{EdgeKind::joint, set, set, false};
   for (double offset : offsets) {
-    if (offset < s0 || offset > s1) continue;
     const Vec2 base = def.origin + offset * across;
     auto add_trace = [&](double from, double to) {
       Vec2 a = base + from * along, b = base + to * along;
