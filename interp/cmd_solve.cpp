@@ -20,6 +20,10 @@
 namespace edem {
 namespace {
 
+// Most cycles one call may ask for: 1e12 is eleven days at a hundred million cycles a second, far
+// past any model's, so a larger count is a slip (a stray digit, 2^53 + 1), not a wish.
+constexpr double kMostCycles = 1e12;
+
 const std::vector<std::string>& modes() {
   static const std::vector<std::string> names = {"static", "dynamic"};
   return names;
@@ -260,7 +264,8 @@ const Command& cycle_command() {
       .form = Form::call,
       .positional =
           {
-              {"n", Type::integer, "", ge(1), kRequired, "number of cycles"},
+              {"n", Type::integer, "", between(1, kMostCycles), kRequired,
+               "number of cycles (at most 1e12: years of cycling at a million a second)"},
           },
       .run = run_cycle,
       .usage = "cycle(1000)",
@@ -281,7 +286,8 @@ const Command& solve_command() {
               {"ratio", Type::number, "-", above_below(0, 1), "1e-5",
                "unbalanced-force ratio to reach: total unbalanced force over total applied and "
                "zone forces"},
-              {"max_cycles", Type::integer, "", ge(1), "100000", "stop after this many cycles"},
+              {"max_cycles", Type::integer, "", between(1, kMostCycles), "100000",
+               "stop after this many cycles (at most 1e12)"},
           },
       .run = run_solve,
       .returns = "a table: cycles (run by this call), ratio (reached), converged (true or false), judgments "

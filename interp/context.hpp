@@ -51,6 +51,10 @@ struct Context {
   std::map<std::string, FieldSeries> outputs;  // output{} series by XDMF file
   std::vector<std::string> stage_outputs;      // output{ at = "stage" }: their files
   std::set<std::string> said;                  // warnings and notes said so far (each once)
+  // Where the script was running a moment ago (a count hook notes it): Lua's own out-of-memory
+  // error carries no position, and this names the line it ran out near.
+  std::string recent_source;
+  int recent_line = 0;
   std::vector<std::pair<std::string, std::string>> results;  // result{}: KEY, VALUE as written
   SettingsProbe* probe = nullptr;  // edem sweep's look at the settings (settings_probe.hpp); null: a run
 

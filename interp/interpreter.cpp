@@ -110,6 +110,24 @@ std::string load_error(int status, const std::string& path, const std::string& m
   return fmt::format("edem: {}", message);
 }
 
+// Notes the running script line every kPositionEvery Lua instructions (a fraction of a percent of
+// a pure-Lua loop's time).
+constexpr int kPositionEvery = 10000;
+
+void note_position(lua_State* L, lua_Debug* ar) {
+  if (lua_getinfo(L, "Sl", ar) == 0 || ar->currentline <= 0 || ar->source[0] != '@') return;
+  Context& context = context_of(L);
+  if (context.recent_source != ar->source + 1) context.recent_source = ar->source + 1;
+  context.recent_line = ar->currentline;
+}
+
+// Lua's out-of-memory error, at the line the script was running near when it ran out.
+std::string out_of_memory(const Context& context, const std::string& path) {
+  if (context.recent_line <= 0) return fmt::format("{}: memory: not enough memory", path);
+  return fmt::format("{}:{}: memory: not enough memory (the script ran out of it near this line)",
+                     context.recent_source, context.recent_line);
+}
+
 }  // namespace
 
 Interpreter::Interpreter(InterpreterOptions options)
@@ -125,6 +143,7 @@ Interpreter::Interpreter(InterpreterOptions options)
   context_.probe = options.probe;
   context_.lua = L_;
   attach(L_, context_);
+  lua_sethook(L_, note_position, LUA_MASKCOUNT, kPositionEvery);
   luaL_openlibs(L_);
   remember_error_functions(L_);
   register_commands(L_);
@@ -232,7 +251,7 @@ std::optional<std::string> Interpreter::run_loaded(int status, const std::string
   }
   std::string message;
   if (status == LUA_ERRMEM)
-    message = fmt::format("{}: memory: not enough memory", path);
+    message = out_of_memory(context_, path);
   else if (lua_type(L_, -1) == LUA_TSTRING)
     message = lua_tostring(L_, -1);
   else
