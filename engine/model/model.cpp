@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "core/names.hpp"
+#include "geom/block_snap.hpp"
 #include "geom/cutter.hpp"
 #include "geom/joint_set.hpp"
 #include "state/mechanics.hpp"
@@ -213,7 +214,12 @@ BlockSet Model::cut(const Inputs& inputs) const {
     for (const ZoneRequest& r : inputs.zone_requests)
       input.largest_tolerance = std::max(input.largest_tolerance, r.sliver * r.size.far);
   }
-  for (const auto& base : inputs.bases) input.bases.push_back(base.polygon);
+  std::vector<Polygon> bases;
+  for (const auto& base : inputs.bases) bases.push_back(base.polygon);
+  int snapped = 0;
+  input.bases = snap_blocks_together(bases, input.tolerance, &snapped);
+  for (size_t b = 0; b < input.bases.size(); ++b)
+    if (snapped > 0) validate_polygon(input.bases[b], fmt::format("block {} with its corners snapped to its neighbours'", b + 1));
   for (const auto& region : inputs.regions) {
     input.regions.push_back(region.polygon);
     input.region_glued.push_back(region.glued);
@@ -260,7 +266,9 @@ BlockSet Model::cut(const Inputs& inputs) const {
       }
     }
   }
-  return cut_blocks(input);
+  BlockSet blocks = cut_blocks(input);
+  blocks.snapped_vertices += snapped;
+  return blocks;
 }
 
 std::vector<const SizeField*> Model::size_fields(const Inputs& inputs, const BlockSet& blocks) const {
