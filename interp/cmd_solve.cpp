@@ -20,8 +20,8 @@
 namespace edem {
 namespace {
 
-// Most cycles one call may ask for: 1e12 is eleven days at a hundred million cycles a second, far
-// past any model's, so a larger count is a slip (a stray digit, 2^53 + 1), not a wish.
+// Most cycles one call may ask for: 1e12 cycles take eleven days at a million cycles a second, more
+// than a small model runs, so a larger count is a slip (a stray digit, 2^53 + 1), not a wish.
 constexpr double kMostCycles = 1e12;
 
 const std::vector<std::string>& modes() {
@@ -265,7 +265,7 @@ const Command& cycle_command() {
       .positional =
           {
               {"n", Type::integer, "", between(1, kMostCycles), kRequired,
-               "number of cycles (at most 1e12: years of cycling at a million a second)"},
+               "number of cycles (at most 1e12: eleven days at a million cycles a second)"},
           },
       .run = run_cycle,
       .usage = "cycle(1000)",
