@@ -25,6 +25,7 @@ struct RegionRef {
 struct ModelDef {
   std::string title;
   double tolerance = 1e-9;  // geometric tolerance, relative to the model's extent [-]
+  double max_blocks = 1e5;  // most blocks the joint sets, cracks and crack seeds may cut [-]
 };
 
 struct BlockDef {

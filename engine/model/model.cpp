@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "core/error.hpp"
 #include "core/names.hpp"
@@ -266,9 +267,45 @@ BlockSet Model::cut(const Inputs& inputs) const {
       }
     }
   }
+  check_block_count(inputs, input);
   BlockSet blocks = cut_blocks(input);
   blocks.snapped_vertices += snapped;
   return blocks;
+}
+
+// Refuses, before any cutting, cuts that would make more than max_blocks blocks: about one a
+// base, one a line or cut, and one a crossing of two families of parallel lines (the area they
+// share over the product of their spacings, times the sine between them; a trace's share of its
+// line where traces have gaps).
+void Model::check_block_count(const Inputs& inputs, const CutInput& input) const {
+  struct Family {
+    double angle, spacing, persistence, area;
+  };
+  double total_area = 0.0;
+  for (const Polygon& base : input.bases) total_area += std::fabs(signed_area(base));
+  const auto area_of = [&](const RegionRef& region) {
+    return region.empty() ? total_area : std::min(total_area, std::fabs(signed_area(resolve_in(inputs, region))));
+  };
+  std::vector<Family> families;
+  for (const JointSetDef& def : inputs.joint_sets) {
+    const double spacing = *std::min_element(def.spacing.begin(), def.spacing.end());
+    const double persistence = std::isfinite(def.trace) ? def.trace / (def.trace + def.gap) : 1.0;
+    families.push_back({def.angle, spacing, persistence, area_of(def.region)});
+  }
+  for (const CrackSeedDef& seed : inputs.crack_seeds)
+    if (seed.cuts.empty())
+      for (const double angle : seed.angles) families.push_back({angle, seed.spacing, 1.0, area_of(seed.region)});
+  double blocks = static_cast<double>(input.bases.size() + input.cuts.size());
+  for (size_t f = 0; f < families.size(); ++f)
+    for (size_t g = f + 1; g < families.size(); ++g) {
+      const Family &a = families[f], &b = families[g];
+      const double sine = std::fabs(std::sin((a.angle - b.angle) * std::numbers::pi / 180.0));
+      blocks += std::min(a.area, b.area) * sine * a.persistence * b.persistence / (a.spacing * b.spacing);
+    }
+  if (blocks > def_.max_blocks)
+    fail("these cuts would make about {:.3g} blocks, more than max_blocks = {:.3g}: larger spacings, joint sets "
+         "and crack seeds in a region near where they matter, or model{{ max_blocks = ... }}",
+         blocks, def_.max_blocks);
 }
 
 std::vector<const SizeField*> Model::size_fields(const Inputs& inputs, const BlockSet& blocks) const {

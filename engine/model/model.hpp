@@ -25,6 +25,9 @@
 
 namespace edem {
 
+struct CutInput;  // geom/cutter.hpp
+
+
 struct Mechanics;  // state/mechanics.hpp: materials, loads and the solver's arrays
 struct FieldFrame;  // io/field_output.hpp
 
@@ -234,6 +237,8 @@ class Model {
   // command that fails leaves the model as it was.
   void commit(Inputs next);
   BlockSet cut(const Inputs& inputs) const;
+  // Throws when the cuts of `input` would make more than def_.max_blocks blocks.
+  void check_block_count(const Inputs& inputs, const CutInput& input) const;
   Mesh zone_all(const Inputs& inputs, const BlockSet& blocks) const;
   // Per block, the size field of the last zone request that covers it (nullptr: none).
   std::vector<const SizeField*> size_fields(const Inputs& inputs, const BlockSet& blocks) const;
