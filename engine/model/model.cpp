@@ -219,8 +219,9 @@ BlockSet Model::cut(const Inputs& inputs) const {
   for (const auto& base : inputs.bases) bases.push_back(base.polygon);
   int snapped = 0;
   input.bases = snap_blocks_together(bases, input.tolerance, &snapped);
-  for (size_t b = 0; b < input.bases.size(); ++b)
-    if (snapped > 0) validate_polygon(input.bases[b], fmt::format("block {} with its corners snapped to its neighbours'", b + 1));
+  if (snapped > 0)
+    for (size_t b = 0; b < input.bases.size(); ++b)
+      validate_polygon(input.bases[b], fmt::format("block {} with its corners snapped to its neighbours'", b + 1));
   for (const auto& region : inputs.regions) {
     input.regions.push_back(region.polygon);
     input.region_glued.push_back(region.glued);
