@@ -52,6 +52,18 @@ def reseal(path):
         f.write(header + data[HEADER:])
 
 
+def start_work(edem, work, load):
+    """In `work` (made, and made the current folder): good.h5 saved from MODEL, and load.lua with
+    the script `load` that restores a damaged copy."""
+    os.makedirs(work, exist_ok=True)
+    os.chdir(work)
+    with open("make.lua", "w") as f:
+        f.write(MODEL)
+    subprocess.run([edem, "-q", "make.lua"], check=True)
+    with open("load.lua", "w") as f:
+        f.write(load)
+
+
 def datasets(path, prefix):
     found = []
     with h5py.File(path, "r") as f:
@@ -76,13 +88,7 @@ def cut(source, target, name, keep):
 def main():
     edem, work = os.path.abspath(sys.argv[1]), sys.argv[2]
     prefix = sys.argv[3] if len(sys.argv) > 3 else ""
-    os.makedirs(work, exist_ok=True)
-    os.chdir(work)
-    with open("make.lua", "w") as f:
-        f.write(MODEL)
-    subprocess.run([edem, "-q", "make.lua"], check=True)
-    with open("load.lua", "w") as f:
-        f.write('restore("cut.h5")\ncycle(1)\n')
+    start_work(edem, work, 'restore("cut.h5")\ncycle(1)\n')
     names = datasets("good.h5", prefix)
     assert names, f"no datasets under {prefix!r}"
     bad, loaded, refused = [], 0, 0

@@ -22,7 +22,7 @@ import sys
 import h5py
 import numpy
 
-from checkpoint_datasets import MODEL, reseal
+from checkpoint_datasets import reseal, start_work
 
 TIME_LIMIT = 60  # s
 MEMORY_LIMIT = 2 << 30  # bytes of address space
@@ -91,13 +91,7 @@ def main():
     edem, work = os.path.abspath(sys.argv[1]), sys.argv[2]
     count = int(sys.argv[3]) if len(sys.argv) > 3 else 100
     rng = random.Random(int(sys.argv[4]) if len(sys.argv) > 4 else 1)
-    os.makedirs(work, exist_ok=True)
-    os.chdir(work)
-    with open("make.lua", "w") as f:
-        f.write(MODEL)
-    subprocess.run([edem, "-q", "make.lua"], check=True)
-    with open("load.lua", "w") as f:
-        f.write('restore("mutant.h5")\ncycle(5)\n')
+    start_work(edem, work, 'restore("mutant.h5")\ncycle(5)\n')
     names = all_datasets("good.h5")
     bad, loaded, refused, stopped = [], 0, 0, 0
     for k in range(count):
