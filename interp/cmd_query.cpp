@@ -32,6 +32,24 @@ int count_contacts_when_read(lua_State* L) {
   return 1;
 }
 
+// Lua's next(), whatever a script has made of the global of that name.
+int next_field(lua_State* L) {
+  lua_settop(L, 2);
+  if (lua_next(L, 1) != 0) return 2;
+  lua_pushnil(L);
+  return 1;
+}
+
+// pairs(info()) lists contacts too: the count is taken once, as the iteration starts.
+int pairs_with_contacts(lua_State* L) {
+  lua_pushinteger(L, context_of(L).model().contacts_now());
+  lua_setfield(L, 1, "contacts");  // a plain field now; __index is not asked again
+  lua_pushcfunction(L, next_field);
+  lua_pushvalue(L, 1);
+  lua_pushnil(L);
+  return 3;
+}
+
 int run_info(lua_State* L, Context& context, const Args&) {
   Model& model = context.model();
   const ModelInfo info = model.info();
@@ -66,9 +84,11 @@ int run_info(lua_State* L, Context& context, const Args&) {
   set_field(L, "contact_searches", static_cast<long long>(solver.contact_searches));
   set_field(L, "threads", solver.threads);
   if (model.cycling_started()) {  // contacts: counted when read (below)
-    lua_createtable(L, 0, 1);
+    lua_createtable(L, 0, 2);
     lua_pushcfunction(L, count_contacts_when_read);
     lua_setfield(L, -2, "__index");
+    lua_pushcfunction(L, pairs_with_contacts);
+    lua_setfield(L, -2, "__pairs");
     lua_setmetatable(L, -2);
   }
   return 1;

@@ -66,6 +66,16 @@ TEST(JudgeMost, InfoCountsTheContactsAJudgmentMakes) {
                                "assert(n > 0 and info().contacts == n, ('info %d, contacts() %d'):format(info().contacts, n))");
 }
 
+// pairs(info()) lists every field info() answers, contacts too, with the same count.
+TEST(JudgeMost, PairsOfInfoListContactsAfterCycling) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, bar() +
+                               "judge{ every = 10 }\ncycle(10)\n"
+                               "local listed\nfor key, value in pairs(info()) do if key == 'contacts' then listed = value end end\n"
+                               "assert(listed ~= nil and listed > 0 and listed == info().contacts, tostring(listed))");
+}
+
 TEST(JudgeMost, AtMostThatManyBreakAtAJudgmentTheFurthestPastFirst) {
   Interpreter interpreter;
   interpreter.context().quiet = true;
