@@ -9,6 +9,7 @@
 
 #include "state/contacts.hpp"
 #include "contact/joint_law.hpp"
+#include "contact/past_the_end.hpp"
 
 namespace edem {
 
@@ -69,11 +70,26 @@ inline void keep_state(Contact& c, const Contact& old, const JointParams& p) {
   const double dx = x(2 * b) - xa, dy = x(2 * b + 1) - ya;
   const double px = x(2 * n) - xa, py = x(2 * n + 1) - ya;
   const double len = std::sqrt(dx * dx + dy * dy);
-  const double sx = dx / len, sy = dy / len;  // along the edge
-  const double nx = sy, ny = -sx;             // out of the edge's block
+  double sx = dx / len, sy = dy / len;  // along the edge
+  double nx = sy, ny = -sx;             // out of the edge's block
   const double t_line = (px * sx + py * sy) / len;
   const double t = std::clamp(t_line, 0.0, 1.0);
   double gap = px * nx + py * ny;  // from the edge's line
+  // Past an end that is no convex corner and past the neighbour's end too: the vertex's distance.
+  if ((t_line < 0.0 && !e.corner_a) || (t_line > 1.0 && !e.corner_b)) [[unlikely]] {
+    const bool at_a = t_line < 0.0;
+    const size_t vertex = at_a ? a : b;
+    const size_t far = static_cast<size_t>(at_a ? edges[e.prev].a : edges[e.next].b);
+    PastTheEnd end;
+    if (past_the_end(x(2 * n) - x(2 * vertex), x(2 * n + 1) - x(2 * vertex + 1), x(2 * far) - x(2 * vertex),
+                     x(2 * far + 1) - x(2 * vertex + 1), sx, sy, at_a, end)) {
+      nx = end.nx;
+      ny = end.ny;
+      sx = -ny;  // the normal turned back, as the edge's is its direction turned clockwise
+      sy = nx;
+      gap = end.gap;
+    }
+  }
   // The gridpoint's signed distance out of the line of the edge beside this one at its end a
   // (or b), where that end is a convex corner of the block.
   const auto out_of_neighbour = [&](bool at_a) {

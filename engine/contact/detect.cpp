@@ -167,6 +167,18 @@ std::optional<Found> nearest_edge(const Mechanics& m, int node, Vec2 p, Vec2 own
   f.normal = outward(a, b);
   distance_to_segment(p, a, b, &f.t);
   f.gap = dot(p - (a + f.t * (b - a)), f.normal);
+  // Past an end that is no convex corner and past the neighbour's end too: as contact_force sees it.
+  const double along = dot(p - a, b - a);
+  const bool at_a = along < 0.0 && !edge.corner_a, at_b = along > dot(b - a, b - a) && !edge.corner_b;
+  if (at_a || at_b) {
+    const Vec2 vertex = at_a ? a : b, s = (1.0 / norm(b - a)) * (b - a);
+    const Vec2 far = at(m, at_a ? cb.edges[static_cast<size_t>(edge.prev)].a : cb.edges[static_cast<size_t>(edge.next)].b);
+    PastTheEnd end;
+    if (past_the_end(p.x - vertex.x, p.y - vertex.y, far.x - vertex.x, far.y - vertex.y, s.x, s.y, at_a, end)) {
+      f.normal = {end.nx, end.ny};
+      f.gap = end.gap;
+    }
+  }
   return f;
 }
 

@@ -532,9 +532,11 @@ TEST(Mechanics, ContactStiffnessSetsTheStep) {
     cycle(1)
     local apart = info().step
     assert(info().contacts == 0, "found " .. info().contacts .. " contacts 0.2 m apart")
-    -- falling from rest at 1000 m/s2, the block closes the 0.2 m gap in 20 ms
+    -- falling from rest at 1000 m/s2, the block closes the 0.2 m gap in 20 ms; on so stiff a
+    -- joint it bounces off within a few cycles, so every cycle is looked at once it is near
+    while info().contacts == 0 and info().time < 0.05 do cycle(100) end
     while (info().contacts == 0 or contact_near(0.5, 1).state == "open") and info().time < 0.05 do
-      cycle(100)
+      cycle(1)
     end
     assert(info().contacts > 0 and contact_near(0.5, 1).state ~= "open", "the block never landed")
     local touching = info().step

@@ -189,5 +189,60 @@ TEST(ContactForce, ATipFoundAgainAtRestBesideACornerKeepsItsShearForce) {
   EXPECT_NEAR(longer.fs, 1e4 * 0.05 / (0.25 * overlap), 1e-6);
 }
 
+// The block is the plane but the quarter x > 0, y > 0 (a notch): its boundary runs from a = (1, 0)
+// to the re-entrant corner b = (0, 0) (edge 0), then up to (0, 1) (edge 1). Node 3 is the gridpoint.
+struct Notch {
+  std::vector<double> origin{1, 0, 0, 0, 0, 1, 0, 0};
+  std::vector<double> u = std::vector<double>(8, 0.0), v = std::vector<double>(8, 0.0);
+  std::vector<ContactEdge> edges = std::vector<ContactEdge>(2);
+  JointParams joint;
+
+  Notch() {
+    edges[0].a = 0;
+    edges[0].b = 1;
+    edges[1].a = 1;
+    edges[1].b = 2;
+    edges[0].prev = edges[0].next = 1;
+    edges[1].prev = edges[1].next = 0;
+    joint.kn = 1e9;
+    joint.ks = 1e8;
+    joint.kn_zero = joint.kn_max = joint.kn;
+  }
+  Contact on_edge(int edge, double x, double y) {
+    origin[6] = x;
+    origin[7] = y;
+    Contact c;
+    c.node = 3;
+    c.edge = edge;
+    c.length = 0.1;
+    ContactLoss lost;
+    contact_force(c, edges.data(), joint, origin.data(), u.data(), v.data(), 1e-4, lost);
+    return c;
+  }
+};
+
+// A corner pressed past the notch's corner is inside the block by its distance to it, and pushed
+// out towards it, on either of the notch's faces: a detection that moves its contact from one
+// face to the other changes nothing (by each face's own line it was 4 and 3 mm deep, and a
+// contact switched at every detection took energy from each switch).
+TEST(ContactForce, PastARe_entrantCornerEitherFaceGivesItsDistanceToTheCorner) {
+  Notch notch;
+  for (int edge : {0, 1}) {
+    const Contact c = notch.on_edge(edge, -0.003, -0.004);
+    EXPECT_NEAR(c.closure, 0.005, 1e-15) << "edge " << edge;
+    EXPECT_NEAR(c.fx, 1e9 * 0.005 * 0.1 * 0.6, 1e-6) << "edge " << edge;
+    EXPECT_NEAR(c.fy, 1e9 * 0.005 * 0.1 * 0.8, 1e-6) << "edge " << edge;
+  }
+}
+
+// Where it leaves the face's span for the corner's, its depth and force go on smoothly.
+TEST(ContactForce, AtTheEdgeOfARe_entrantCornersSpanTheForceIsContinuous) {
+  Notch notch;
+  const Contact over = notch.on_edge(0, 1e-12, -0.004), past = notch.on_edge(0, -1e-12, -0.004);
+  EXPECT_NEAR(past.closure, over.closure, 1e-12);
+  EXPECT_NEAR(past.fx, over.fx, 1e-3);
+  EXPECT_NEAR(past.fy, over.fy, 1e-3);
+}
+
 }  // namespace
 }  // namespace edem
