@@ -75,8 +75,9 @@ inline void keep_state(Contact& c, const Contact& old, const JointParams& p) {
   const double t_line = (px * sx + py * sy) / len;
   const double t = std::clamp(t_line, 0.0, 1.0);
   double gap = px * nx + py * ny;  // from the edge's line
-  // Past an end that is no convex corner and past the neighbour's end too: the vertex's distance.
-  if ((t_line < 0.0 && !e.corner_a) || (t_line > 1.0 && !e.corner_b)) [[unlikely]] {
+  // Past a bent end (no convex corner, no straight run) and the neighbour's end too: the vertex's
+  // distance.
+  if ((t_line < 0.0 && e.bent_a) || (t_line > 1.0 && e.bent_b)) [[unlikely]] {
     const bool at_a = t_line < 0.0;
     const size_t vertex = at_a ? a : b;
     const size_t far = static_cast<size_t>(at_a ? edges[e.prev].a : edges[e.next].b);

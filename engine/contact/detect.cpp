@@ -167,9 +167,9 @@ std::optional<Found> nearest_edge(const Mechanics& m, int node, Vec2 p, Vec2 own
   f.normal = outward(a, b);
   distance_to_segment(p, a, b, &f.t);
   f.gap = dot(p - (a + f.t * (b - a)), f.normal);
-  // Past an end that is no convex corner and past the neighbour's end too: as contact_force sees it.
+  // Past a bent end and past the neighbour's end too: as contact_force sees it.
   const double along = dot(p - a, b - a);
-  const bool at_a = along < 0.0 && !edge.corner_a, at_b = along > dot(b - a, b - a) && !edge.corner_b;
+  const bool at_a = along < 0.0 && edge.bent_a, at_b = along > dot(b - a, b - a) && edge.bent_b;
   if (at_a || at_b) {
     const Vec2 vertex = at_a ? a : b, s = (1.0 / norm(b - a)) * (b - a);
     const Vec2 far = at(m, at_a ? cb.edges[static_cast<size_t>(edge.prev)].a : cb.edges[static_cast<size_t>(edge.next)].b);
@@ -545,7 +545,8 @@ ContactBoundary contact_boundary(const Mesh& mesh, const std::vector<char>& edge
     }
     cb.block_first_edge.push_back(static_cast<int>(cb.edges.size()));
   }
-  // Convex corners: the boundary turns left (the block is on the left) by more than 10 deg.
+  // Convex corners: the boundary turns left (the block is on the left) by more than 10 deg; bent
+  // ends: it turns, but less or the other way.
   const auto ref = [&](int node) {
     return Vec2{position[2 * static_cast<size_t>(node)], position[2 * static_cast<size_t>(node) + 1]};
   };
@@ -556,6 +557,9 @@ ContactBoundary contact_boundary(const Mesh& mesh, const std::vector<char>& edge
     const Vec2 d = ref(e.b) - ref(e.a), dn = ref(next.b) - ref(next.a), dp = ref(prev.b) - ref(prev.a);
     e.corner_b = cross(d, dn) > sin10 * norm(d) * norm(dn);
     e.corner_a = cross(dp, d) > sin10 * norm(dp) * norm(d);
+    // A turn above round-off (a millionth of a radian) that is no convex corner.
+    e.bent_b = !e.corner_b && std::fabs(cross(d, dn)) > 1e-6 * norm(d) * norm(dn);
+    e.bent_a = !e.corner_a && std::fabs(cross(dp, d)) > 1e-6 * norm(dp) * norm(d);
   }
   // Per node: its touchable edges, and every block whose boundary it is on.
   std::vector<std::pair<int, int>> node_edge, node_block;

@@ -105,9 +105,11 @@ template <class Ar> void fields(Ar& ar, BoundarySegment& b) {
 }
 template <class Ar> void fields(Ar& ar, ContactEdge& e) {
   ar("a", e.a); ar("b", e.b); ar("block", e.block); ar("prev", e.prev); ar("next", e.next);
-  ar("corner_a", e.corner_a); ar("corner_b", e.corner_b); ar("touchable", e.touchable); ar("origin", e.origin);
-  ar("material", e.material);
+  ar("corner_a", e.corner_a); ar("corner_b", e.corner_b); ar("bent_a", e.bent_a); ar("bent_b", e.bent_b);
+  ar("touchable", e.touchable); ar("origin", e.origin); ar("material", e.material);
 }
+// Older schema-1 files may lack the bent flags: their contacts keep to the edge's line past any end.
+std::vector<const char*> later_members(const ContactEdge*) { return {"bent_a", "bent_b"}; }
 template <class Ar> void fields(Ar& ar, ContactBoundary& b) {
   ar("edges", b.edges); ar("block_first_edge", b.block_first_edge); ar("nodes", b.nodes);
   ar("edge_first", b.edge_first); ar("node_edges", b.node_edges); ar("block_first", b.block_first);

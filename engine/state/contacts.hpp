@@ -61,6 +61,10 @@ struct ContactEdge {
   // Whether its end is a convex corner of its block (the boundary turns by more than 10
   // degrees there), not a point where it goes on (nearly) straight.
   bool corner_a = false, corner_b = false;
+  // Whether the boundary turns at its end a (b) without making a convex corner there: in, or out
+  // by less. Past such an end, and past the neighbouring edge's too, a gridpoint is measured from
+  // the vertex (past_the_end.hpp); along a straight run the edge's line is the boundary.
+  bool bent_a = false, bent_b = false;
   bool touchable = false;    // not glued
   EdgeOrigin origin;
   int material = -1;         // joint material (jassign), -1: none

@@ -204,6 +204,7 @@ struct Notch {
     edges[1].b = 2;
     edges[0].prev = edges[0].next = 1;
     edges[1].prev = edges[1].next = 0;
+    edges[0].bent_b = edges[1].bent_a = true;  // a re-entrant corner: no convex one, no straight run
     joint.kn = 1e9;
     joint.ks = 1e8;
     joint.kn_zero = joint.kn_max = joint.kn;
