@@ -1,8 +1,8 @@
-// A gridpoint past an end of its contact's edge, where the block's boundary runs on (nearly)
-// straight or turns in, and past the neighbouring edge's end as well, is nearest that vertex
-// itself: beside a re-entrant corner it is inside the block by its distance to the vertex and
-// pushed out towards it; beside a corner that turns out by less than a corner's angle it is
-// outside by that distance. Either edge at the vertex then gives the same gap and direction, as
+// A gridpoint past an end of its contact's edge where the block's boundary bends (turns in, or out
+// by less than a convex corner's angle: ContactEdge::bent_a, bent_b), and past the neighbouring
+// edge's end as well, is nearest that vertex itself: beside a re-entrant corner it is inside the
+// block by its distance to the vertex and pushed out towards it; beside a slight outward bend it
+// is outside by that distance. Either edge at the vertex then gives the same gap and direction, as
 // the distance to the block's boundary does. By each edge's own line the depth would hang on the
 // face a detection picks: a corner pressed into a notch, its contact switched between the notch's
 // two faces at each detection, would take energy from every switch.
