@@ -55,7 +55,7 @@ TEST(JudgeMost, AllThatFailBreakAtOnceByDefault) {
 }
 
 // The cracks a judgment makes are contacts at once: info() counts them as contacts() does, not
-// as last found (none: the intact sections are bonded).
+// as last found (none: the intact sections are bonded); pairs(info()) lists that count too.
 TEST(JudgeMost, InfoCountsTheContactsAJudgmentMakes) {
   Interpreter interpreter;
   interpreter.context().quiet = true;
@@ -63,15 +63,7 @@ TEST(JudgeMost, InfoCountsTheContactsAJudgmentMakes) {
                                "judge{ every = 10 }\ncycle(10)\n"
                                "local n = 0\nfor c in contacts() do n = n + 1 end\n"
                                "assert(info().cracks > 4, 'the sections broke')\n"
-                               "assert(n > 0 and info().contacts == n, ('info %d, contacts() %d'):format(info().contacts, n))");
-}
-
-// pairs(info()) lists every field info() answers, contacts too, with the same count.
-TEST(JudgeMost, PairsOfInfoListContactsAfterCycling) {
-  Interpreter interpreter;
-  interpreter.context().quiet = true;
-  expect_runs(interpreter, bar() +
-                               "judge{ every = 10 }\ncycle(10)\n"
+                               "assert(n > 0 and info().contacts == n, ('info %d, contacts() %d'):format(info().contacts, n))\n"
                                "local listed\nfor key, value in pairs(info()) do if key == 'contacts' then listed = value end end\n"
                                "assert(listed ~= nil and listed > 0 and listed == info().contacts, tostring(listed))");
 }
