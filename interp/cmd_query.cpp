@@ -79,6 +79,7 @@ int run_info(lua_State* L, Context& context, const Args&) {
   set_field(L, "time", solver.time);
   set_field(L, "step", solver.step);
   set_field(L, "ratio", solver.ratio);
+  set_field(L, "damping_rate", solver.damping_rate);
   if (!model.cycling_started()) set_field(L, "contacts", solver.contacts);
   set_field(L, "late_contacts", static_cast<long long>(solver.late_contacts));
   set_field(L, "contact_searches", static_cast<long long>(solver.contact_searches));
@@ -417,6 +418,9 @@ const Command& info_command() {
           "joint_sets, crack_seeds, sections (potential-crack sections), intact_sections, "
           "cracks, shear_cracks, tension_cracks, stage (excavations so far), title, cycle (cycles run so far), time (model time [s]; static mode: "
           "the cycle count), step (time step [s]), ratio (last unbalanced-force ratio), "
+          "damping_rate (adaptive damping's c = 2 omega [1/s] as last set, from the Rayleigh quotient of "
+          "the displacement since the cycling command began: it falls as sliding rock takes that "
+          "displacement over; 0 under local damping or none), "
           "contacts (those there are now, as contacts() counts them; before the first cycle as last found: 0 "
           "until a contact query), late_contacts "
           "(contacts found already pressed in by more than a tenth of their reach, since the "

@@ -407,6 +407,7 @@ struct SolverInfo {
   double step = 0.0;   // [s]
   double ratio = 0.0;  // last measured unbalanced-force ratio [-]
   double kinetic = 0.0;  // last measured kinetic energy [J/m]
+  double damping_rate = 0.0;  // adaptive damping's c = 2 omega as last set [1/s]; 0 under local or none
   int contacts = 0;      // contacts as last found (0 until found: first cycle or query)
   long late_contacts = 0;  // contacts found already pressed in (ContactSet::late)
   long contact_searches = 0;  // gridpoints searched for contacts (ContactSet::searched)

@@ -278,6 +278,7 @@ SolverInfo Model::solver_info() const {
   SolverInfo info = mechanics_->info;
   info.contacts = mechanics_->contacts.detected ? static_cast<int>(mechanics_->contacts.list.size()) : 0;
   info.late_contacts = mechanics_->contacts.late;
+  info.damping_rate = mechanics_->settings.damping == Damping::adaptive ? mechanics_->adaptive.c : 0.0;
   info.contact_searches = mechanics_->contacts.searched;
   info.threads = mechanics_->partition.threads > 0 ? thread_count(*mechanics_) : asked_threads(*mechanics_);
   return info;

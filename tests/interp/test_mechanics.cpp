@@ -59,6 +59,21 @@ TEST(Mechanics, GravityColumnSettlesToRhoGDepth) {
   )"));
 }
 
+// info().damping_rate: adaptive damping's c = 2 omega, which the solve sets from the Rayleigh quotient
+// (at most 2 / step, where it would reverse a velocity); 0 under local damping.
+TEST(Mechanics, InfoGivesTheAdaptiveDampingRate) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, column(R"lua(
+    assert(info().damping_rate == 0, "none before cycling")
+    solve{ ratio = 1e-6 }
+    local c = info().damping_rate
+    assert(c > 0 and c <= 2 / info().step, ("adaptive: %g (step %g)"):format(c, info().step))
+    set{ damping = "local" }
+    assert(info().damping_rate == 0, "local: " .. info().damping_rate)
+  )lua"));
+}
+
 TEST(Mechanics, SolveWithoutATableAndItsLine) {
   Interpreter interpreter;
   testing::internal::CaptureStdout();
