@@ -19,7 +19,9 @@
 --   release   cycles over which a step's load comes off [0: 100 judged at equilibrium, else 20000]
 --   release_offset  cycles added to release [0]
 --   damping   local (Itasca's, 0.8: UDEC's for static problems) or adaptive (viscous, 2 omega,
---             quicker, but a sliding block runs on barely damped) in the prepass and the steps [local]
+--             quicker, but a sliding block runs on barely damped) in the steps [local]
+--   prepass_damping  the same choice for the jointed prepass, kept apart so that where the
+--             potential cracks go does not change with the steps' damping [local]
 --   edge, far m: zone size at the cavern and far from it [1.5, 10]
 --   stages    how many of the 16 steps to dig [16]
 --   similar   deg: crackseed{ auto }'s grouping angle [45]
@@ -40,6 +42,8 @@
 --             row is also the run's result{} (result.csv), which edem sweep gathers
 --   threads   recorded in the table [OMP_NUM_THREADS, else default]
 --   strict    true: a step stopped by an error fails the script [false]
+--   save_after  a checkpoint CASE_stepN.h5 after step N (restore() continues from it, as
+--             tests/bench/step_from_checkpoint.lua does) [0: none]
 -- Steps: the region with the case's joints and the cavern's steps cut as regions; the prepass
 -- (jointed: over the steps the run digs; continuum: over all 16); potential cracks where it
 -- yielded (crackseed{ auto }, 4.8 m apart, a tenth of the cavern's height, with the set's intact
@@ -59,11 +63,12 @@ local shapes = require "edem.shapes"
 
 local given = settings{
   case = 3, depth = 158, bolts = "none", bolt_at = "solved", set = "P", prepass = "jointed",
-  judge = "equilibrium", release = 0, release_offset = 0, damping = "local", edge = 1.5, far = 10,
+  judge = "equilibrium", release = 0, release_offset = 0, damping = "local", prepass_damping = "local",
+  edge = 1.5, far = 10,
   stages = 16, similar = 45, min_angle = 30, origin_x = "centroid", origin_y = "centroid",
   by_mode = false, muck = "loose", first = "left", mirror = false, judge_most = 0, judge_radius = 0,
   tolerance = 7e-4, fracture_energy = 0, shear_fracture_energy = 0, table = "case_results.csv",
-  threads = os.getenv("OMP_NUM_THREADS") or "default", strict = false,
+  threads = os.getenv("OMP_NUM_THREADS") or "default", strict = false, save_after = 0,
 }
 -- One of `choices`, or an error naming the setting.
 local function one_of(key, choices)
@@ -79,6 +84,9 @@ local RELEASE = (given.release ~= 0 and given.release or (JUDGE_AT == "equilibri
 if not (math.type(RELEASE) == "integer" and RELEASE >= 1) then
   error(("release + release_offset must be a whole number of cycles >= 1, got %s"):format(RELEASE), 0)
 end
+if not (math.type(given.save_after) == "integer" and given.save_after >= 0) then
+  error(("save_after must be a step number >= 0, got %s"):format(given.save_after), 0)
+end
 local SIMILAR, TOLERANCE, MIN_ANGLE = given.similar, given.tolerance, given.min_angle
 local JUDGE_MOST, JUDGE_RADIUS = given.judge_most, given.judge_radius
 local FRACTURE_ENERGY, SHEAR_FRACTURE_ENERGY = given.fracture_energy, given.shear_fracture_energy
@@ -88,6 +96,7 @@ end
 local COHESIVE = FRACTURE_ENERGY > 0 or SHEAR_FRACTURE_ENERGY > 0
 local MUCK = one_of("muck", { "loose", "moved", "opening" })
 local DAMPING = one_of("damping", { "adaptive", "local" })
+local PREPASS_DAMPING = one_of("prepass_damping", { "adaptive", "local" })
 local FIRST = one_of("first", { "left", "right" })
 local BOLT_AT = one_of("bolt_at", { "solved", "dug" })
 local MIRROR, BY_MODE = given.mirror, given.by_mode
@@ -171,7 +180,7 @@ if PREPASS == "jointed" then
   local dug = {}
   for k = 1, math.min(STAGES, #names) do dug[k] = names[k] end
   local pictures = { [3] = "_prepass_arch.png", [9] = "_prepass_step9.png", [#dug] = "_prepass.png" }
-  pre = yield_pass.run{ stages = dug, release = 100, damping = DAMPING, after_stage = function(k)
+  pre = yield_pass.run{ stages = dug, release = 100, damping = PREPASS_DAMPING, after_stage = function(k)
     if pictures[k] then plot{ file = tag .. pictures[k], show = { "plastic", "blocks" }, window = WINDOW } end
   end }
   prepass_note = pre.failure and ("stopped in " .. pre.failure:sub(1, 160):gsub('"', "'")) or "complete"
@@ -560,6 +569,7 @@ for i, s in ipairs(c.stages) do
     result.converged and "" or "  NOT CONVERGED"))
   if not result.converged then print(("        step %d short of its ratio, %s"):format(i, still_moving())) end
   append_row(STEPS_TABLE, select(2, result_row()))
+  if i == given.save_after then save(("%s_step%d.h5"):format(tag, i)) end
 end
 cancel(mucking)
 

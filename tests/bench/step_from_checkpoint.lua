@@ -1,0 +1,49 @@
+-- One step of the seed's cavern from a checkpoint (scripts/paper/case.lua --set save_after=N),
+-- solved under a chosen damping, with a point on the rock followed through the solve: what the
+-- damping does to a step from the same state (tests/bench/RESULTS.md, "Which walls to believe").
+--
+--   edem --set file=case3_P_h158_none_step14.h5 --set step=warhead_bench_12 --set damping=local \
+--        run tests/bench/step_from_checkpoint.lua
+--
+-- Settings: file (the checkpoint), step (the region to dig; "" digs nothing and solves on),
+-- damping (local, 0.8, or adaptive), release and cycles (the solve's limit past the release), the
+-- point followed (x, y: the right wall at the springline), every (cycles between the trace's
+-- lines), save_to (a checkpoint of the state the solve ends at; "" none). The trace gives the
+-- energies from the start (slip and damping: what they took), the point's movement and adaptive
+-- damping's rate c = 2 omega (info().damping_rate).
+local s = settings{ file = "", step = "", damping = "local", release = 100, cycles = 40000, x = 12.0, y = 0.0,
+                    every = 2000, save_to = "" }
+if s.file == "" then error("give --set file=CHECKPOINT.h5", 0) end
+restore(s.file)
+if s.damping == "local" then
+  set{ damping = "local", local_damping = 0.8 }
+elseif s.damping == "adaptive" then
+  set{ damping = "adaptive" }
+else
+  error(("damping must be local or adaptive, got %s"):format(s.damping), 0)
+end
+
+local point = gp_near(s.x, s.y)
+local function moved()  -- towards the axis, x = 0 [m]
+  for g in gridpoints() do
+    if g.id == point.id then return (point.x > 0 and -1 or 1) * (g.ux - point.ux) end
+  end
+end
+local start = energy()
+local peak = 0
+print(("following gridpoint %d at (%.2f, %.2f); damping %s"):format(point.id, point.x, point.y, s.damping))
+print(("%8s %9s %11s %11s %11s %9s %10s"):format("cycle", "ratio", "kinetic", "slip", "damping", "moved [m]",
+                                                  "c [1/s]"))
+every(s.every, function(cycle)
+  local e = energy()
+  peak = math.max(peak, e.kinetic)
+  print(("%8d %9.3g %11.4g %11.4g %11.4g %9.4f %10.3g"):format(cycle, info().ratio, e.kinetic, e.slip - start.slip,
+                                                              e.damping - start.damping, moved(), info().damping_rate))
+end)
+local clock = os.clock()
+if s.step ~= "" then excavate{ region = s.step, release = s.release } end
+local r = solve{ ratio = 1e-5, max_cycles = s.release + s.cycles }
+print(("%s: %s after %d cycles (ratio %.3g), %d cracks; the point moved %.4f m towards the axis; kinetic energy "
+       .. "at most %.4g J/m; %.0f s"):format(s.damping, r.converged and "converged" or "NOT converged", r.cycles,
+       r.ratio, info().cracks, moved(), peak, os.clock() - clock))
+if s.save_to ~= "" then save(s.save_to) end
