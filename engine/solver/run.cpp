@@ -65,20 +65,30 @@ std::string overlap_cause(const Mechanics& m, const Measure& measure) {
   // The gridpoint's shortest touchable edge, and what made it.
   const ContactBoundary& cb = m.faces;
   const auto k = std::lower_bound(cb.nodes.begin(), cb.nodes.end(), c.node) - cb.nodes.begin();
-  double shortest = INFINITY;
+  double shortest = INFINITY, half_edges = 0.0;
   std::string made_by;
   for (int i = cb.edge_first[static_cast<size_t>(k)]; i < cb.edge_first[static_cast<size_t>(k) + 1]; ++i) {
     const ContactEdge& e = cb.edges[static_cast<size_t>(cb.node_edges[static_cast<size_t>(i)])];
     const double length = std::hypot(m.position[2 * static_cast<size_t>(e.b)] - m.position[2 * static_cast<size_t>(e.a)],
                                      m.position[2 * static_cast<size_t>(e.b) + 1] - m.position[2 * static_cast<size_t>(e.a) + 1]);
     if (length < shortest) shortest = length, made_by = describe(e);
+    half_edges += 0.5 * length;
   }
+  const double carrying = carrying_length(c, measure.overlap);
   const double moved = m.step * std::hypot(m.v[2 * n], m.v[2 * n + 1]);
   std::string cause;
   if (m.settings.mode == SolverMode::dynamic && m.settings.step > 0.0 && m.settings.step >= m.critical_step)
     cause = fmt::format("the forced time step {:.6g} s is {:.3g} times the critical step {:.6g} s of the "
                         "stiffest gridpoint: leave set{{ step }} out to get the automatic step",
                         m.settings.step, m.settings.step / m.critical_step, m.critical_step);
+  else if (!(c.wedge > 0.0) && carrying < 0.01 * half_edges)
+    // Its stress is that of its depth; what holds the gridpoint back is that stress times a length
+    // next to nothing (a tip's length grows with its depth: not it).
+    cause = fmt::format("the contact's force acts over {:.3g} m of the {:.3g} m its gridpoint's half-edges "
+                        "give: they run into the face edge on instead of lying over it (a block landing on an "
+                        "edge, or turned past a corner), so however great its stress it holds the gridpoint back "
+                        "with next to no force",
+                        carrying, half_edges);
   else if (needs > 0.5 * limit)
     cause = fmt::format("joint material '{}' is too soft for this stress: sigma_n / kn is {:.3g} m, more than half "
                         "the limit; give a larger set{{ overlap }}, or a stiffer joint",
@@ -98,7 +108,7 @@ std::string overlap_cause(const Mechanics& m, const Measure& measure) {
       "the limit of {:.3g} m (set{{ overlap }}); its contact carries {:.4g} Pa over {:.3g} m, {:.3g} of it over "
       "the edge, with joint material '{}' (kn up to {:.4g} Pa/m: {:.3g} m of closure at that stress; prestress "
       "{:.3g} m); the gridpoint's shortest edge is {:.3g} m, {}; measured cause: {}",
-      p.x, p.y, c.block + 1, measure.overlap, c.other + 1, limit, c.sn, carrying_length(c, measure.overlap),
+      p.x, p.y, c.block + 1, measure.overlap, c.other + 1, limit, c.sn, carrying,
       c.share, m.joint_materials[static_cast<size_t>(c.material)].name, jp.kn_max, needs, c.closure0 + c.dilation,
       shortest, made_by, cause);
 }
