@@ -1,5 +1,6 @@
 // edem sweep: a run a row of a table, locally, each in its own folder, the result rows gathered;
 // bad tables refused before any run; --resume, --only, --collect; the Slurm job script.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -176,7 +177,7 @@ TEST_F(Sweep, YadesBatchTableIsReadToo) {
 
 TEST_F(Sweep, ResumeAfterAKillRunsOnlyTheRowsWithoutAResult) {
   std::string table = "name,cycles\n";
-  for (int k = 1; k <= 6; ++k) table += "r" + std::to_string(k) + ",40000\n";
+  for (int k = 1; k <= 6; ++k) table += fmt::format("r{},40000\n", k);
   write("table.csv", table);
   // Killed once the first row is gathered: the run going is stopped, the rest never start.
   write("kill.sh", "'" EDEM_EXE
