@@ -8,11 +8,12 @@
 -- Settings: file (the checkpoint), step (the region to dig; "" digs nothing and solves on),
 -- damping (local, 0.8, or adaptive), release and cycles (the solve's limit past the release), the
 -- point followed (x, y: the right wall at the springline), every (cycles between the trace's
--- lines), save_to (a checkpoint of the state the solve ends at; "" none). The trace gives the
+-- lines), save_to (a checkpoint of the state the solve ends at; "" none), muck (blocks loose at two
+-- checks 200 cycles apart are dug out, as case.lua's default does). The trace gives the
 -- energies from the start (slip and damping: what they took), the point's movement and adaptive
 -- damping's rate c = 2 omega (info().damping_rate).
 local s = settings{ file = "", step = "", damping = "local", release = 100, cycles = 40000, x = 12.0, y = 0.0,
-                    every = 2000, save_to = "" }
+                    every = 2000, save_to = "", muck = true }
 if s.file == "" then error("give --set file=CHECKPOINT.h5", 0) end
 restore(s.file)
 if s.damping == "local" then
@@ -40,10 +41,22 @@ every(s.every, function(cycle)
   print(("%8d %9.3g %11.4g %11.4g %11.4g %9.4f %10.3g"):format(cycle, info().ratio, e.kinetic, e.slip - start.slip,
                                                               e.damping - start.damping, moved(), info().damping_rate))
 end)
+local fallen, loose_before = 0, {}
+if s.muck then
+  every(200, function()
+    local loose_now, taken = {}, {}
+    for b in loose_blocks{} do
+      loose_now[b.id] = true
+      if loose_before[b.id] then taken[#taken + 1] = b.id end
+    end
+    loose_before = loose_now
+    for _, id in ipairs(taken) do excavate{ block = id }; fallen = fallen + 1 end
+  end)
+end
 local clock = os.clock()
 if s.step ~= "" then excavate{ region = s.step, release = s.release } end
 local r = solve{ ratio = 1e-5, max_cycles = s.release + s.cycles }
-print(("%s: %s after %d cycles (ratio %.3g), %d cracks; the point moved %.4f m towards the axis; kinetic energy "
-       .. "at most %.4g J/m; %.0f s"):format(s.damping, r.converged and "converged" or "NOT converged", r.cycles,
-       r.ratio, info().cracks, moved(), peak, os.clock() - clock))
+print(("%s: %s after %d cycles (ratio %.3g), %d cracks, %d blocks mucked out; the point moved %.4f m towards "
+       .. "the axis; kinetic energy at most %.4g J/m; %.0f s"):format(s.damping, r.converged and "converged" or
+       "NOT converged", r.cycles, r.ratio, info().cracks, fallen, moved(), peak, os.clock() - clock))
 if s.save_to ~= "" then save(s.save_to) end
