@@ -123,7 +123,7 @@ local columns = { "case", "set", "depth", "bolts", "release", "steps", "cracks",
                   "slipped", "fallen", "bolts_laid", "bolts_skipped", "bolts_broken", "bolts_over_half_yield",
                   "cuts_left_out", "threads", "seconds", "prepass_stopped", "unconverged", "stopped",
                   "points_fallen", "edge_m", "far_m", "first", "muck", "damping", "mirror", "crack_length_m",
-                  "origin_x_m", "origin_y_m", "judge", "judgments", "prepass", "bolt_at" }
+                  "origin_x_m", "origin_y_m", "judge", "judgments", "prepass", "bolt_at", "prepass_damping" }
 for _, file in ipairs{ TABLE, STEPS_TABLE } do
   local existing = io.open(file, "r")
   if existing then
@@ -492,7 +492,7 @@ local function result_row()
                 '"' .. table.concat(unconverged, " ") .. '"',
                 '"' .. stopped:gsub('"', "'") .. '"', '"' .. points_fallen() .. '"', EDGE, FAR, FIRST, MUCK,
                 DAMPING, MIRROR, ("%.2f"):format(r.length), ORIGIN_X or "", ORIGIN_Y or "", JUDGE_AT, judgments, PREPASS,
-                BOLT_AT }
+                BOLT_AT, PREPASS_DAMPING }
   local named = {}  -- for result{}: each column's value, unquoted
   for i, v in ipairs(row) do
     row[i] = tostring(v)
