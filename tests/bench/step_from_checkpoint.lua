@@ -25,7 +25,7 @@ else
 end
 
 local point = gp_near(s.x, s.y)
-local function moved()  -- towards the axis, x = 0 [m]
+local function moved()  -- towards the axis, x = 0 [m] (a mucked-out point keeps where it fell)
   for g in gridpoints() do
     if g.id == point.id then return (point.x > 0 and -1 or 1) * (g.ux - point.ux) end
   end
@@ -57,6 +57,6 @@ local clock = os.clock()
 if s.step ~= "" then excavate{ region = s.step, release = s.release } end
 local r = solve{ ratio = 1e-5, max_cycles = s.release + s.cycles }
 print(("%s: %s after %d cycles (ratio %.3g), %d cracks, %d blocks mucked out; the point moved %.4f m towards "
-       .. "the axis; kinetic energy at most %.4g J/m; %.0f s"):format(s.damping, r.converged and "converged" or
+       .. "the axis; kinetic energy at most %.4g J/m (at the trace's lines); %.0f s"):format(s.damping, r.converged and "converged" or
        "NOT converged", r.cycles, r.ratio, info().cracks, fallen, moved(), peak, os.clock() - clock))
 if s.save_to ~= "" then save(s.save_to) end
