@@ -60,6 +60,7 @@ local cavern = require "edem.cavern"
 local rockbolts = require "edem.bolts"
 local yield_pass = require "edem.yield_pass"
 local shapes = require "edem.shapes"
+local loose = require "edem.loose"
 
 local given = settings{
   case = 3, depth = 158, bolts = "none", bolt_at = "solved", set = "P", prepass = "jointed",
@@ -361,17 +362,14 @@ end
 -- block a step's transient lifts off its seat for a moment has not fallen), and rock of a step not
 -- yet dug stays for its step (with the load of a step coming off over 100 cycles, the next bench
 -- down was found loose and taken, and the step after had nothing left to dig).
-local loose_before = {}
+local stays_loose = loose.tracker()
 local function muck_out()
   local moved = {}
   if MUCK == "loose" then
-    local loose_now = {}
-    for b in loose_blocks{} do
-      loose_now[b.id] = true
+    moved = stays_loose(function(b, before)
       local later = dug_at_step[b.id] and dug_at_step[b.id] > step_now
-      if JUDGE_AT ~= "equilibrium" or (loose_before[b.id] and not later) then moved[#moved + 1] = b end
-    end
-    loose_before = loose_now
+      return JUDGE_AT ~= "equilibrium" or (before and not later)
+    end)
   else
     for b in moved_blocks(1.0) do moved[#moved + 1] = b end
   end

@@ -9,7 +9,8 @@
 -- damping (local, 0.8, or adaptive), release and cycles (the solve's limit past the release), the
 -- point followed (x, y: the right wall at the springline), every (cycles between the trace's
 -- lines), save_to (a checkpoint of the state the solve ends at; "" none), muck (blocks loose at two
--- checks 200 cycles apart are dug out, as case.lua's default does). The trace gives the
+-- checks 200 cycles apart are dug out, edem.loose, as case.lua's default does; case.lua also keeps
+-- rock of steps not yet dug, which one step from a checkpoint cannot tell apart). The trace gives the
 -- energies from the start (slip and damping: what they took), the point's movement and adaptive
 -- damping's rate c = 2 omega (info().damping_rate).
 local s = settings{ file = "", step = "", damping = "local", release = 100, cycles = 40000, x = 12.0, y = 0.0,
@@ -41,16 +42,14 @@ every(s.every, function(cycle)
   print(("%8d %9.3g %11.4g %11.4g %11.4g %9.4f %10.3g"):format(cycle, info().ratio, e.kinetic, e.slip - start.slip,
                                                               e.damping - start.damping, moved(), info().damping_rate))
 end)
-local fallen, loose_before = 0, {}
+local fallen = 0
 if s.muck then
+  local stays_loose = require("edem.loose").tracker()
   every(200, function()
-    local loose_now, taken = {}, {}
-    for b in loose_blocks{} do
-      loose_now[b.id] = true
-      if loose_before[b.id] then taken[#taken + 1] = b.id end
+    for _, b in ipairs(stays_loose(function(_, before) return before end)) do
+      excavate{ block = b.id }
+      fallen = fallen + 1
     end
-    loose_before = loose_now
-    for _, id in ipairs(taken) do excavate{ block = id }; fallen = fallen + 1 end
   end)
 end
 local clock = os.clock()
