@@ -86,7 +86,8 @@ const Command& joint_material_command() {
           "below cohesion^2 / (2 ks) loses the cohesion faster than the contact unloads: the "
           "slip snaps through.) A potential crack whose "
           "crack takes such a material breaks into a bonded crack, carrying the section's "
-          "traction, tension too, until its strength runs out. Defining a name again replaces "
+          "traction, tension too, at most its peak (a section judged past its strength starts "
+          "its crack at the peak, not already softened), until its strength runs out. Defining a name again replaces "
           "that material, in its contacts too.",
       .positional =
           {

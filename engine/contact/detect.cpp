@@ -721,6 +721,19 @@ void inherit_faces(const Mechanics& m, Contact& c, const JointParams& p, const C
   c.state = pressed ? ContactState::elastic : ContactState::open;
 }
 
+// A cohesive crack given its section's traction starts at most at its law's peak: tension at
+// most its tensile strength, shear at most Coulomb's limit at that normal stress. A section
+// judged past its strength (its stress passed it before the judgment came) then starts a crack
+// not yet softened, as one judged the moment it reached its strength: the cracks a coarse load
+// step breaks together reach the states a fine one reaches, where one may still unload while
+// its neighbour softens. Taken whole, the overstress would be an opening past the peak, damage
+// the bond keeps.
+void cap_at_peak(Contact& c, const JointParams& p, double length) {
+  c.sn = std::max(c.sn, -p.tension);
+  const double limit = shear_limit(c, p, c.sn, p.cohesion, length);
+  c.fs = std::clamp(c.fs, -limit, limit);
+}
+
 // How far from a gridpoint its contacts are looked for, at most [m].
 double largest_reach(const Mechanics& m) {
   double largest = overlap_limit(m);
@@ -830,6 +843,7 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
         c.sn = dot(f.insitu_force, f.normal) / carrying_length(c, -gap);
         c.fs = dot(f.insitu_force, s);
         if (!with_insitu && c.sn < 0.0 && !c.intact) c.sn = c.fs = 0.0;
+        if (c.intact && p.softens) cap_at_peak(c, p, carrying_length(c, -gap));
         c.closure0 = closure_at(p, c.sn) + gap;
         c.closure = c.closure0 - gap;
         c.dilation = c.us = c.slip = c.opened = 0.0;

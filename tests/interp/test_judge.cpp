@@ -68,6 +68,26 @@ TEST(JudgeMost, InfoCountsTheContactsAJudgmentMakes) {
                                "assert(listed ~= nil and listed > 0 and listed == info().contacts, tostring(listed))");
 }
 
+// A cohesive crack (its joint material softens) judged past its strength starts at its law's
+// peak: kStep's 0.06 and 0.08 MPa, past sigma_t = 0.0546 MPa, give it 0.0546 MPa at an opening of
+// sigma_t / kn, not the section's stress at an opening past the peak (damage it would keep).
+TEST(JudgeMost, ACohesiveCrackStartsAtItsPeakNotPastIt) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, bar() +
+                               "joint_material{ 'crack', kn = 1880e6, ks = 1880e6, friction = 31.2, "
+                               "cohesion = 0.143e6, tension = 0.0546e6, fracture_energy = 20 }\n"
+                               "judge{ every = 10 }\ncycle(10)\n"
+                               "local n, peak = 0, 0.0546e6\n"
+                               "for c in contacts() do\n"
+                               "  n = n + 1\n"
+                               "  assert(c.state == 'bonded', c.state)\n"
+                               "  assert(math.abs(c.sn - peak) <= 1e-9 * peak, ('sn %.9g'):format(c.sn))\n"
+                               "  assert(math.abs(c.un - peak / 1880e6) <= 1e-9 * peak / 1880e6, ('un %.9g'):format(c.un))\n"
+                               "end\n"
+                               "assert(n > 0 and info().cracks > 4, 'the sections broke')");
+}
+
 TEST(JudgeMost, AtMostThatManyBreakAtAJudgmentTheFurthestPastFirst) {
   Interpreter interpreter;
   interpreter.context().quiet = true;
