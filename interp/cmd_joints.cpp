@@ -87,8 +87,8 @@ const Command& joint_material_command() {
           "slip snaps through.) A potential crack whose "
           "crack takes such a material breaks into a bonded crack, carrying the section's "
           "traction, tension too, at most its peak (a section judged past its strength starts "
-          "its crack at the peak, not already softened), until its strength runs out. Defining a name again replaces "
-          "that material, in its contacts too.",
+          "its crack at the peak, not already softened), until its strength runs out. Defining "
+          "a name again replaces that material, in its contacts too.",
       .positional =
           {
               {"name", Type::string, "", any_value, kRequired, "the joint material's name"},
