@@ -304,7 +304,8 @@ const Command& crackseed_command() {
                "0: every cut laid"},
               {"origin", Type::point, "m", any_value, kOptional,
                "a point on one cut of each set (with auto: of every group's sets)",
-               "{0, 0}; with auto each group's centroid"},
+               "{0, 0}; with auto each group's centroid (and a group no line through the point "
+               "given crosses)"},
               {"by_mode", Type::boolean, "", any_value, kOptional,
                "auto: each group keeps to one failure mode (false: a group is the touching "
                "zones of one principal direction, a tension group where its tension zones cover "

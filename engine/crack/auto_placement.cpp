@@ -263,13 +263,20 @@ std::vector<CrackRegion> place_cracks(const Mesh& mesh, const std::vector<Yielde
                                       const std::optional<Vec2>& origin, bool by_mode) {
   std::vector<CrackRegion> placed;
   for (CrackRegion& region : group_yielded(mesh, zones, similar, by_mode)) {
-    if (origin) region.origin = *origin;
+    const Vec2 centroid = region.origin;
     region.angles = crack_angles(region.tension, region.principal, region.friction);
     const double shortest = mean_edge(mesh, region.zones);
-    for (double angle : region.angles) {
-      const auto cuts = cuts_in_zones(mesh, region.zones, angle, spacing, region.origin, shortest);
-      region.cuts.insert(region.cuts.end(), cuts.begin(), cuts.end());
-    }
+    const auto lay = [&](Vec2 through) {
+      region.origin = through;
+      for (double angle : region.angles) {
+        const auto cuts = cuts_in_zones(mesh, region.zones, angle, spacing, through, shortest);
+        region.cuts.insert(region.cuts.end(), cuts.begin(), cuts.end());
+      }
+    };
+    lay(origin ? *origin : centroid);
+    // A group that no line of the common grid crosses is still cut through its own centroid:
+    // whether yielded rock gets potential cracks must not hang on where the grid falls.
+    if (region.cuts.empty() && origin) lay(centroid);
     if (region.cuts.empty()) continue;
     region.outline = union_outline(mesh, region.zones);
     placed.push_back(std::move(region));

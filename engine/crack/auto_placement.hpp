@@ -48,7 +48,7 @@ struct CrackRegion {
   double friction = 0.0;        // mean friction angle [deg]
   std::vector<double> angles;   // the two sets, [0, 180) [deg]
   std::vector<int> zones;       // mesh zones, ascending
-  Vec2 origin;                  // one cut of each set passes through it: centroid, or as given [m]
+  Vec2 origin;                  // one cut of each set passes through it: as given, else centroid [m]
   std::vector<Cut> cuts;
   std::vector<Cut> outline;     // the boundary edges of the union of its zones
 };
@@ -73,7 +73,8 @@ std::vector<Cut> cuts_in_zones(const Mesh& mesh, const std::vector<int>& zones, 
 std::vector<Cut> union_outline(const Mesh& mesh, const std::vector<int>& zones);
 
 // group_yielded, then the angles, cuts and outline of every region (regions with no cut left are dropped).
-// The cuts of every set pass through `origin` if given, else through their region's centroid.
+// The cuts of every set pass through `origin` if given, else through their region's centroid; a
+// region no line through `origin` crosses is cut through its centroid.
 std::vector<CrackRegion> place_cracks(const Mesh& mesh, const std::vector<YieldedZone>& zones,
                                       double spacing, double similar,
                                       const std::optional<Vec2>& origin = std::nullopt,

@@ -174,6 +174,19 @@ TEST(AutoPlacement, CutsRunThroughTheCentroidOrTheOriginGiven) {
   EXPECT_GT(off_own_grid, 0) << "the origin given moved the cuts";
 }
 
+// A group that no line through the point given crosses (here every line runs 43 m or more from
+// the square) is cut through its own centroid instead of being left without potential cracks.
+TEST(AutoPlacement, AGroupTheGridMissesIsCutThroughItsCentroid) {
+  const Mesh mesh = grid(4, 4);
+  const Vec2 far_off{52.0, 2.0};
+  const auto regions = place_cracks(mesh, all_in_shear(90.0), 100.0, 15.0, far_off);
+  ASSERT_EQ(regions.size(), 1u);
+  EXPECT_EQ(regions[0].origin, (Vec2{2.0, 2.0}));
+  ASSERT_EQ(regions[0].cuts.size(), 2u);  // one a set, each through the centre
+  for (const Cut& cut : regions[0].cuts) EXPECT_TRUE(on_grid(cut, Vec2{2.0, 2.0}, 100.0));
+  for (const Cut& cut : regions[0].cuts) EXPECT_FALSE(on_grid(cut, far_off, 100.0));
+}
+
 // A lone tension zone inside a shear region: grouped by mode it is a region of its own (dropped
 // here: too small for a cut), and the shear region's outline, glued, rings the hole it leaves, so
 // the cuts stop at it; grouped by direction there is one region, its outline the square's alone.
