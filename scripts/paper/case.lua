@@ -26,7 +26,8 @@
 --   stages    how many of the 16 steps to dig [16]
 --   similar   deg: crackseed{ auto }'s grouping angle [45]
 --   min_angle deg: crackseed{ auto }'s sharpest corner of a cut with a joint [30; 0: every cut]
---   origin_x, origin_y  m: a point every group's cuts pass through [centroid: each group's own]
+--   origin_x, origin_y  m: a point every group's cuts pass through (a group none of them
+--             crosses: its centroid) [centroid: each group's own]
 --   by_mode   true: crackseed{ auto }'s groups keep to one failure mode [false]
 --   muck      loose (blocks held by nothing, rock that fell), moved (moved 1 m) or opening (moved
 --             1 m into the opening) are mucked out every 200 cycles [loose]
