@@ -24,8 +24,13 @@ namespace {
 
 // The return mapping, one body for MaterialParams and MohrConstants (both name e1, e2, nphi,
 // npsi, csnp, tension), inlined into each kernel so that none pays a call or a copy.
+// `before` (nullptr: not wanted) is the stress at the start of the step; `*work` then gets the
+// step's plastic work per unit volume: the plastic strain is diagonal in the trial's principal
+// frame, so the work is the mid-step stress's normal components on those axes times it, the
+// same as plastic_work (mohr_coulomb.hpp) at a fraction of its cost.
 template <class P>
-[[gnu::always_inline]] inline std::uint8_t return_mapping(const P& m, Stress& s, double* shear_lambda) {
+[[gnu::always_inline]] inline std::uint8_t return_mapping(const P& m, Stress& s, double* shear_lambda,
+                                                          const Stress* before, double* work) {
   // In-plane principal stresses a <= b and the direction of b (cos 2t, sin 2t).
   const double centre = 0.5 * (s.xx + s.yy), half = 0.5 * (s.xx - s.yy);
   const double radius = std::sqrt(half * half + s.xy * s.xy);  // hypot is several times slower
@@ -54,6 +59,7 @@ template <class P>
   const double sigma_p = m.nphi * m.tension - m.csnp;
   const double h = p[2] - m.tension + alpha_p * (p[0] - sigma_p);
   std::uint8_t state = 0;
+  double strain_1 = 0.0, strain_3 = 0.0;  // the plastic strain along s1 and s3 (none along s2)
   if (fs < 0.0 && h <= 0.0) {
     const double e1 = m.e1, e2 = m.e2;
     const double lambda = fs / ((e1 - e2 * m.npsi) - (e2 - e1 * m.npsi) * m.nphi);
@@ -61,13 +67,25 @@ template <class P>
     p[1] -= lambda * e2 * (1.0 - m.npsi);
     p[2] -= lambda * (e2 - e1 * m.npsi);
     if (shear_lambda) *shear_lambda = lambda;
+    strain_1 = lambda, strain_3 = -lambda * m.npsi;
     state = kShearNow;
   } else {
     const double drop = m.tension - p[2];  // < 0
     p[0] += drop * m.e2 / m.e1;
     p[1] += drop * m.e2 / m.e1;
     p[2] = m.tension;
+    strain_3 = -drop / m.e1;
     state = kTensionNow;
+  }
+
+  if (before) {
+    // The start's normal stresses on the axes of a, b and zz.
+    const double bc = 0.5 * (before->xx + before->yy);
+    const double bh = 0.5 * (before->xx - before->yy) * cos2 + before->xy * sin2;
+    const double on_a = bc - bh, on_b = bc + bh;
+    const double start_1 = zz_at == 0 ? before->zz : on_a;
+    const double start_3 = zz_at == 2 ? before->zz : on_b;
+    *work = 0.5 * ((start_1 + p[0]) * strain_1 + (start_3 + p[2]) * strain_3);
   }
 
   // Back to xx, yy, xy along the unchanged principal directions.
@@ -91,11 +109,12 @@ template <class P>
 std::uint8_t mohr_coulomb_update(const MaterialParams& m, Stress& s, double dexx, double deyy,
                                  double dgxy, double dezz) {
   elastic_update(m, s, dexx, deyy, dgxy, dezz);
-  return return_mapping(m, s, nullptr);
+  return return_mapping(m, s, nullptr, nullptr, nullptr);
 }
 
-std::uint8_t mohr_coulomb_return(const MohrConstants& m, Stress& s, double* shear_lambda) {
-  return return_mapping(m, s, shear_lambda);
+std::uint8_t mohr_coulomb_return(const MohrConstants& m, Stress& s, double* shear_lambda, const Stress* before,
+                                 double* work) {
+  return return_mapping(m, s, shear_lambda, before, work);
 }
 
 }  // namespace edem
@@ -119,11 +138,12 @@ void derive_mohr(const MaterialDef& def, MaterialParams& p) {
   set_mohr_strength(p, d.cohesion, d.friction, d.dilation, d.tension);
 }
 
-// The registry's kernel: the trial and the return mapping in one body.
+// The registry's kernel: the trial, the return mapping and the plastic work in one body.
 std::uint8_t update_mohr(const MaterialParams& p, Stress& s, double dxx, double dyy, double dxy, double dzz,
-                         double&) {
+                         double&, double* work) {
+  const Stress before = s;
   elastic_update(p, s, dxx, dyy, dxy, dzz);
-  return return_mapping(p, s, nullptr);
+  return return_mapping(p, s, nullptr, work ? &before : nullptr, work);
 }
 
 bool unsymmetric_mohr(const MaterialParams& p) { return p.npsi != p.nphi; }

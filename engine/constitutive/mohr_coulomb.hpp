@@ -32,6 +32,17 @@ inline double compliance_product(const MaterialParams& m, const Stress& a, const
   return ma * mb / m.bulk + deviatoric / (2.0 * m.shear);
 }
 
+// The plastic work per unit volume [J/m^3] of a step from `before` through the elastic `trial`
+// to `after`: the mid-step stress on the plastic strain, C^-1 (trial - after). With the zone's
+// strain energy, half of s : C^-1 : s, it closes the zone's balance exactly: the mid-step stress
+// on the whole strain increment is their sum.
+inline double plastic_work(const MaterialParams& m, const Stress& before, const Stress& trial, const Stress& after) {
+  const Stress mid{0.5 * (before.xx + after.xx), 0.5 * (before.yy + after.yy), 0.5 * (before.xy + after.xy),
+                   0.5 * (before.zz + after.zz)};
+  const Stress returned{trial.xx - after.xx, trial.yy - after.yy, trial.xy - after.xy, trial.zz - after.zz};
+  return compliance_product(m, mid, returned);
+}
+
 // The constants of the return mapping: moduli and one strength.
 struct MohrConstants {
   double e1, e2;           // K + 4G/3, K - 2G/3 [Pa]
@@ -44,8 +55,11 @@ inline MohrConstants mohr_constants(const MaterialParams& p) {
 
 // The return mapping alone, of a stress that is already the elastic trial. On shear failure,
 // `*shear_lambda` (when not null) gets the plastic multiplier: the plastic principal strain
-// increments are lambda * (1, 0, -npsi) along (s1, s2, s3). Returns the state bits.
-std::uint8_t mohr_coulomb_return(const MohrConstants& m, Stress& s, double* shear_lambda);
+// increments are lambda * (1, 0, -npsi) along (s1, s2, s3). With `before`, the stress at the
+// start of the step, `*work` gets the step's plastic work per unit volume [J/m^3] when it
+// yields (the value of plastic_work). Returns the state bits.
+std::uint8_t mohr_coulomb_return(const MohrConstants& m, Stress& s, double* shear_lambda,
+                                 const Stress* before = nullptr, double* work = nullptr);
 
 // The elastic trial and the return mapping. Returns the zone state bits of this step
 // (kShearNow, kTensionNow, or 0 when elastic).

@@ -53,11 +53,12 @@ double shear_strain_increment(double lambda, double npsi) {
 }
 
 std::uint8_t update_ss(const MaterialParams& p, Stress& s, double dxx, double dyy, double dxy, double dzz,
-                       double& eps) {
+                       double& eps, double* work) {
+  const Stress before = s;
   elastic_update(p, s, dxx, dyy, dxy, dzz);
   const MohrConstants k = eps > 0.0 ? strength_at(p, eps) : mohr_constants(p);
   double lambda = 0.0;
-  const std::uint8_t now = mohr_coulomb_return(k, s, &lambda);
+  const std::uint8_t now = mohr_coulomb_return(k, s, &lambda, work ? &before : nullptr, work);
   if (now & kShearNow) eps += shear_strain_increment(lambda, k.npsi);
   return now;
 }

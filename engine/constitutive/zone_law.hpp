@@ -42,9 +42,12 @@ const ZoneTable& law_table(const MaterialDef& def, std::string_view key);
 
 // The stress update of one zone by a strain increment (dxx, dyy, engineering dxy, dzz), in
 // place; `history` is the zone's own state variable (zone_history), which the law may advance.
-// Returns the zone state bits of the step (kShearNow, kTensionNow, or 0 when elastic).
+// When the zone yields and `work` is not null, `*work` gets the step's plastic work per unit
+// volume [J/m^3] (plastic_work, mohr_coulomb.hpp): the law has the elastic trial at hand, and
+// the energy balance asks it of every yielding zone every cycle. Returns the zone state bits of
+// the step (kShearNow, kTensionNow, or 0 when elastic).
 using ZoneUpdate = std::uint8_t (*)(const MaterialParams& p, Stress& s, double dxx, double dyy, double dxy,
-                                    double dzz, double& history);
+                                    double dzz, double& history, double* work);
 // Checks the law's own keys of a definition whose elastic constants are already in `p`, and
 // fills the rest of `p`. Throws edem::Error naming the key and the value.
 using ZoneDerive = void (*)(const MaterialDef& def, MaterialParams& p);

@@ -28,7 +28,7 @@ Stress stress_after(const MaterialParams& p, double history, const Stress& start
     elastic_update(p, s, e.xx, e.yy, e.xy);
     if (state) *state = 0;
   } else {
-    const std::uint8_t now = law.update(p, s, e.xx, e.yy, e.xy, 0.0, history);
+    const std::uint8_t now = law.update(p, s, e.xx, e.yy, e.xy, 0.0, history, nullptr);
     if (state) *state = now;
   }
   return s;

@@ -71,30 +71,13 @@ struct Partials {
   std::vector<NodeWork> work;  // per node chunk [J/m]
 };
 
-// Update of zone z by a strain increment through its law's kernel (constitutive/zone_law.hpp);
-// a zone that yields adds its plastic work of the step to `*plastic` [J/m]: the mid-step stress
-// on the plastic strain, C^-1 (trial - returned). Out of line, so that the elastic zones' path
-// stays short.
-[[gnu::noinline]] void plastic_zone_update(Mechanics& m, size_t z, const MaterialParams& p, double dxx, double dyy,
-                                           double dxy, double dzz, double* plastic) {
-  Stress& s = m.stress[z];
-  const Stress before = s;
-  const std::uint8_t now = zone_law(p.model).update(p, s, dxx, dyy, dxy, dzz, m.zone_history[z]);
-  m.zone_state[z] = static_cast<std::uint8_t>((m.zone_state[z] & (kShearPast | kTensionPast)) | now | (now << 2));
-  if (now == 0) return;
-  Stress trial = before;
-  elastic_update(p, trial, dxx, dyy, dxy, dzz);
-  const Stress mid{0.5 * (before.xx + s.xx), 0.5 * (before.yy + s.yy), 0.5 * (before.xy + s.xy), 0.5 * (before.zz + s.zz)};
-  const Stress returned{trial.xx - s.xx, trial.yy - s.yy, trial.xy - s.xy, trial.zz - s.zz};
-  *plastic += m.geometry[z].area * compliance_product(p, mid, returned);
-}
-
 // Constitutive update of mesh zone z over one step; `iso` is the isotropic strain rate the
 // mixed discretisation adds, on all three axes (kIso false: none, and no flops spent on it;
-// with them the plain cycle was 10 % slower). Plastic work goes to `*plastic`.
+// with them the plain cycle was 10 % slower). Any other law through its kernel
+// (constitutive/zone_law.hpp). Returns the zone's plastic work of the step [J/m]: summed in a
+// register by the caller, not in memory, so that yielding zones do not wait on one another.
 template <bool kIso>
-[[gnu::always_inline]] inline void update_zone(Mechanics& m, size_t z, const ZoneStrain& r, double iso, double dt,
-                                               double* plastic) {
+[[gnu::always_inline]] inline double update_zone(Mechanics& m, size_t z, const ZoneStrain& r, double iso, double dt) {
   const MaterialParams& p = m.params[static_cast<size_t>(m.zone_material[z])];
   Stress& s = m.stress[z];
   const double dxx = (kIso ? r.xx + iso : r.xx) * dt, dyy = (kIso ? r.yy + iso : r.yy) * dt;
@@ -104,9 +87,12 @@ template <bool kIso>
       elastic_update(p, s, dxx, dyy, r.xy * dt, dzz);
     else
       elastic_update(p, s, dxx, dyy, r.xy * dt);
-  } else {
-    plastic_zone_update(m, z, p, dxx, dyy, r.xy * dt, dzz, plastic);
+    return 0.0;
   }
+  double work = 0.0;  // [J/m^3]
+  const std::uint8_t now = zone_law(p.model).update(p, s, dxx, dyy, r.xy * dt, dzz, m.zone_history[z], &work);
+  m.zone_state[z] = static_cast<std::uint8_t>((m.zone_state[z] & (kShearPast | kTensionPast)) | now | (now << 2));
+  return m.geometry[z].area * work;
 }
 
 // The forces a zone's stress `s` puts on its three corners, its in-plane normal stresses shifted
@@ -195,7 +181,7 @@ void zone_force_pass(Mechanics& m, int begin, int end, Partials& partials) {
   for (int first = begin; first < end; first += kChunk) {
     const int last = std::min(end, first + kChunk);
     double applied = 0.0;
-    double* plastic = &partials.plastic[static_cast<size_t>(first / kChunk)];
+    double plastic = 0.0;
     int inverted_zone = -1;
     for (int k = first; k < last; ++k) {
       const std::array<int, 2> others = kGrouped ? m.mates[static_cast<size_t>(k)] : std::array<int, 2>{-1, -1};
@@ -204,7 +190,7 @@ void zone_force_pass(Mechanics& m, int begin, int end, Partials& partials) {
         const ZoneGeometry& g = m.geometry[z];
         const auto& dest = m.partition.dest[static_cast<size_t>(k)];
         const Stress& s = m.stress[z];
-        update_zone<false>(m, z, zone_strain(v, g), 0.0, dt, plastic);
+        plastic += update_zone<false>(m, z, zone_strain(v, g), 0.0, dt);
         const double f = add_zone_forces<kMeasure>(m, g, dest, s, 0.0);
         if constexpr (kMeasure) {
           applied += f;
@@ -226,7 +212,7 @@ void zone_force_pass(Mechanics& m, int begin, int end, Partials& partials) {
         const double mean_rate = volume / area;
         for (int i = 0; i < count; ++i) {
           const size_t z = static_cast<size_t>(m.active[static_cast<size_t>(members[i])]);
-          update_zone<true>(m, z, rate[i], (mean_rate - (rate[i].xx + rate[i].yy)) * (1.0 / 3.0), dt, plastic);
+          plastic += update_zone<true>(m, z, rate[i], (mean_rate - (rate[i].xx + rate[i].yy)) * (1.0 / 3.0), dt);
         }
         const double group_change = group_mean_stress_change(m, members, count);
         for (int i = 0; i < count; ++i) {
@@ -242,6 +228,7 @@ void zone_force_pass(Mechanics& m, int begin, int end, Partials& partials) {
       }
     }
     const size_t chunk = static_cast<size_t>(first / kChunk);
+    partials.plastic[chunk] += plastic;
     if constexpr (kMeasure) {
       partials.zone_applied[chunk] = applied;
       partials.zone_inverted[chunk] = inverted_zone;

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "constitutive/material.hpp"
+#include "constitutive/mohr_coulomb.hpp"
 #include "constitutive/zone_law.hpp"
 #include "error_of.hpp"
 
@@ -71,6 +72,53 @@ MaterialDef softening_rock() {
   return def;
 }
 
+MaterialDef mohr_rock() {
+  MaterialDef def;
+  def.name = "rock";
+  def.model = MaterialModel::mohr;
+  def.young = 1e9;
+  def.poisson = 0.25;
+  def.cohesion = 1e6;
+  def.friction = 30;
+  def.dilation = 10;
+  def.tension = 0.5e6;
+  return def;
+}
+
+// The work a law reports for a yielding step is the general definition's (plastic_work): the
+// mid-step stress on C^-1 (trial - returned), for steps that fail in shear and in tension, with
+// the out-of-plane stress least, middle and most compressive, and rotating principal axes.
+TEST(ZoneLaws, PlasticWorkIsTheMidStepStressOnThePlasticStrain) {
+  for (const MaterialDef& def : {mohr_rock(), softening_rock()}) {
+    const MaterialParams p = material_params(def);
+    const ZoneLaw& law = zone_law(p.model);
+    int shear = 0, tension = 0, positions[3] = {0, 0, 0};
+    for (double szz : {-8e6, -2e6, 0.4e6})
+      for (double angle = 0.0; angle < 3.2; angle += 0.4)
+        for (double size : {1e-4, 3e-3}) {
+          const Stress before{-3e6, -1e6, 0.3e6, szz};
+          const double dxx = size * std::cos(angle), dyy = -size * std::sin(angle), dxy = 0.7 * size;
+          Stress trial = before;
+          elastic_update(p, trial, dxx, dyy, dxy);
+          Stress s = before;
+          double history = 0.0, work = -1.0;
+          const std::uint8_t now = law.update(p, s, dxx, dyy, dxy, 0.0, history, &work);
+          if (now == 0) {
+            EXPECT_EQ(work, -1.0);  // left alone
+            continue;
+          }
+          shear += (now & kShearNow) != 0, tension += (now & kTensionNow) != 0;
+          const Principal in_plane = in_plane_principal(trial);
+          positions[trial.zz <= in_plane.s1 ? 0 : trial.zz <= in_plane.s3 ? 1 : 2] += 1;
+          const double expected = plastic_work(p, before, trial, s);
+          EXPECT_NEAR(work, expected, 1e-9 * std::abs(expected) + 1e-12) << def.name << " szz " << szz << " angle " << angle;
+        }
+    EXPECT_GT(shear, 0) << def.name;
+    EXPECT_GT(tension, 0) << def.name;
+    for (int count : positions) EXPECT_GT(count, 0) << def.name;
+  }
+}
+
 // One zone pressed in yy past the peak at a held sxx: each shear step adds |lambda| to e_ps
 // (psi = 0), and the next step's strength is the table's at the new e_ps.
 TEST(StrainSoftening, ShearStepsAdvanceEpsAndSoften) {
@@ -88,7 +136,7 @@ TEST(StrainSoftening, ShearStepsAdvanceEpsAndSoften) {
     const double before = eps;
     // Axial strain, and the lateral strain that keeps sxx near -1e6 elastically.
     const double de = -1e-6, dx = -(p.e2 / p.e1) * de;
-    if (law.update(p, s, dx, de, 0.0, 0.0, eps) & kShearNow && first_plastic == 0.0) first_plastic = eps - before;
+    if (law.update(p, s, dx, de, 0.0, 0.0, eps, nullptr) & kShearNow && first_plastic == 0.0) first_plastic = eps - before;
     ++steps;
   }
   EXPECT_GT(first_plastic, 0.0);
