@@ -5,7 +5,7 @@
 -- its kind:
 --   - judging mode, damping and release: against judged at equilibrium, local damping, the load
 --     released over 10,000 cycles (1.5 m zones);
---   - zone size near the opening (judged at equilibrium, adaptive damping, released over 100
+--   - zone size near the opening (judged at equilibrium, local damping, released over 100
 --     cycles): against the finest zones.
 -- A change of zero is drawn at 0.1 %, the chart's floor, so that it shows on log axes. Each line
 -- joins a kind of run's points in order of run time; the printed table says which point is which.
@@ -78,7 +78,7 @@ for _, r in ipairs(runs) do
 end
 table.sort(zones, function(a, b) return a.edge > b.edge end)
 for _, z in ipairs(zones) do
-  print(("  zones of %.1f m at the opening (at equilibrium, adaptive, release 100): %4d s, cracks %3d (%.1f %% from "
+  print(("  zones of %.1f m at the opening (at equilibrium, local, release 100): %4d s, cracks %3d (%.1f %% from "
          .. "the finest), crown %.4f m (%.2f %%)"):format(z.edge, z.seconds, z.cracks,
          100 * math.abs(z.cracks - finest.cracks) / finest.cracks, z.crown_m,
          100 * math.abs(z.crown_m - finest.crown_m) / finest.crown_m))
