@@ -12,7 +12,8 @@
 -- D / 40; potential cracks in two sets, vertical and horizontal, D / 20 apart, one set on the
 -- loaded diameter, judged every 10 cycles by the seed strength (c = 0.143 MPa, phi = 34 deg,
 -- sigma_t = 0.0546 MPa). Curved rigid jaws over arcs of 2 alpha = 15 deg at the top and the
--- bottom, smooth (the disc's gridpoints under them are held in y only): the bottom one fixed,
+-- bottom, smooth (the disc's gridpoints under them are held in y only; the loaded diameter's two
+-- ends in x, as symmetry holds them): the bottom one fixed,
 -- the top one pushed down in steps, each a slow push then held and solved (ratio 1e-6); the
 -- load is the bottom jaw's reaction at equilibrium (a load read while the jaw moves lags the
 -- stress inside: the damping that takes the disc to equilibrium drags on it). Steps of 20 % of
@@ -76,9 +77,12 @@ local function build(label, criterion, at)
     judge{ every = 10, criterion = criterion }
   end
   boundary{ polygon = BOTTOM, fix = "y" }
+  -- The loaded diameter's ends held in x too, as symmetry holds them: with only one, the disc
+  -- rocks about it on the top jaw's arc, a mode soft enough that the solves crawl to their ratio.
   local tip = 1e-3
   boundary{ polygon = { { -tip, -R - tip }, { tip, -R - tip }, { tip, -LOW }, { -tip, -LOW } }, fix = "x" }
   boundary{ polygon = TOP, fix = "y" }
+  boundary{ polygon = { { -tip, LOW }, { tip, LOW }, { tip, R + tip }, { -tip, R + tip } }, fix = "x" }
 end
 
 -- The bottom jaw's reaction [N/m]: the vertical force of its gridpoints, each node once (the
