@@ -182,12 +182,24 @@ class BaseCutter {
   // nothing is left to give way: stuck_at() says where, fail_stuck() throws the message.
   bool run(BlockSet& out) {
     int snapped = 0;
+    // The cuts as laid first: each end within the tolerance of an edge reaches it (before the
+    // bending below, whose dangling pieces are dropped).
+    for (int pass = 0; pass < kMaxSnapRounds; ++pass) {
+      build();
+      inside_faces_ = find_inside_faces();
+      fixed_at_.clear();
+      const int reached = snap_free_ends();
+      if (reached == 0) break;
+      snapped += reached;
+    }
     for (int round = 0;; ++round) {
       build();
       inside_faces_ = find_inside_faces();
       dropped_ = count_dangling_pieces();
       remove_dangling_edges();
       collect_rings();
+      fixed_at_.clear();
+      bent_in_round_.clear();
       const int fixes = snap_small_features();
       if (fixes == 0) {
         // Clean: now cut back the optional pieces that make a sharp corner, then clean again.
@@ -488,6 +500,23 @@ class BaseCutter {
     return bend_all(cut_pieces_at(v), std::nullopt, rounded(s.supporting_line().projection(p)));
   }
 
+  // Brings the free end v of a cut onto edge e, within the tolerance of it: to an end of e that
+  // near, else to the foot of its perpendicular, which e's pieces then pass through too. The cut
+  // moves, not e: a joint keeps its line.
+  bool reach(Vertex v, Halfedge e) {
+    const Point& p = v->point();
+    for (Vertex w : {e->source(), e->target()})
+      if (CGAL::compare(CGAL::squared_distance(p, w->point()), tolerance2_at(p)) == CGAL::SMALLER)
+        return bend_all(cut_pieces_at(v), w, rounded(w->point()));
+    const Segment s(e->source()->point(), e->target()->point());
+    const Point q = rounded(s.supporting_line().projection(p));
+    bool changed = false;
+    for (int id : cut_pieces_at(v)) changed |= bend(id, q);
+    if (!has_base_piece(e, pieces_))
+      for (int id : e->curve().data()) changed |= bend(id, q);
+    return changed;
+  }
+
   // "joint set 1 and crackseed 2": the inputs the pieces come from, as a script names them.
   std::string describe_pieces(const std::vector<int>& ids) const {
     std::vector<std::string> names;
@@ -517,13 +546,7 @@ class BaseCutter {
   // tolerance, and the last round checks everything afresh). One fix a round ran out of rounds
   // where a crackseed{} lays its cuts across the joints.
   int snap_small_features() {
-    std::vector<Vec2> fixed_at;
-    bent_in_round_.clear();
-    auto near_a_fix = [&](Vec2 p, double slack) {
-      return std::any_of(fixed_at.begin(), fixed_at.end(), [&](Vec2 q) {
-        return std::abs(p.x - q.x) < 2.0 * slack && std::abs(p.y - q.y) < 2.0 * slack;
-      });
-    };
+    const size_t before = fixed_at_.size();
     for (const FaceRings& face : inside_) {
       std::vector<Halfedge> edges = face.outer;
       for (const auto& hole : face.holes) edges.insert(edges.end(), hole.begin(), hole.end());
@@ -547,7 +570,7 @@ class BaseCutter {
           std::vector<int> ids = cut_pieces_at(v);
           for (int id : he->curve().data()) ids.push_back(id);
           if (fix(v, he)) {
-            fixed_at.push_back(pv);
+            fixed_at_.push_back(pv);
             last_fix_ = pv;
             last_bent_ = ids;
             for (int id : ids) bent_in_round_.emplace_back(id, pv);
@@ -556,7 +579,53 @@ class BaseCutter {
         }
       }
     }
-    return static_cast<int>(fixed_at.size());
+    return static_cast<int>(fixed_at_.size() - before);
+  }
+
+  // Whether p is within twice `slack` of a fix made in this round (in x and in y).
+  bool near_a_fix(Vec2 p, double slack) const {
+    return std::any_of(fixed_at_.begin(), fixed_at_.end(), [&](Vec2 q) {
+      return std::abs(p.x - q.x) < 2.0 * slack && std::abs(p.y - q.y) < 2.0 * slack;
+    });
+  }
+
+  // A cut that ends within the tolerance of an edge reaches it: otherwise a cut clipped to the
+  // zones along a joint, its end a rounding short of the joint, would dangle and go whole. Ends
+  // near one fixed earlier in this pass wait for the next.
+  int snap_free_ends() {
+    const size_t before = fixed_at_.size();
+    for (auto v = arrangement_.vertices_begin(); v != arrangement_.vertices_end(); ++v) {
+      if (v->degree() != 1) continue;
+      const Halfedge into = v->incident_halfedges();
+      if (!is_dangling(into)) continue;
+      const Vec2 pv = to_vec(v->point());
+      const double tolerance = tolerance_at(pv);
+      if (near_a_fix(pv, 4.0 * tolerance)) continue;
+      const Kernel::FT tolerance2(tolerance * tolerance);
+      const Face face = into->face();
+      std::vector<Halfedge> edges;
+      if (!face->is_unbounded()) edges = ccb_halfedges(face->outer_ccb());
+      for (auto ic = face->inner_ccbs_begin(); ic != face->inner_ccbs_end(); ++ic) {
+        const std::vector<Halfedge> hole = ccb_halfedges(*ic);
+        edges.insert(edges.end(), hole.begin(), hole.end());
+      }
+      Halfedge nearest;
+      std::optional<Kernel::FT> best;
+      for (const Halfedge& he : edges) {
+        if (he->face() == he->twin()->face()) continue;  // dangling too: nothing to reach
+        const Vec2 a = to_vec(he->source()->point()), b = to_vec(he->target()->point());
+        const double slack = 2.0 * tolerance;  // a cheap double-precision filter first
+        if (pv.x < std::min(a.x, b.x) - slack || pv.x > std::max(a.x, b.x) + slack ||
+            pv.y < std::min(a.y, b.y) - slack || pv.y > std::max(a.y, b.y) + slack)
+          continue;
+        const Segment s(he->source()->point(), he->target()->point());
+        const Kernel::FT d2 = CGAL::squared_distance(v->point(), s);
+        if (d2 < tolerance2 && (!best || d2 < *best)) best = d2, nearest = he;
+      }
+      if (!best) continue;
+      if (reach(v, nearest)) fixed_at_.push_back(pv);
+    }
+    return static_cast<int>(fixed_at_.size() - before);
   }
 
   // Whether the cut pieces of edge h are all optional ones that mind sharp corners (a joint or
@@ -779,6 +848,7 @@ class BaseCutter {
   std::unordered_set<const void*> inside_faces_;
   std::vector<FaceRings> inside_;
   int dropped_ = 0;
+  std::vector<Vec2> fixed_at_;  // this round's fixes: the arrangement is stale near them
   int left_out_ = 0;
   int cut_back_ = 0;
 };

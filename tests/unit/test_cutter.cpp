@@ -200,6 +200,34 @@ TEST(Cutter, CutPassingNearAJointCrossingIsSnapped) {
   expect_valid_blocks(set, model.tolerance());
 }
 
+// A cut that stops short of another by less than the tolerance reaches it and splits the block
+// (a cut clipped to zones along a joint ends a rounding off it); short by more, it is dropped.
+TEST(Cutter, ACutEndingWithinTheToleranceOfAnotherReachesIt) {
+  const double tolerance = jointed_box(10).tolerance();
+  for (double miss : {0.5, 1e-3, 1e-9, 0.0, -1e-9, -0.5}) {
+    Model model = jointed_box(10);
+    model.add_crack({{0, 5}, {10, 5}});
+    model.add_crack({{5, 0}, {5, 5 - miss * tolerance}});  // negative: past it
+    const BlockSet& set = model.blocks();
+    EXPECT_EQ(set.blocks.size(), 3u) << miss;
+    EXPECT_NEAR(total_area(set), 100.0, 1e-12) << miss;
+    expect_valid_blocks(set, model.tolerance());
+  }
+  // Ending on a crack at a slope, where the end point as doubles has it: off the line by a rounding.
+  Model sloped = jointed_box(10);
+  const double slope = std::tan(0.3);
+  sloped.add_crack({{0, 2}, {10, 2 + 10 * slope}});
+  sloped.add_crack({{4.3, 10}, {4.3, 2 + 4.3 * slope}});
+  EXPECT_EQ(sloped.blocks().blocks.size(), 3u);
+  expect_valid_blocks(sloped.blocks(), sloped.tolerance());
+  // Short by twice the tolerance: it ends inside the block and goes.
+  Model short_of = jointed_box(10);
+  short_of.add_crack({{0, 5}, {10, 5}});
+  short_of.add_crack({{5, 0}, {5, 5 - 2 * tolerance}});
+  EXPECT_EQ(short_of.blocks().blocks.size(), 2u);
+  EXPECT_EQ(short_of.blocks().dropped_cuts, 1);
+}
+
 // The seed region's block and its main joint set (60 deg at 16, 12, 8 m), at tolerance 1e-3.
 Model seed_region_coarse() {
   Model model(ModelDef{"", 1e-3});
