@@ -24,6 +24,8 @@
 --             potential cracks go does not change with the steps' damping [local]
 --   edge, far m: zone size at the cavern and far from it [1.5, 10]
 --   stages    how many of the 16 steps to dig [16]
+--   step_cycles  cycles a step is solved for once its load is off, before it is left short of
+--             its ratio [40000]
 --   similar   deg: crackseed{ auto }'s grouping angle [45]
 --   min_angle deg: crackseed{ auto }'s sharpest corner of a cut with a joint [30; 0: every cut]
 --   origin_x, origin_y  m: a point every group's cuts pass through (a group none of them
@@ -67,7 +69,7 @@ local given = settings{
   case = 3, depth = 158, bolts = "none", bolt_at = "solved", set = "P", prepass = "jointed",
   judge = "equilibrium", release = 0, release_offset = 0, damping = "local", prepass_damping = "local",
   edge = 1.5, far = 10,
-  stages = 16, similar = 45, min_angle = 30, origin_x = "centroid", origin_y = "centroid",
+  stages = 16, step_cycles = 40000, similar = 45, min_angle = 30, origin_x = "centroid", origin_y = "centroid",
   by_mode = false, muck = "loose", first = "left", mirror = false, judge_most = 0, judge_radius = 0,
   tolerance = 7e-4, fracture_energy = 0, shear_fracture_energy = 0, table = "case_results.csv",
   threads = os.getenv("OMP_NUM_THREADS") or "default", strict = false, save_after = 0,
@@ -85,6 +87,9 @@ local STAGES, RELEASE_OFFSET = given.stages, given.release_offset
 local RELEASE = (given.release ~= 0 and given.release or (JUDGE_AT == "equilibrium" and 100 or 20000)) + RELEASE_OFFSET
 if not (math.type(RELEASE) == "integer" and RELEASE >= 1) then
   error(("release + release_offset must be a whole number of cycles >= 1, got %s"):format(RELEASE), 0)
+end
+if not (math.type(given.step_cycles) == "integer" and given.step_cycles >= 1) then
+  error(("step_cycles must be a whole number of cycles >= 1, got %s"):format(given.step_cycles), 0)
 end
 if not (math.type(given.save_after) == "integer" and given.save_after >= 0) then
   error(("save_after must be a step number >= 0, got %s"):format(given.save_after), 0)
@@ -540,8 +545,8 @@ for i, s in ipairs(c.stages) do
   local ok_excavate, why = pcall(excavate, { region = s.name, release = RELEASE })
   if not ok_excavate and not tostring(why):find("was excavated already", 1, true) then error(why, 0) end
   if BOLTS ~= "none" and BOLT_AT == "dug" then bolt_step(s) end
-  -- The ratio is judged once the load is off: 40,000 cycles from there.
-  local ok, result = pcall(solve, { ratio = 1e-5, max_cycles = RELEASE + 40000 })
+  -- The ratio is judged once the load is off: step_cycles from there.
+  local ok, result = pcall(solve, { ratio = 1e-5, max_cycles = RELEASE + given.step_cycles })
   -- Judged at equilibrium, a step short of its ratio has not been judged: rock creeping on soft
   -- joints settles no further, so its state is judged at ten times the ratio (in rounds as any).
   if ok and not result.converged and JUDGE_AT == "equilibrium" then

@@ -11,7 +11,8 @@
 #   TABLE  study.csv: Cases 1, 2, 3 at 158 m, Case 3 at 212 and 262 m, Case 3 at 158 m with bolt
 #          patterns 1 and 2 [default]; study_members.csv: each of those also as its mirror image
 #          and with its cuts laid through another point, judged on the members' means too
-#   The reduced study (the default suite's): --set edge=3 --set far=20 --set stages=8. Set M:
+#   The reduced study (the default suite's): --set edge=3 --set far=20 --set stages=8
+#   --set step_cycles=20000. Set M:
 #   --set set=M. EDEM=PATH picks the edem [build/interp/edem].
 # Exit 1 when a run failed or has no row (with --collect: has not run), else trends.lua's status.
 set -euo pipefail
