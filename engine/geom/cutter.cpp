@@ -484,11 +484,8 @@ class BaseCutter {
     const bool v_fixed = is_base_vertex(p);
     const bool e_base = has_base_piece(e, pieces_);
     // A nearby end of e: bring v's cuts to it (the two vertices become one).
-    for (Vertex w : {e->source(), e->target()}) {
-      if (!v_fixed && CGAL::compare(CGAL::squared_distance(p, w->point()),
-                                    tolerance2_at(p)) == CGAL::SMALLER)
-        return bend_all(cut_pieces_at(v), w, rounded(w->point()));
-    }
+    if (const std::optional<Vertex> w = end_near(p, e); w && !v_fixed)
+      return bend_all(cut_pieces_at(v), *w, rounded((*w)->point()));
     if (!e_base) {
       // Bend e's cuts through v.
       const auto& on_e = e->curve().data();
@@ -500,14 +497,28 @@ class BaseCutter {
     return bend_all(cut_pieces_at(v), std::nullopt, rounded(s.supporting_line().projection(p)));
   }
 
+  // An end of e within the tolerance of p, if there is one.
+  std::optional<Vertex> end_near(const Point& p, Halfedge e) const {
+    for (Vertex w : {e->source(), e->target()})
+      if (CGAL::compare(CGAL::squared_distance(p, w->point()), tolerance2_at(p)) == CGAL::SMALLER)
+        return w;
+    return std::nullopt;
+  }
+
+  // Whether p lies more than `slack` outside edge e's bounding box (in doubles).
+  static bool outside_box(Vec2 p, const Halfedge& e, double slack) {
+    const Vec2 a = to_vec(e->source()->point()), b = to_vec(e->target()->point());
+    return p.x < std::min(a.x, b.x) - slack || p.x > std::max(a.x, b.x) + slack ||
+           p.y < std::min(a.y, b.y) - slack || p.y > std::max(a.y, b.y) + slack;
+  }
+
   // Brings the free end v of a cut onto edge e, within the tolerance of it: to an end of e that
   // near, else to the foot of its perpendicular, which e's pieces then pass through too. The cut
   // moves, not e: a joint keeps its line.
   bool reach(Vertex v, Halfedge e) {
     const Point& p = v->point();
-    for (Vertex w : {e->source(), e->target()})
-      if (CGAL::compare(CGAL::squared_distance(p, w->point()), tolerance2_at(p)) == CGAL::SMALLER)
-        return bend_all(cut_pieces_at(v), w, rounded(w->point()));
+    if (const std::optional<Vertex> w = end_near(p, e))
+      return bend_all(cut_pieces_at(v), *w, rounded((*w)->point()));
     const Segment s(e->source()->point(), e->target()->point());
     const Point q = rounded(s.supporting_line().projection(p));
     bool changed = false;
@@ -558,11 +569,7 @@ class BaseCutter {
         if (near_a_fix(pv, slack)) continue;
         for (const Halfedge& he : edges) {
           if (he->source() == v || he->target() == v) continue;
-          // Cheap double-precision filter first.
-          const Vec2 a = to_vec(he->source()->point()), b = to_vec(he->target()->point());
-          if (pv.x < std::min(a.x, b.x) - slack || pv.x > std::max(a.x, b.x) + slack ||
-              pv.y < std::min(a.y, b.y) - slack || pv.y > std::max(a.y, b.y) + slack)
-            continue;
+          if (outside_box(pv, he, slack)) continue;  // a cheap double-precision filter first
           const Segment s(he->source()->point(), he->target()->point());
           if (CGAL::compare(CGAL::squared_distance(v->point(), s), tolerance2) !=
               CGAL::SMALLER)
@@ -613,11 +620,7 @@ class BaseCutter {
       std::optional<Kernel::FT> best;
       for (const Halfedge& he : edges) {
         if (he->face() == he->twin()->face()) continue;  // dangling too: nothing to reach
-        const Vec2 a = to_vec(he->source()->point()), b = to_vec(he->target()->point());
-        const double slack = 2.0 * tolerance;  // a cheap double-precision filter first
-        if (pv.x < std::min(a.x, b.x) - slack || pv.x > std::max(a.x, b.x) + slack ||
-            pv.y < std::min(a.y, b.y) - slack || pv.y > std::max(a.y, b.y) + slack)
-          continue;
+        if (outside_box(pv, he, 2.0 * tolerance)) continue;  // a cheap double-precision filter first
         const Segment s(he->source()->point(), he->target()->point());
         const Kernel::FT d2 = CGAL::squared_distance(v->point(), s);
         if (d2 < tolerance2 && (!best || d2 < *best)) best = d2, nearest = he;
