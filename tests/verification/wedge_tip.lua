@@ -8,8 +8,8 @@
 -- and its contact then carries F over a length d (tan a_l + tan a_r) / 2 (contacts.hpp). A
 -- contact length from the gridpoint's half-edges projected on the face alone (h sin^2 a each,
 -- a few millimetres here) does not grow with d: the tip would sink far deeper than d and stop on
--- the overlap watchdog, as corners of small blocks did in the paper study (scripts/paper/README.md,
--- "Where runs stopped").
+-- the overlap watchdog, as the corners of small blocks around the seed's cavern would
+-- (scripts/paper/case.lua).
 --
 -- Two cases, each a block 1 m tall ending in a tip (E = 100 GPa, so that its own strain is
 -- negligible) on a 2 m x 1 m block with its base held, apex 1 mm above the face and between the
