@@ -493,8 +493,13 @@ class BaseCutter {
     }
     if (v_fixed) return false;  // the base's own features are the user's geometry
     // v (a cut vertex) near a base edge: move it onto the edge.
+    return bend_all(cut_pieces_at(v), std::nullopt, foot(p, e));
+  }
+
+  // The foot of p's perpendicular on the line of edge e, rounded.
+  Point foot(const Point& p, Halfedge e) const {
     const Segment s(e->source()->point(), e->target()->point());
-    return bend_all(cut_pieces_at(v), std::nullopt, rounded(s.supporting_line().projection(p)));
+    return rounded(s.supporting_line().projection(p));
   }
 
   // An end of e within the tolerance of p, if there is one.
@@ -519,13 +524,9 @@ class BaseCutter {
     const Point& p = v->point();
     if (const std::optional<Vertex> w = end_near(p, e))
       return bend_all(cut_pieces_at(v), *w, rounded((*w)->point()));
-    const Segment s(e->source()->point(), e->target()->point());
-    const Point q = rounded(s.supporting_line().projection(p));
-    bool changed = false;
-    for (int id : cut_pieces_at(v)) changed |= bend(id, q);
-    if (!has_base_piece(e, pieces_))
-      for (int id : e->curve().data()) changed |= bend(id, q);
-    return changed;
+    std::vector<int> ids = cut_pieces_at(v);
+    if (!has_base_piece(e, pieces_)) ids.insert(ids.end(), e->curve().data().begin(), e->curve().data().end());
+    return bend_all(ids, std::nullopt, foot(p, e));
   }
 
   // "joint set 1 and crackseed 2": the inputs the pieces come from, as a script names them.
