@@ -121,6 +121,15 @@ inline void keep_state(Contact& c, const Contact& old, const JointParams& p) {
   const bool near_corner = gap < 0.0 && ((e.corner_a && t_line * len < c.limit) ||
                                          (e.corner_b && (1.0 - t_line) * len < c.limit));
   if (past || near_corner) gap = std::max(gap, out_of_neighbour(t_line < 0.5) - 2.0 * fade);
+  // Over the edge, behind it, yet out of the line of the glued edge at a glued tip
+  // (ContactEdge::glued_tip_a, b) is past the tip into the block glued there, whose own faces carry
+  // the gridpoint. Here it is inside by at most its depth inside the glued edge's line, no span
+  // added, so the force goes to nothing as it crosses that line and comes back as it returns: the
+  // contact stays, never dropped and made again with a prestress.
+  if ((e.glued_tip_a || e.glued_tip_b) && gap < 0.0 && !past) [[unlikely]] {
+    if (e.glued_tip_a) gap = std::max(gap, out_of_neighbour(true));
+    if (e.glued_tip_b) gap = std::max(gap, out_of_neighbour(false));
+  }
   // A tip whose edges all lead out past a sharp corner of the edge (Contact::leads_past_a, b)
   // is over the block only short of it: pressed in by d, its overlap runs about 2 wedge d from its
   // apex towards the corner, deepest at the apex, and only the part before the corner presses on

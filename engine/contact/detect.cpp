@@ -5,8 +5,10 @@
 #include "contact/detect.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <optional>
 #include <unordered_map>
 
@@ -561,6 +563,7 @@ ContactBoundary contact_boundary(const Mesh& mesh, const std::vector<char>& edge
     e.bent_b = !e.corner_b && std::fabs(cross(d, dn)) > 1e-6 * norm(d) * norm(dn);
     e.bent_a = !e.corner_a && std::fabs(cross(dp, d)) > 1e-6 * norm(dp) * norm(d);
   }
+  mark_glued_tips(cb, position);
   // Per node: its touchable edges, and every block whose boundary it is on.
   std::vector<std::pair<int, int>> node_edge, node_block;
   for (size_t e = 0; e < cb.edges.size(); ++e) {
@@ -947,6 +950,61 @@ void mark_positions(Mechanics& m, const std::vector<char>& moved_block) {
 }
 
 }  // namespace
+
+void mark_glued_tips(ContactBoundary& cb, const std::vector<double>& position) {
+  const auto ref = [&](int node) {
+    return Vec2{position[2 * static_cast<size_t>(node)], position[2 * static_cast<size_t>(node) + 1]};
+  };
+  // Glued edges by their ends: the two faces of a glued cut have their gridpoints at exactly the
+  // same places (zoning.hpp), in opposite order.
+  std::map<std::array<double, 4>, int> glued;
+  const auto key = [&](Vec2 from, Vec2 to) { return std::array<double, 4>{from.x, from.y, to.x, to.y}; };
+  for (size_t i = 0; i < cb.edges.size(); ++i) {
+    const ContactEdge& e = cb.edges[i];
+    if (!e.touchable) glued.emplace(key(ref(e.a), ref(e.b)), static_cast<int>(i));
+  }
+  const auto twin = [&](int edge) {
+    const ContactEdge& e = cb.edges[static_cast<size_t>(edge)];
+    const auto found = glued.find(key(ref(e.b), ref(e.a)));
+    return found == glued.end() ? -1 : found->second;
+  };
+  // The touchable edge the outline of the rock glued together goes on along from `edge`'s end b
+  // (at_b) or comes in by to its end a, turning round that end across the glued edges; -1 for
+  // none (a glued edge with no twin, or more glued edges about the end than a fan can have).
+  const auto goes_on = [&](const ContactEdge& edge, bool at_b) {
+    int beside = at_b ? edge.next : edge.prev;
+    for (int turn = 0; turn < 16; ++turn) {
+      const ContactEdge& b = cb.edges[static_cast<size_t>(beside)];
+      if (b.touchable) return beside;
+      const int other = twin(beside);
+      if (other < 0) return -1;
+      beside = at_b ? cb.edges[static_cast<size_t>(other)].next : cb.edges[static_cast<size_t>(other)].prev;
+    }
+    return -1;
+  };
+  const double sin10 = std::sin(10.0 * M_PI / 180.0);
+  for (ContactEdge& e : cb.edges) {
+    e.glued_tip_a = e.glued_tip_b = false;
+    if (!e.touchable) continue;
+    const Vec2 d = ref(e.b) - ref(e.a);
+    if (e.corner_b && !cb.edges[static_cast<size_t>(e.next)].touchable) {
+      const int on = goes_on(e, true);
+      if (on >= 0) {
+        const ContactEdge& o = cb.edges[static_cast<size_t>(on)];
+        const Vec2 dn = ref(o.b) - ref(o.a);
+        e.glued_tip_b = cross(d, dn) > sin10 * norm(d) * norm(dn);
+      }
+    }
+    if (e.corner_a && !cb.edges[static_cast<size_t>(e.prev)].touchable) {
+      const int on = goes_on(e, false);
+      if (on >= 0) {
+        const ContactEdge& o = cb.edges[static_cast<size_t>(on)];
+        const Vec2 dp = ref(o.b) - ref(o.a);
+        e.glued_tip_a = cross(dp, d) > sin10 * norm(dp) * norm(d);
+      }
+    }
+  }
+}
 
 double median_edge_length(const ContactBoundary& cb, const std::vector<double>& position) {
   std::vector<double> lengths;

@@ -23,6 +23,9 @@ std::string describe(const ContactEdge& e);
 
 // The median length of the touchable edges, at the nodes' positions `position` [m] (0: none).
 double median_edge_length(const ContactBoundary& cb, const std::vector<double>& position);
+// Sets ContactEdge::glued_tip_a, glued_tip_b from the edges' glue and the reference positions
+// (called by contact_boundary; a restored boundary has them set again the same way).
+void mark_glued_tips(ContactBoundary& cb, const std::vector<double>& position);
 
 // The overlap watchdog's limit [m]: set{ overlap }, or half the median touchable edge.
 // A contact a gridpoint has is followed this deep, so that one pressed in this far is still

@@ -743,6 +743,7 @@ struct CheckpointAccess {
       check_sizes(m, model.mesh_);
       check_indices(m, model.mesh_);
       if (!(m.faces.median_edge > 0.0)) m.faces.median_edge = median_edge_length(m.faces, m.position);
+      mark_glued_tips(m.faces, m.position);
       r("prepass_yield", model.prepass_yield_);
       r("last_prepass", model.last_prepass_);
       m.judge_criterion_missing = judge_criterion;

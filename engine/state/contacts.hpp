@@ -65,6 +65,12 @@ struct ContactEdge {
   // by less. Past such an end, and past the neighbouring edge's too, a gridpoint is measured from
   // the vertex (past_the_end.hpp); along a straight run the edge's line is the boundary.
   bool bent_a = false, bent_b = false;
+  // Whether its end a (b) is the tip of an acute piece of glued rock: a convex corner of its
+  // block where the edge beside is glued (an intact potential crack, a region outline), and the
+  // outline of the blocks glued together there turns outward too (it does not run on along this
+  // edge's line). Past the glued edge's line a gridpoint is in the block glued beside, not in this
+  // one (contact_force.hpp).
+  bool glued_tip_a = false, glued_tip_b = false;
   bool touchable = false;    // not glued
   EdgeOrigin origin;
   int material = -1;         // joint material (jassign), -1: none

@@ -105,5 +105,100 @@ TEST(ContactTips, ACornerBesideTheDiagonalBlockIsNotPushedByThatBlocksFaceRunOnP
   )lua");
 }
 
+// A corner pushed past the tip of a glued wedge: a joint crossing has slipped by half a metre,
+// and the corner of the block under it has gone into the block glued to the wedge (the two share a
+// potential crack), not into the wedge itself. The wedge's far face lies over the corner and about
+// 0.5 m above it; pushing the corner out along that face's normal is a force from a block it is
+// not in (in the seed's Case 3 at 262 m it reaches 66 MPa and stops the run).
+TEST(ContactTips, ACornerPastTheTipOfAGluedWedgeIsNotPushedByTheWedge) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, R"lua(
+    model{ title = "a corner past a glued wedge's tip" }
+    block{ {0, 0}, {1, 1.28}, {1, 2}, {-1.5, 2}, {-1.5, 0.866} }  -- faces at 52 and 150 degrees from O
+    block{ {0, 0}, {-0.577, -1}, {1, -1}, {1, -0.7} }             -- a corner at O, up between them
+    crackseed{ angle = 105, spacing = 10, origin = {0, 0}, region = {{-1.5, 0}, {1, 0}, {1, 2}, {-1.5, 2}},
+               material = "strength" }
+    zone{ edge = 0.25 }
+    material{ "rock", density = 2600, young = 1e11, poisson = 0.25 }
+    material{ "strength", model = "mohr", young = 1e11, poisson = 0.25, cohesion = 1e12, friction = 30,
+              tension = 1e12 }
+    assign{ material = "rock" }
+    joint_material{ "j", kn = 1e6, ks = 1e6, friction = 0 }
+    jassign{ material = "j" }
+    set{ overlap = 1 }
+    local wedge, beside, lower = gp_near(0.6, 1.5).block, gp_near(-1, 1.5).block, gp_near(0.3, -0.8).block
+    assert(wedge ~= beside, "the potential crack splits the upper block")
+    local top = {{-1.6, 1.9}, {1.1, 1.9}, {1.1, 2.1}, {-1.6, 2.1}}
+    boundary{ polygon = {{-1, -1.1}, {1.1, -1.1}, {1.1, -0.9}, {-1, -0.9}}, fix = "xy" }
+    boundary{ polygon = top, xvel = 1e-3, yvel = -4e-3 / 3 }
+    cycle(300)
+    boundary{ polygon = top, fix = "xy" }
+    solve{ ratio = 1e-6 }  -- the upper block 0.3 m right and 0.4 m down: the corner 0.2 m into `beside`
+    local tip = gp_near(0.6, 1.5)
+    assert(math.abs(tip.ux - 0.3) < 0.01 and math.abs(tip.uy + 0.4) < 0.01,
+           ("the wedge moved by (%g, %g) m"):format(tip.ux, tip.uy))
+    local pushed = 0
+    for c in contacts() do
+      if c.block == lower and c.other == wedge and math.abs(c.x) < 0.05 and math.abs(c.y) < 0.05 then
+        pushed = pushed + c.fn
+      end
+    end
+    assert(pushed == 0, ("the wedge pushes the corner with %g N/m"):format(pushed))
+  )lua");
+}
+
+// The same glue where the rock glued together runs on straight: a potential crack meets the base
+// of the upper block at 60 degrees, so the piece on one side is an acute wedge, but the base goes on
+// along the joint past it. The lower block's gridpoint at the seam, pressed in as much as the
+// others, is carried in full: its contacts with the two pieces carry the joint's stress, as the
+// gridpoints beside it do, whichever side of the crack's line it is pressed past.
+TEST(ContactTips, AGridpointAtTheSeamOfAStraightGluedFaceIsCarriedInFull) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, R"lua(
+    model{ title = "a seam on a straight face" }
+    block{ x = {-1, 1}, y = {0, 1} }
+    block{ x = {-1, 1}, y = {-1, 0} }
+    crackseed{ angle = 60, spacing = 10, origin = {0, 0}, region = {{-1, 0}, {1, 0}, {1, 1}, {-1, 1}},
+               material = "strength" }
+    zone{ edge = 0.25 }
+    material{ "rock", density = 2600, young = 1e11, poisson = 0.25 }
+    material{ "strength", model = "mohr", young = 1e11, poisson = 0.25, cohesion = 1e12, friction = 30,
+              tension = 1e12 }
+    assign{ material = "rock" }
+    joint_material{ "j", kn = 1e6, ks = 1e6, friction = 0 }
+    jassign{ material = "j" }
+    local wedge, beside = gp_near(0.9, 0.1).block, gp_near(-0.9, 0.1).block
+    assert(wedge ~= beside, "the potential crack splits the upper block")
+    local lower = gp_near(0, -0.5).block
+    local top = {{-1.1, 0.9}, {1.1, 0.9}, {1.1, 1.1}, {-1.1, 1.1}}
+    boundary{ polygon = {{-1.1, -1.1}, {1.1, -1.1}, {1.1, -0.9}, {-1.1, -0.9}}, fix = "xy" }
+    boundary{ polygon = top, xvel = 0, yvel = -1e-3 }
+    cycle(10)
+    boundary{ polygon = top, fix = "xy" }
+    solve{ ratio = 1e-7 }
+    -- Per gridpoint of the lower block along the joint: its contacts' normal force per length.
+    local force, length = {}, {}
+    for c in contacts() do
+      if c.block == lower and math.abs(c.y) < 0.05 and math.abs(c.x) < 0.8 then
+        local key = math.floor(c.x * 100 + 0.5)
+        force[key] = (force[key] or 0) + c.fn
+        length[key] = (length[key] or 0) + c.length
+      end
+    end
+    assert(force[0], "no contact at the seam")
+    local others, n = 0, 0
+    for key, f in pairs(force) do
+      if key ~= 0 then others, n = others + f / length[key], n + 1 end
+    end
+    others = others / n
+    local seam = force[0] / length[0]
+    print(("seam %g N/m2, the others %g N/m2 on average"):format(seam, others))
+    assert(others < 0 and math.abs(seam / others - 1) < 0.02,
+           ("the seam's gridpoint carries %g Pa against %g Pa beside it"):format(seam, others))
+  )lua");
+}
+
 }  // namespace
 }  // namespace edem::test

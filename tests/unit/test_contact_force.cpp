@@ -153,6 +153,30 @@ TEST(ContactForce, BesideAThinTipWithinTheEdgeNoDeepLinePressesItIn) {
   EXPECT_NEAR(c.contact.closure, 0.2, 1e-12);
 }
 
+// The same 45 deg tip, its other edge glued (ContactEdge::glued_tip_b: the block glued there goes
+// on past it): a gridpoint over the edge is inside by at most its depth inside the glued edge's
+// line, so its force goes to nothing as it reaches that line, with no span added, and stays
+// nothing beyond; away from the tip the edge's line decides.
+TEST(ContactForce, PastAGluedTipTheForceGoesToNothingAtTheGluedLine) {
+  Corner c;
+  c.origin[4] = 1.0;
+  c.edges[0].glued_tip_b = true;
+  c.contact.limit = 0.1;
+  c.force_at(0.05, -0.03);  // 0.03 m below the line, 0.014 m inside the glued one
+  EXPECT_NEAR(c.contact.closure, 0.02 / std::sqrt(2.0), 1e-12);
+  double last = c.force_at(0.05, -0.04);
+  for (const double depth : {0.045, 0.049, 0.0499, 0.05}) {
+    const double now = c.force_at(0.05, -depth);
+    EXPECT_LE(now, last) << depth;  // falling to nothing, not dropped from a height
+    EXPECT_LT(now, 1e9 * (0.05 - depth) * 0.1 + 1e-9) << depth;
+    last = now;
+  }
+  EXPECT_EQ(c.force_at(0.05, -0.2), 0.0);
+  EXPECT_EQ(c.contact.sn, 0.0);
+  c.force_at(0.6, -0.2);  // far from the tip
+  EXPECT_NEAR(c.contact.closure, 0.2, 1e-12);
+}
+
 // A tip pressed in beside a corner of the face's block takes as its overlap its depth inside the
 // corner's other face (plus the fade span), less than its depth below the face's line, which is
 // the distance a detection finds. Found again and again at rest, it keeps its shear force: its
