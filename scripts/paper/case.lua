@@ -130,7 +130,8 @@ local columns = { "case", "set", "depth", "bolts", "release", "steps", "cracks",
                   "slipped", "fallen", "bolts_laid", "bolts_skipped", "bolts_broken", "bolts_over_half_yield",
                   "cuts_left_out", "threads", "seconds", "prepass_stopped", "unconverged", "stopped",
                   "points_fallen", "edge_m", "far_m", "first", "muck", "damping", "mirror", "crack_length_m",
-                  "origin_x_m", "origin_y_m", "judge", "judgments", "prepass", "bolt_at", "prepass_damping" }
+                  "origin_x_m", "origin_y_m", "judge", "judgments", "prepass", "bolt_at", "prepass_damping",
+                  "unconverged_why" }
 for _, file in ipairs{ TABLE, STEPS_TABLE } do
   local existing = io.open(file, "r")
   if existing then
@@ -456,6 +457,7 @@ end
 local done, stopped = 0, ""  -- steps done; where the run stopped, if it did
 local judgments = 0          -- states judged at equilibrium (judge = equilibrium), all steps
 local unconverged = {}       -- steps whose solve reached max_cycles short of the ratio
+local unconverged_why = {}   -- for each of them, what still moved at its end (still_moving)
 
 -- The result row: after each step into TABLE's _steps file, and at the end into TABLE.
 local function result_row()
@@ -496,7 +498,7 @@ local function result_row()
                 '"' .. table.concat(unconverged, " ") .. '"',
                 '"' .. stopped:gsub('"', "'") .. '"', '"' .. points_fallen() .. '"', EDGE, FAR, FIRST, MUCK,
                 DAMPING, MIRROR, ("%.2f"):format(r.length), ORIGIN_X or "", ORIGIN_Y or "", JUDGE_AT, judgments, PREPASS,
-                BOLT_AT, PREPASS_DAMPING }
+                BOLT_AT, PREPASS_DAMPING, '"' .. table.concat(unconverged_why, "; "):gsub('"', "'") .. '"' }
   local named = {}  -- for result{}: each column's value, unquoted
   for i, v in ipairs(row) do
     row[i] = tostring(v)
@@ -571,7 +573,11 @@ for i, s in ipairs(c.stages) do
   print(("  %5d %-20s %7d %9.2e %10.4f %7d %6d %6d %6d%s"):format(i, s.name, result.cycles, result.ratio,
     settlement(), info().cracks, result.judgments, fallen, os.time() - started,
     result.converged and "" or "  NOT CONVERGED"))
-  if not result.converged then print(("        step %d short of its ratio, %s"):format(i, still_moving())) end
+  if not result.converged then
+    local why = still_moving()
+    unconverged_why[#unconverged_why + 1] = ("step %d %s"):format(i, why)
+    print(("        step %d short of its ratio, %s"):format(i, why))
+  end
   append_row(STEPS_TABLE, select(2, result_row()))
   if i == given.save_after then save(("%s_step%d.h5"):format(tag, i)) end
 end
