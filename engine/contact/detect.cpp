@@ -982,27 +982,22 @@ void mark_glued_tips(ContactBoundary& cb, const std::vector<double>& position) {
     }
     return -1;
   };
+  // A convex corner at `e`'s end b (at_b) or a whose edge beside is glued, where the outline of
+  // the rock glued together turns outward too (by more than 10 deg, as a corner).
   const double sin10 = std::sin(10.0 * M_PI / 180.0);
+  const auto glued_tip = [&](const ContactEdge& e, bool at_b) {
+    if (!(at_b ? e.corner_b : e.corner_a) || cb.edges[static_cast<size_t>(at_b ? e.next : e.prev)].touchable)
+      return false;
+    const int on = goes_on(e, at_b);
+    if (on < 0) return false;
+    const ContactEdge& o = cb.edges[static_cast<size_t>(on)];
+    const Vec2 along = ref(e.b) - ref(e.a), beyond = ref(o.b) - ref(o.a);
+    const Vec2 in = at_b ? along : beyond, out = at_b ? beyond : along;  // into the end, out of it
+    return cross(in, out) > sin10 * norm(in) * norm(out);
+  };
   for (ContactEdge& e : cb.edges) {
-    e.glued_tip_a = e.glued_tip_b = false;
-    if (!e.touchable) continue;
-    const Vec2 d = ref(e.b) - ref(e.a);
-    if (e.corner_b && !cb.edges[static_cast<size_t>(e.next)].touchable) {
-      const int on = goes_on(e, true);
-      if (on >= 0) {
-        const ContactEdge& o = cb.edges[static_cast<size_t>(on)];
-        const Vec2 dn = ref(o.b) - ref(o.a);
-        e.glued_tip_b = cross(d, dn) > sin10 * norm(d) * norm(dn);
-      }
-    }
-    if (e.corner_a && !cb.edges[static_cast<size_t>(e.prev)].touchable) {
-      const int on = goes_on(e, false);
-      if (on >= 0) {
-        const ContactEdge& o = cb.edges[static_cast<size_t>(on)];
-        const Vec2 dp = ref(o.b) - ref(o.a);
-        e.glued_tip_a = cross(dp, d) > sin10 * norm(dp) * norm(d);
-      }
-    }
+    e.glued_tip_a = e.touchable && glued_tip(e, false);
+    e.glued_tip_b = e.touchable && glued_tip(e, true);
   }
 }
 

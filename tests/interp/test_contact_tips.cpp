@@ -105,6 +105,18 @@ TEST(ContactTips, ACornerBesideTheDiagonalBlockIsNotPushedByThatBlocksFaceRunOnP
   )lua");
 }
 
+// Zones, stiff rock and soft frictionless joints for the scenes of a potential crack (material
+// "strength", too strong to break) gluing two pieces: after their blocks and crackseed{}.
+const char* kGluedRock = R"lua(
+    zone{ edge = 0.25 }
+    material{ "rock", density = 2600, young = 1e11, poisson = 0.25 }
+    material{ "strength", model = "mohr", young = 1e11, poisson = 0.25, cohesion = 1e12, friction = 30,
+              tension = 1e12 }
+    assign{ material = "rock" }
+    joint_material{ "j", kn = 1e6, ks = 1e6, friction = 0 }
+    jassign{ material = "j" }
+)lua";
+
 // A corner pushed past the tip of a glued wedge: a joint crossing has slipped by half a metre,
 // and the corner of the block under it has gone into the block glued to the wedge (the two share a
 // potential crack), not into the wedge itself. The wedge's far face lies over the corner and about
@@ -119,13 +131,7 @@ TEST(ContactTips, ACornerPastTheTipOfAGluedWedgeIsNotPushedByTheWedge) {
     block{ {0, 0}, {-0.577, -1}, {1, -1}, {1, -0.7} }             -- a corner at O, up between them
     crackseed{ angle = 105, spacing = 10, origin = {0, 0}, region = {{-1.5, 0}, {1, 0}, {1, 2}, {-1.5, 2}},
                material = "strength" }
-    zone{ edge = 0.25 }
-    material{ "rock", density = 2600, young = 1e11, poisson = 0.25 }
-    material{ "strength", model = "mohr", young = 1e11, poisson = 0.25, cohesion = 1e12, friction = 30,
-              tension = 1e12 }
-    assign{ material = "rock" }
-    joint_material{ "j", kn = 1e6, ks = 1e6, friction = 0 }
-    jassign{ material = "j" }
+  )lua" + std::string(kGluedRock) + R"lua(
     set{ overlap = 1 }
     local wedge, beside, lower = gp_near(0.6, 1.5).block, gp_near(-1, 1.5).block, gp_near(0.3, -0.8).block
     assert(wedge ~= beside, "the potential crack splits the upper block")
@@ -162,13 +168,7 @@ TEST(ContactTips, AGridpointAtTheSeamOfAStraightGluedFaceIsCarriedInFull) {
     block{ x = {-1, 1}, y = {-1, 0} }
     crackseed{ angle = 60, spacing = 10, origin = {0, 0}, region = {{-1, 0}, {1, 0}, {1, 1}, {-1, 1}},
                material = "strength" }
-    zone{ edge = 0.25 }
-    material{ "rock", density = 2600, young = 1e11, poisson = 0.25 }
-    material{ "strength", model = "mohr", young = 1e11, poisson = 0.25, cohesion = 1e12, friction = 30,
-              tension = 1e12 }
-    assign{ material = "rock" }
-    joint_material{ "j", kn = 1e6, ks = 1e6, friction = 0 }
-    jassign{ material = "j" }
+  )lua" + std::string(kGluedRock) + R"lua(
     local wedge, beside = gp_near(0.9, 0.1).block, gp_near(-0.9, 0.1).block
     assert(wedge ~= beside, "the potential crack splits the upper block")
     local lower = gp_near(0, -0.5).block
