@@ -117,16 +117,18 @@ inline void keep_state(Contact& c, const Contact& old, const JointParams& p) {
   // within the edge near the corner, one beside a thin tip that has sunk into its own block's
   // face: it is inside by at most its depth inside the neighbouring edge's line plus the span
   // the force fades over (so a gridpoint on the corner, inside or out by round-off, keeps its
-  // contact).
+  // contact). A glued tip's end has the rule below instead.
   const bool near_corner = gap < 0.0 && ((e.corner_a && t_line * len < c.limit) ||
                                          (e.corner_b && (1.0 - t_line) * len < c.limit));
-  if (past || near_corner) gap = std::max(gap, out_of_neighbour(t_line < 0.5) - 2.0 * fade);
-  // Over the edge, behind it, yet out of the line of the glued edge at a glued tip
-  // (ContactEdge::glued_tip_a, b) is past the tip into the block glued there, whose own faces carry
-  // the gridpoint. Here it is inside by at most its depth inside the glued edge's line, no span
-  // added, so the force goes to nothing as it crosses that line and comes back as it returns: the
-  // contact stays, never dropped and made again with a prestress.
-  if ((e.glued_tip_a || e.glued_tip_b) && gap < 0.0 && !past) [[unlikely]] {
+  const bool glued_end = t_line < 0.5 ? e.glued_tip_a : e.glued_tip_b;
+  if ((past || near_corner) && !glued_end) gap = std::max(gap, out_of_neighbour(t_line < 0.5) - 2.0 * fade);
+  // Behind the edge (over it or past its end) yet out of the line of the glued edge at a glued
+  // tip (ContactEdge::glued_tip_a, b) is past the tip into the block glued there, whose own faces
+  // carry the gridpoint. Here it is inside by at most its depth inside the glued edge's line, no
+  // span added, so the force goes to nothing as it crosses that line and comes back as it
+  // returns: the contact stays, never dropped and made again with a prestress. The same depth on
+  // both sides of the edge's end: a depth that jumped there would make energy at every crossing.
+  if ((e.glued_tip_a || e.glued_tip_b) && gap < 0.0) [[unlikely]] {
     if (e.glued_tip_a) gap = std::max(gap, out_of_neighbour(true));
     if (e.glued_tip_b) gap = std::max(gap, out_of_neighbour(false));
   }
