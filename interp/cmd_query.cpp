@@ -97,6 +97,8 @@ int run_info(lua_State* L, Context& context, const Args&) {
 
 int run_energy(lua_State* L, Context& context, const Args& args) {
   Model& model = context.model();
+  // Either fails only from a callback, before anything is changed.
+  if (args.has("by_contact")) model.book_energy_by_contact(args.boolean("by_contact"));
   if (args.has("reset") && args.boolean("reset")) model.reset_energy();
   const EnergyReport r = model.energy();
   lua_createtable(L, 0, 24);
@@ -274,6 +276,7 @@ void push_contact(lua_State* L, const Model& model, size_t index) {
   set_field(L, "material", c.material);
   set_field(L, "block", c.block + 1);
   set_field(L, "other", c.other + 1);
+  if (std::isfinite(c.energy_made)) set_field(L, "energy_made", c.energy_made);
 }
 
 int next_block(lua_State* L) {
@@ -447,6 +450,10 @@ const Command& energy_command() {
           {
               {"reset", Type::boolean, "", any_value, "false",
                "start the balance again from the state now (not from a callback)"},
+              {"by_contact", Type::boolean, "", any_value, kOptional,
+               "each contact keeps its own balance from now, from nothing: contacts() then gives "
+               "each its energy_made, to find the contacts that make or lose energy (each contact's "
+               "energy is then found twice a cycle; not kept in checkpoints; not from a callback)"},
           },
       .run = run_energy,
       .returns =
@@ -462,7 +469,8 @@ const Command& energy_command() {
           "slip). error: stored + dissipated + excavated less the work done (positive: energy "
           "made); largest: the largest term in magnitude; relative_error = error / largest; "
           "zone_error, contact_error, bolt_error: where the error arises",
-      .usage = "local e = energy()\nprint(e.error, e.relative_error)\nenergy{ reset = true }",
+      .usage = "local e = energy()\nprint(e.error, e.relative_error)\nenergy{ reset = true }\n"
+               "energy{ by_contact = true }  -- then: for c in contacts() do print(c.id, c.energy_made) end",
       .bare_call = true,
   };
   return command;
@@ -618,7 +626,10 @@ const Command& contacts_command() {
           "a given prestress's [m]), us (shear displacement since it "
           "formed [m]), slip (plastic shear, accumulated [m]), state (\"bonded\", "
           "\"elastic\", \"slip\", \"open\"), kind (\"joint\", \"crack\"), material, "
-          "block and other (the gridpoint's and the edge's block ids)",
+          "block and other (the gridpoint's and the edge's block ids); with energy{ by_contact = "
+          "true }, energy_made (the energy it made since the balance started: its stored energy's "
+          "change and what it dissipated, less the work its nodes did on it, each cycle and at "
+          "each detection [J/m]; a contact dropped takes its own with it)",
       .usage = "for c in contacts() do if c.state == \"slip\" then n = n + 1 end end",
   };
   return command;

@@ -768,6 +768,15 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
   // a node not found again keeps its contacts whole.
   std::vector<Contact> list;
   list.reserve(set.list.size());
+  // Contacts that book their own energy (ContactBook) carry their books along, and book what a
+  // detection changes in what they store, less what is booked as prestress.
+  std::vector<ContactBook> books;
+  const bool booking = m.energy.by_contact;
+  if (booking) set.books.resize(set.list.size());  // the model's contacts as prepare() left them
+  const auto stored_in = [&](const Contact& c) {
+    const ContactEnergy e = contact_energy(c, m.joint_params[static_cast<size_t>(c.material)]);
+    return e.normal + e.shear;
+  };
   long late = 0;
   LoadedFaces loaded(set.list);
   auto kept_from = set.list.cbegin();
@@ -775,11 +784,15 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
     if (!all && !redo[k]) {
       const int node = cb.nodes[k];
       while (kept_from != set.list.cend() && kept_from->node < node) ++kept_from;
-      for (; kept_from != set.list.cend() && kept_from->node == node; ++kept_from) list.push_back(*kept_from);
+      for (; kept_from != set.list.cend() && kept_from->node == node; ++kept_from) {
+        list.push_back(*kept_from);
+        if (booking) books.push_back(set.books[static_cast<size_t>(kept_from - set.list.cbegin())]);
+      }
       continue;
     }
     std::sort(found[k].begin(), found[k].end(), [](const Found& a, const Found& b) { return a.other < b.other; });
     for (const Found& f : found[k]) {
+      const double prestress_before = m.energy.prestress;
       Contact c;
       c.node = cb.nodes[k];
       c.block = cb.node_blocks[static_cast<size_t>(cb.block_first[k])];
@@ -854,6 +867,11 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
         // What the given stress stores in it is the stress's, not the method's: booked as such.
         book_prestress(m, contact_energy(c, p), kept ? contact_energy(*old, p) : ContactEnergy{});
       }
+      if (booking) {
+        ContactBook book = kept ? set.books[static_cast<size_t>(old - set.list.begin())] : ContactBook{};
+        book.made += stored_in(c) - (kept ? stored_in(*old) : 0.0) - (m.energy.prestress - prestress_before);
+        books.push_back(book);
+      }
       list.push_back(c);
     }
   }
@@ -886,6 +904,7 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
     rows[static_cast<size_t>(e.b)] += 2.0 * c.t * k;
   }
   set.list = std::move(list);
+  if (booking) set.books = std::move(books);
   set.late += late;
   set.gather_first = std::move(first_slot);
   set.gather = std::move(gather);

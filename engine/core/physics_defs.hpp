@@ -293,6 +293,9 @@ struct ContactView {
   std::string kind;       // "joint", "crack"
   std::string material;
   int block = -1, other = -1;  // the gridpoint's block and the edge's block, 0-based
+  // The energy it made since the balance started, while contacts book their own (energy{
+  // by_contact = true }) [J/m]; NaN otherwise.
+  double energy_made = std::numeric_limits<double>::quiet_NaN();
 };
 
 // How far a block has moved and whether it is still there (Model::block_motion).

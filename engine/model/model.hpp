@@ -133,6 +133,8 @@ class Model {
   // The energy balance since the first cycle or the last reset_energy() (solver/energy.hpp).
   EnergyReport energy() const;
   void reset_energy();  // the balance starts again from the state now
+  // Whether each contact keeps its own balance from now (ContactView::energy_made).
+  void book_energy_by_contact(bool on);
   bool cycling_started() const;
   // Why the model would fall as a whole when cycled (gravity acts and no gridpoint is held), or
   // empty: said as a warning before its first cycle.

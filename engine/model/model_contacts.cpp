@@ -137,6 +137,17 @@ ContactView contact_view(const Mechanics& m, const ContactSet& set, int id) {
   view.material = m.joint_materials[static_cast<size_t>(c.material)].name;
   view.block = c.block;
   view.other = c.other;
+  if (m.energy.by_contact && id < static_cast<int>(set.books.size())) {
+    // With the work of its last force over the half step the nodes have moved since, as the
+    // balance has booked it.
+    const ContactBook& book = set.books[static_cast<size_t>(id)];
+    view.energy_made = book.made;
+    for (int k = 0; k < 3; ++k) {
+      if (book.nodes[k] < 0) continue;
+      const size_t n = static_cast<size_t>(book.nodes[k]);
+      view.energy_made += 0.5 * m.step * (book.push[2 * k] * m.v[2 * n] + book.push[2 * k + 1] * m.v[2 * n + 1]);
+    }
+  }
   for (double value : {view.fn, view.fs, view.un, view.us})
     if (!std::isfinite(value)) fail("contact {} holds no finite force: the run went unstable earlier", id + 1);
   return view;

@@ -291,6 +291,11 @@ void Model::reset_energy() {
   start_energy(*mechanics_);
 }
 
+void Model::book_energy_by_contact(bool on) {
+  if (mechanics_->cycling_now) fail("energy{{ by_contact = ... }} cannot be given while cycling (from a callback)");
+  book_by_contact(*mechanics_, on);
+}
+
 std::string Model::unheld() const {
   const Mechanics& m = *mechanics_;
   if (!m.gravity_set || (m.gravity.x == 0.0 && m.gravity.y == 0.0)) return {};

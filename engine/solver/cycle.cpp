@@ -236,6 +236,35 @@ void zone_force_pass(Mechanics& m, int begin, int end, Partials& partials) {
   }
 }
 
+// A contact's elastic energy as contact_energy() gives it, both springs [J/m].
+double stored_in(const Contact& c, const JointParams& p) {
+  const ContactEnergy e = contact_energy(c, p);
+  return e.normal + e.shear;
+}
+
+// Books one contact's step into its own balance (ContactBook, energy{ by_contact = true }): its
+// stored energy's change from `before`, what it dissipated (`lost` less `lost_before`), and the work
+// of its force on its nodes over the step the nodes last moved (velocities v), half at last cycle's
+// force and half at this one's: over a run, the balance's F(n) . (u(n+1) - u(n-1)) / 2.
+void book_contact(const Mechanics& m, const Contact& c, const JointParams& p, double before,
+                  const ContactLoss& lost_before, const ContactLoss& lost, const double* push, ContactBook& book) {
+  const ContactEdge& e = m.faces.edges[static_cast<size_t>(c.edge)];
+  const int nodes[3] = {c.node, e.a, e.b};
+  const double* v = m.v.data();
+  double work = 0.0;  // by the contact's force on its nodes
+  for (int k = 0; k < 3; ++k) {
+    const size_t now = static_cast<size_t>(nodes[k]);
+    work += 0.5 * m.step * (push[2 * k] * v[2 * now] + push[2 * k + 1] * v[2 * now + 1]);
+    if (book.nodes[k] >= 0) {
+      const size_t was = static_cast<size_t>(book.nodes[k]);
+      work += 0.5 * m.step * (book.push[2 * k] * v[2 * was] + book.push[2 * k + 1] * v[2 * was + 1]);
+    }
+  }
+  book.made += stored_in(c, p) - before + (lost.slip - lost_before.slip) + (lost.bond - lost_before.bond) + work;
+  for (int k = 0; k < 6; ++k) book.push[k] = push[k];
+  for (int k = 0; k < 3; ++k) book.nodes[k] = nodes[k];
+}
+
 // Forces of contacts [begin, end), `begin` starting a chunk; the nodes gather them in their own
 // pass.
 template <bool kMeasure>
@@ -245,6 +274,7 @@ void contact_pass(Mechanics& m, int begin, int end, Partials& partials) {
   const ContactEdge* edges = m.faces.edges.data();
   const JointParams* params = m.joint_params.data();
   const double limit = overlap_limit(m);
+  const bool booking = m.energy.by_contact && m.contacts.books.size() == m.contacts.list.size();
   for (int first = begin; first < end; first += kChunk) {
     const int last = std::min(end, first + kChunk);
     double applied = 0.0;
@@ -252,9 +282,13 @@ void contact_pass(Mechanics& m, int begin, int end, Partials& partials) {
     ContactLoss lost;
     for (int i = first; i < last; ++i) {
       Contact& c = list[i];
-      const double overlap = contact_force(c, edges, params[c.material], m.origin.data(), m.u.data(), m.v.data(),
-                                           m.step, lost);
+      const JointParams& p = params[c.material];
+      const ContactLoss lost_before = lost;
+      const double before = booking ? stored_in(c, p) : 0.0;
+      const double overlap = contact_force(c, edges, p, m.origin.data(), m.u.data(), m.v.data(), m.step, lost);
       contact_push(c, push + 6 * static_cast<size_t>(i));
+      if (booking) [[unlikely]]
+        book_contact(m, c, p, before, lost_before, lost, push + 6 * static_cast<size_t>(i), m.contacts.books[static_cast<size_t>(i)]);
       if constexpr (kMeasure) {
         applied += contact_applied(c);
         if (overlapping < 0 && overlap > limit) overlapping = i;

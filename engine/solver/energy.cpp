@@ -68,8 +68,25 @@ StoredEnergy stored_energy(const Mechanics& m) {
   return e;
 }
 
+namespace {
+
+// Each contact's book from nothing, with no force of a cycle before, as the ledger's work starts.
+void clear_books(Mechanics& m) {
+  m.contacts.books.assign(m.energy.by_contact ? m.contacts.list.size() : 0, ContactBook{});
+}
+
+}  // namespace
+
+void book_by_contact(Mechanics& m, bool on) {
+  m.energy.by_contact = on;
+  clear_books(m);
+}
+
 void start_energy(Mechanics& m) {
+  const bool by_contact = m.energy.by_contact;
   m.energy = EnergyLedger{};
+  m.energy.by_contact = by_contact;
+  clear_books(m);
   m.energy.started = true;
   m.energy.start = m.energy.last = stored_energy(m);
   m.energy.last_current = true;

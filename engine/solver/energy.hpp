@@ -15,8 +15,12 @@ StoredEnergy stored_energy(const Mechanics& m);
 // The kinetic energy of the rock's and the bolts' nodes with their cycling masses [J/m].
 double kinetic_energy(const Mechanics& m);
 
-// Starts the accounting afresh from the state now (the first cycle, energy{ reset = true }).
+// Starts the accounting afresh from the state now (the first cycle, energy{ reset = true }); the
+// contacts' own books (ContactBook) start from nothing too.
 void start_energy(Mechanics& m);
+
+// Whether each contact keeps its own balance (energy{ by_contact = true }), from nothing now.
+void book_by_contact(Mechanics& m, bool on);
 
 // Books what commands changed since the ledger's last state (energy.last) as theirs, or, with
 // `dug`, what changed since `before` as taken away by excavation; the ledger's last state then

@@ -121,8 +121,21 @@ struct Contact {
   bool leads_past_a = false, leads_past_b = false;
 };
 
+// A contact's own energy balance, kept while energy{ by_contact = true }: the energy it made
+// since the balance started [J/m] (its stored energy's change and what it dissipated, less the
+// work its nodes did on it, each step as the balance books it), and the force its last cycle
+// pushed its three nodes with, for that work over the next step.
+struct ContactBook {
+  double made = 0.0;
+  double push[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  int nodes[3] = {-1, -1, -1};  // gridpoint, edge end a, edge end b; -1: no cycle yet
+};
+
 struct ContactSet {
   std::vector<Contact> list;  // ordered by gridpoint, then other block
+  // Per contact, in list order, while contacts book their own energy (EnergyLedger::by_contact,
+  // ContactBook); else empty.
+  std::vector<ContactBook> books;
   // Per node (CSR over all nodes): the contact forces it takes, as contact * 3 + role (0: the
   // gridpoint's own, 1: edge end a, 2: edge end b), in a fixed order.
   std::vector<int> gather_first, gather;

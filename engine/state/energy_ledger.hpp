@@ -38,6 +38,9 @@ inline StoredEnergy operator-(const StoredEnergy& a, const StoredEnergy& b) {
 // Running totals since the accounting started; part of the model's state (saved in checkpoints).
 struct EnergyLedger {
   bool started = false;
+  // Each contact keeps its own balance too (ContactSet::books; energy{ by_contact = true }). Not
+  // kept in checkpoints.
+  bool by_contact = false;
   StoredEnergy start;  // the state when it started
   // The state as booked at the last point where commands could act (a cycling command's end,
   // before its callbacks); `last_current` while nothing has cycled since.

@@ -1,5 +1,6 @@
 // energy(): the energy balance from a script; its terms as histories; what commands between
-// cycles change (reset{}, excavate{}) booked as theirs; the same bits on any thread count.
+// cycles change (reset{}, excavate{}) booked as theirs; the same bits on any thread count; each
+// contact's own balance adding up to the contacts' part.
 #include <lua.hpp>
 
 #include "interp_test.hpp"
@@ -81,6 +82,36 @@ TEST(Energy, ResetFromACallbackIsRefused) {
     cycle(20)
   )");
   EXPECT_TRUE(contains(error, "energy{ reset = true } cannot be given while cycling"));
+}
+
+// With energy{ by_contact = true } each contact keeps its own balance: through a landing and a
+// bounce, with contacts made, pressed and parted, theirs add up to the contacts' part of the error.
+TEST(Energy, TheContactsOwnBalancesAddUpToTheirPartOfTheError) {
+  Interpreter interpreter({.quiet = true, .threads = 2, .stdlib_dirs = {}});
+  expect_runs(interpreter, std::string(kDrop) + R"(
+    for c in contacts() do assert(c.energy_made == nil) end
+    energy{ reset = true, by_contact = true }
+    local function check()
+      local sum, n = 0, 0
+      for c in contacts() do sum, n = sum + c.energy_made, n + 1 end
+      local e = energy()
+      assert(n > 0)
+      assert(math.abs(sum - e.contact_error) < 1e-9 * e.largest,
+             ("contacts' own %.9g, the balance's %.9g J/m"):format(sum, e.contact_error))
+    end
+    while info().time < 0.15 do cycle(100); check() end  -- landed at 0.1 s, bouncing back up
+    energy{ by_contact = false }
+    for c in contacts() do assert(c.energy_made == nil) end
+  )");
+}
+
+TEST(Energy, ContactBooksFromACallbackAreRefused) {
+  Interpreter interpreter({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+  const std::string error = error_of(interpreter, std::string(kDrop) + R"(
+    every(10, function() energy{ by_contact = true } end)
+    cycle(20)
+  )");
+  EXPECT_TRUE(contains(error, "energy{ by_contact = ... } cannot be given while cycling")) << error;
 }
 
 TEST(Energy, TheSameBitsOnAnyThreadCount) {
