@@ -268,4 +268,10 @@ inline ContactEnergy contact_energy(const Contact& c, const JointParams& p) {
   return e;
 }
 
+// Both springs' energy together [J/m].
+inline double stored_in(const Contact& c, const JointParams& p) {
+  const ContactEnergy e = contact_energy(c, p);
+  return e.normal + e.shear;
+}
+
 }  // namespace edem

@@ -772,11 +772,7 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
   // detection changes in what they store, less what is booked as prestress.
   std::vector<ContactBook> books;
   const bool booking = m.energy.by_contact;
-  if (booking) set.books.resize(set.list.size());  // the model's contacts as prepare() left them
-  const auto stored_in = [&](const Contact& c) {
-    const ContactEnergy e = contact_energy(c, m.joint_params[static_cast<size_t>(c.material)]);
-    return e.normal + e.shear;
-  };
+  if (booking) set.books.resize(set.list.size());  // a set prepare() made anew has none yet
   long late = 0;
   LoadedFaces loaded(set.list);
   auto kept_from = set.list.cbegin();
@@ -869,7 +865,8 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
       }
       if (booking) {
         ContactBook book = kept ? set.books[static_cast<size_t>(old - set.list.begin())] : ContactBook{};
-        book.made += stored_in(c) - (kept ? stored_in(*old) : 0.0) - (m.energy.prestress - prestress_before);
+        const double had = kept ? stored_in(*old, m.joint_params[static_cast<size_t>(old->material)]) : 0.0;
+        book.made += stored_in(c, p) - had - (m.energy.prestress - prestress_before);
         books.push_back(book);
       }
       list.push_back(c);

@@ -236,12 +236,6 @@ void zone_force_pass(Mechanics& m, int begin, int end, Partials& partials) {
   }
 }
 
-// A contact's elastic energy as contact_energy() gives it, both springs [J/m].
-double stored_in(const Contact& c, const JointParams& p) {
-  const ContactEnergy e = contact_energy(c, p);
-  return e.normal + e.shear;
-}
-
 // Books one contact's step into its own balance (ContactBook, energy{ by_contact = true }): its
 // stored energy's change from `before`, what it dissipated (`lost` less `lost_before`), and the work
 // of its force on its nodes over the step the nodes last moved (velocities v), half at last cycle's
