@@ -115,14 +115,13 @@ inline void keep_state(Contact& c, const Contact& old, const JointParams& p) {
   // Past the corner the far extension of this edge's line must not press in a gridpoint that
   // has gone beside the block (a wall sliding past the corner of a floor that heaved), nor,
   // within the edge near the corner, one beside a thin tip that has sunk into its own block's
-  // face: it is inside by at most its depth inside the neighbouring edge's line plus what is
-  // left of the span the force fades over (so a gridpoint on the corner, inside or out by
-  // round-off, keeps its contact, and one past it that has gone out of the block farther than its
-  // share could reach back does not). A glued tip's end has the rule below instead.
+  // face: it is inside by at most its depth inside the neighbouring edge's line plus the span
+  // the force fades over (so a gridpoint on the corner, inside or out by round-off, keeps its
+  // contact). A glued tip's end has the rule below instead.
   const bool near_corner = gap < 0.0 && ((e.corner_a && t_line * len < c.limit) ||
                                          (e.corner_b && (1.0 - t_line) * len < c.limit));
   const bool glued_end = t_line < 0.5 ? e.glued_tip_a : e.glued_tip_b;
-  if ((past || near_corner) && !glued_end) gap = std::max(gap, out_of_neighbour(t_line < 0.5) - 2.0 * fade * share);
+  if ((past || near_corner) && !glued_end) gap = std::max(gap, out_of_neighbour(t_line < 0.5) - 2.0 * fade);
   // Behind the edge (over it or past its end) yet out of the line of the glued edge at a glued
   // tip (ContactEdge::glued_tip_a, b) is past the tip into the block glued there, whose own faces
   // carry the gridpoint. Here it is inside by at most its depth inside the glued edge's line, no
