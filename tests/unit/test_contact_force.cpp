@@ -181,8 +181,8 @@ TEST(ContactForce, PastAGluedTipTheForceGoesToNothingAtTheGluedLine) {
 // gridpoint sliding along the face at a constant depth across the end of the edge is inside by its
 // depth inside the glued edge's line on both sides of the end, so its closure changes with the
 // slide, never by a jump: a force that jumps as a gridpoint crosses the end and back makes energy
-// at every crossing (it ran one step of the seed's cavern on Set M for 40,000 cycles without
-// settling, +1.7e7 J/m).
+// at every crossing (such a jump keeps a step of the seed's cavern on Set M from settling in
+// 40,000 cycles, +1.7e7 J/m).
 TEST(ContactForce, AcrossTheEndOfAGluedTipTheClosureDoesNotJump) {
   Corner c;
   c.origin[4] = -1.0;
