@@ -141,12 +141,7 @@ ContactView contact_view(const Mechanics& m, const ContactSet& set, int id) {
     // With the work of its last force over the half step the nodes have moved since, as the
     // balance has booked it.
     const ContactBook& book = set.books[static_cast<size_t>(id)];
-    view.energy_made = book.made;
-    for (int k = 0; k < 3; ++k) {
-      if (book.nodes[k] < 0) continue;
-      const size_t n = static_cast<size_t>(book.nodes[k]);
-      view.energy_made += 0.5 * m.step * (book.push[2 * k] * m.v[2 * n] + book.push[2 * k + 1] * m.v[2 * n + 1]);
-    }
+    view.energy_made = book.made + half_step_work(book, m.v.data(), m.step);
   }
   for (double value : {view.fn, view.fs, view.un, view.us})
     if (!std::isfinite(value)) fail("contact {} holds no finite force: the run went unstable earlier", id + 1);

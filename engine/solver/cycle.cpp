@@ -243,20 +243,11 @@ void zone_force_pass(Mechanics& m, int begin, int end, Partials& partials) {
 void book_contact(const Mechanics& m, const Contact& c, const JointParams& p, double before,
                   const ContactLoss& lost_before, const ContactLoss& lost, const double* push, ContactBook& book) {
   const ContactEdge& e = m.faces.edges[static_cast<size_t>(c.edge)];
-  const int nodes[3] = {c.node, e.a, e.b};
-  const double* v = m.v.data();
-  double work = 0.0;  // by the contact's force on its nodes
-  for (int k = 0; k < 3; ++k) {
-    const size_t now = static_cast<size_t>(nodes[k]);
-    work += 0.5 * m.step * (push[2 * k] * v[2 * now] + push[2 * k + 1] * v[2 * now + 1]);
-    if (book.nodes[k] >= 0) {
-      const size_t was = static_cast<size_t>(book.nodes[k]);
-      work += 0.5 * m.step * (book.push[2 * k] * v[2 * was] + book.push[2 * k + 1] * v[2 * was + 1]);
-    }
-  }
-  book.made += stored_in(c, p) - before + (lost.slip - lost_before.slip) + (lost.bond - lost_before.bond) + work;
+  double work = half_step_work(book, m.v.data(), m.step);  // last cycle's force
   for (int k = 0; k < 6; ++k) book.push[k] = push[k];
-  for (int k = 0; k < 3; ++k) book.nodes[k] = nodes[k];
+  book.nodes[0] = c.node, book.nodes[1] = e.a, book.nodes[2] = e.b;
+  work += half_step_work(book, m.v.data(), m.step);  // this one's
+  book.made += stored_in(c, p) - before + (lost.slip - lost_before.slip) + (lost.bond - lost_before.bond) + work;
 }
 
 // Forces of contacts [begin, end), `begin` starting a chunk; the nodes gather them in their own

@@ -131,6 +131,17 @@ struct ContactBook {
   int nodes[3] = {-1, -1, -1};  // gridpoint, edge end a, edge end b; -1: no cycle yet
 };
 
+// The work of a book's force on its nodes over half a step at velocities `v` (dt: the step) [J/m].
+inline double half_step_work(const ContactBook& book, const double* v, double dt) {
+  double work = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    if (book.nodes[k] < 0) continue;
+    const size_t n = static_cast<size_t>(book.nodes[k]);
+    work += 0.5 * dt * (book.push[2 * k] * v[2 * n] + book.push[2 * k + 1] * v[2 * n + 1]);
+  }
+  return work;
+}
+
 struct ContactSet {
   std::vector<Contact> list;  // ordered by gridpoint, then other block
   // Per contact, in list order, while contacts book their own energy (EnergyLedger::by_contact,

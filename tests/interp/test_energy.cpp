@@ -75,13 +75,16 @@ TEST(Energy, ResetVelocityIsACommandsChangeAndExcavationTakesTheRockAway) {
   )");
 }
 
-TEST(Energy, ResetFromACallbackIsRefused) {
-  Interpreter interpreter({.quiet = true, .threads = 1, .stdlib_dirs = {}});
-  const std::string error = error_of(interpreter, std::string(kDrop) + R"(
-    every(10, function() energy{ reset = true } end)
-    cycle(20)
-  )");
-  EXPECT_TRUE(contains(error, "energy{ reset = true } cannot be given while cycling"));
+TEST(Energy, ResetAndContactBooksFromACallbackAreRefused) {
+  const std::pair<const char*, const char*> calls[] = {
+      {"energy{ reset = true }", "energy{ reset = true } cannot be given while cycling"},
+      {"energy{ by_contact = true }", "energy{ by_contact = ... } cannot be given while cycling"}};
+  for (const auto& [call, message] : calls) {
+    Interpreter interpreter({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+    const std::string error =
+        error_of(interpreter, std::string(kDrop) + "every(10, function() " + call + " end)\ncycle(20)\n");
+    EXPECT_TRUE(contains(error, message)) << error;
+  }
 }
 
 // With energy{ by_contact = true } each contact keeps its own balance: through a landing and a
@@ -103,15 +106,6 @@ TEST(Energy, TheContactsOwnBalancesAddUpToTheirPartOfTheError) {
     energy{ by_contact = false }
     for c in contacts() do assert(c.energy_made == nil) end
   )");
-}
-
-TEST(Energy, ContactBooksFromACallbackAreRefused) {
-  Interpreter interpreter({.quiet = true, .threads = 1, .stdlib_dirs = {}});
-  const std::string error = error_of(interpreter, std::string(kDrop) + R"(
-    every(10, function() energy{ by_contact = true } end)
-    cycle(20)
-  )");
-  EXPECT_TRUE(contains(error, "energy{ by_contact = ... } cannot be given while cycling")) << error;
 }
 
 TEST(Energy, TheSameBitsOnAnyThreadCount) {
