@@ -56,6 +56,55 @@ inline void keep_state(Contact& c, const Contact& old, const JointParams& p) {
   c.fs = was > 0.0 ? std::clamp(old.fs * (now / was), -strength, strength) : 0.0;
 }
 
+// The elastic energy a contact stores as its last cycle left it [J/m]: its normal spring's, the
+// integral of its normal force over its overlap from where it touched (a tip's length grows with
+// the overlap), and its shear spring's, fs^2 / (2 ks length).
+struct ContactEnergy {
+  double normal = 0.0, shear = 0.0;
+};
+inline ContactEnergy contact_energy(const Contact& c, const JointParams& p) {
+  if (c.state == ContactState::open) return {};
+  const double overlap = last_overlap(c);
+  const double length = last_carrying_length(c);
+  if (!(length > 0.0)) return {};
+  ContactEnergy e;
+  e.shear = c.fs * c.fs / (2.0 * p.ks * length);
+  if (c.closure < 0.0) {  // a bond in tension, linear or on its secant
+    e.normal = 0.5 * c.sn * c.closure * length;
+    return e;
+  }
+  const double grows_from = c.wedge > 0.0 ? c.length / c.wedge : INFINITY;  // overlap where a tip's length passes its own
+  if (!(overlap > grows_from)) {
+    e.normal = length * normal_energy(p, c.closure);
+    return e;
+  }
+  // A tip pressed past it: its own length up to there, then wedge x overlap up to the limit, then
+  // the limit's; the middle part by Simpson's rule (exact for the linear law).
+  const double offset = c.closure0 + c.dilation;  // closure = offset + overlap
+  const double from = std::max(grows_from, -offset), to = std::min(overlap, c.limit);
+  double energy = c.length * normal_energy(p, offset + from);
+  if (to > from) {
+    constexpr int kIntervals = 16;
+    const double h = (to - from) / kIntervals;
+    double sum = 0.0;
+    for (int i = 0; i <= kIntervals; ++i) {
+      const double x = from + i * h;
+      const double weight = i == 0 || i == kIntervals ? 1.0 : (i % 2 == 1 ? 4.0 : 2.0);
+      sum += weight * normal_stress(p, offset + x) * c.wedge * x;
+    }
+    energy += sum * h / 3.0;
+  }
+  if (overlap > c.limit) energy += c.wedge * c.limit * (normal_energy(p, c.closure) - normal_energy(p, offset + c.limit));
+  e.normal = c.share * energy;
+  return e;
+}
+
+// Both springs' energy together [J/m].
+inline double stored_in(const Contact& c, const JointParams& p) {
+  const ContactEnergy e = contact_energy(c, p);
+  return e.normal + e.shear;
+}
+
 // Updates `c` and its force on the gridpoint (c.fx, c.fy) from the node positions, origin + u,
 // and velocities `v`; returns the overlap, how far the
 // gridpoint is inside the edge's block [m] (negative: a gap). `edges`: all of them (the edge is
@@ -91,14 +140,23 @@ inline void keep_state(Contact& c, const Contact& old, const JointParams& p) {
       gap = end.gap;
     }
   }
-  // The gridpoint's signed distance out of the line of the edge beside this one at its end a
-  // (or b), where that end is a convex corner of the block.
-  const auto out_of_neighbour = [&](bool at_a) {
+  // Caps the depth at the gridpoint's depth inside the line of the edge beside this one at its
+  // end a (or b), less `span`. Where that cap holds and `turn`, the normal force acts along that
+  // line's normal: the force is then the slope of the energy the depth gives (the shear force
+  // stays along the edge).
+  const auto from_neighbour = [&](bool at_a, double span, bool turn) {
     const size_t from = static_cast<size_t>(at_a ? edges[e.prev].a : e.b);
     const size_t to = static_cast<size_t>(at_a ? e.a : edges[e.next].b);
     const double fx = x(2 * from), fy = x(2 * from + 1);
     const double ndx = x(2 * to) - fx, ndy = x(2 * to + 1) - fy;
-    return ((x(2 * n) - fx) * ndy - (x(2 * n + 1) - fy) * ndx) / std::sqrt(ndx * ndx + ndy * ndy);
+    const double nlen = std::sqrt(ndx * ndx + ndy * ndy);
+    const double out = ((x(2 * n) - fx) * ndy - (x(2 * n + 1) - fy) * ndx) / nlen - span;
+    if (!(out > gap)) return;
+    gap = out;
+    if (turn) {
+      nx = ndy / nlen;
+      ny = -ndx / nlen;
+    }
   };
   // Past the end of the edge at a convex corner of its block, the gridpoint's share of the
   // contact length shrinks with the distance past the corner and is gone at twice its length
@@ -112,6 +170,7 @@ inline void keep_state(Contact& c, const Contact& old, const JointParams& p) {
     const double beyond = (t_line < 0.0 ? -t_line : t_line - 1.0) * len;
     share = fade > 0.0 ? std::max(0.0, 1.0 - beyond / (2.0 * fade)) : 0.0;
   }
+  const double fade_share = share;
   // Past the corner the far extension of this edge's line must not press in a gridpoint that
   // has gone beside the block (a wall sliding past the corner of a floor that heaved), nor,
   // within the edge near the corner, one beside a thin tip that has sunk into its own block's
@@ -121,7 +180,7 @@ inline void keep_state(Contact& c, const Contact& old, const JointParams& p) {
   const bool near_corner = gap < 0.0 && ((e.corner_a && t_line * len < c.limit) ||
                                          (e.corner_b && (1.0 - t_line) * len < c.limit));
   const bool glued_end = t_line < 0.5 ? e.glued_tip_a : e.glued_tip_b;
-  if ((past || near_corner) && !glued_end) gap = std::max(gap, out_of_neighbour(t_line < 0.5) - 2.0 * fade);
+  if ((past || near_corner) && !glued_end) from_neighbour(t_line < 0.5, 2.0 * fade, true);
   // Behind the edge (over it or past its end) yet out of the line of the glued edge at a glued
   // tip (ContactEdge::glued_tip_a, b) is past the tip into the block glued there, whose own faces
   // carry the gridpoint. Here it is inside by at most its depth inside the glued edge's line, no
@@ -129,8 +188,8 @@ inline void keep_state(Contact& c, const Contact& old, const JointParams& p) {
   // returns: the contact stays, never dropped and made again with a prestress. The same depth on
   // both sides of the edge's end: a depth that jumped there would make energy at every crossing.
   if ((e.glued_tip_a || e.glued_tip_b) && gap < 0.0) [[unlikely]] {
-    if (e.glued_tip_a) gap = std::max(gap, out_of_neighbour(true));
-    if (e.glued_tip_b) gap = std::max(gap, out_of_neighbour(false));
+    if (e.glued_tip_a) from_neighbour(true, 0.0, false);
+    if (e.glued_tip_b) from_neighbour(false, 0.0, false);
   }
   // A tip whose edges all lead out past a sharp corner of the edge (Contact::leads_past_a, b)
   // is over the block only short of it: pressed in by d, its overlap runs about 2 wedge d from its
@@ -138,12 +197,22 @@ inline void keep_state(Contact& c, const Contact& old, const JointParams& p) {
   // the block: its share is that part of the overlap's area, 1 that far from the corner, 0 at the
   // corner and beyond. The fade above would have the face's line, run on past the corner, push
   // the corner of a block that stands beside, on the block next to this one (a slipped crossing).
+  // Its share's slope along the edge (towards b) and into the block, for the force below.
+  double lead_along = 0.0, lead_in = 0.0;
   if (c.leads_past_a || c.leads_past_b) [[unlikely]] {
-    const double from_corner = std::min(c.leads_past_a ? t_line * len : INFINITY,
-                                        c.leads_past_b ? (1.0 - t_line) * len : INFINITY);
+    const double to_a = c.leads_past_a ? t_line * len : INFINITY;
+    const double to_b = c.leads_past_b ? (1.0 - t_line) * len : INFINITY;
+    const double from_corner = std::min(to_a, to_b);
     const double chord = 2.0 * c.wedge * std::clamp(-gap, 0.0, c.limit);
     const double beyond_corner = chord > from_corner ? 1.0 - from_corner / chord : 0.0;
-    share = std::min(share, from_corner > 0.0 ? 1.0 - beyond_corner * beyond_corner : 0.0);
+    const double leading = from_corner > 0.0 ? 1.0 - beyond_corner * beyond_corner : 0.0;
+    if (leading < share) {
+      share = leading;
+      if (beyond_corner > 0.0 && from_corner > 0.0) {
+        lead_along = 2.0 * beyond_corner / chord * (to_a <= to_b ? 1.0 : -1.0);
+        if (-gap < c.limit) lead_in = -4.0 * c.wedge * beyond_corner * from_corner / (chord * chord);
+      }
+    }
   }
   const double rvx = v[2 * n] - ((1.0 - t) * v[2 * a] + t * v[2 * b]);
   const double rvy = v[2 * n + 1] - ((1.0 - t) * v[2 * a + 1] + t * v[2 * b + 1]);
@@ -221,56 +290,23 @@ inline void keep_state(Contact& c, const Contact& old, const JointParams& p) {
   const double fn = sn * length;
   c.fx = fn * nx + c.fs * sx;
   c.fy = fn * ny + c.fs * sy;
+  // Past the corner its springs' energy is share x what they would store over the whole length,
+  // and the share falls by 1 / (2 fade) a metre further out: the fade's force is that energy's
+  // slope, a push along the edge away from the corner. Without it the energy a face sliding off
+  // a corner under load stores would vanish as its share goes.
+  if (past && share > 0.0 && share == fade_share) [[unlikely]] {
+    const double push = stored_in(c, p) / (share * 2.0 * fade) * (t_line < 0.0 ? -1.0 : 1.0);
+    c.fx += push * sx;
+    c.fy += push * sy;
+  }
+  // The same for a tip leading past a corner, whose share hangs on its depth too: the energy's
+  // slope pulls it towards the corner and into the block (less of it then lies over the block).
+  if (lead_along != 0.0) [[unlikely]] {
+    const double whole = stored_in(c, p) / share;
+    c.fx -= whole * (lead_along * sx - lead_in * nx);
+    c.fy -= whole * (lead_along * sy - lead_in * ny);
+  }
   return -gap;
-}
-
-// The elastic energy a contact stores as its last cycle left it [J/m]: its normal spring's, the
-// integral of its normal force over its overlap from where it touched (a tip's length grows with
-// the overlap), and its shear spring's, fs^2 / (2 ks length).
-struct ContactEnergy {
-  double normal = 0.0, shear = 0.0;
-};
-inline ContactEnergy contact_energy(const Contact& c, const JointParams& p) {
-  if (c.state == ContactState::open) return {};
-  const double overlap = last_overlap(c);
-  const double length = last_carrying_length(c);
-  if (!(length > 0.0)) return {};
-  ContactEnergy e;
-  e.shear = c.fs * c.fs / (2.0 * p.ks * length);
-  if (c.closure < 0.0) {  // a bond in tension, linear or on its secant
-    e.normal = 0.5 * c.sn * c.closure * length;
-    return e;
-  }
-  const double grows_from = c.wedge > 0.0 ? c.length / c.wedge : INFINITY;  // overlap where a tip's length passes its own
-  if (!(overlap > grows_from)) {
-    e.normal = length * normal_energy(p, c.closure);
-    return e;
-  }
-  // A tip pressed past it: its own length up to there, then wedge x overlap up to the limit, then
-  // the limit's; the middle part by Simpson's rule (exact for the linear law).
-  const double offset = c.closure0 + c.dilation;  // closure = offset + overlap
-  const double from = std::max(grows_from, -offset), to = std::min(overlap, c.limit);
-  double energy = c.length * normal_energy(p, offset + from);
-  if (to > from) {
-    constexpr int kIntervals = 16;
-    const double h = (to - from) / kIntervals;
-    double sum = 0.0;
-    for (int i = 0; i <= kIntervals; ++i) {
-      const double x = from + i * h;
-      const double weight = i == 0 || i == kIntervals ? 1.0 : (i % 2 == 1 ? 4.0 : 2.0);
-      sum += weight * normal_stress(p, offset + x) * c.wedge * x;
-    }
-    energy += sum * h / 3.0;
-  }
-  if (overlap > c.limit) energy += c.wedge * c.limit * (normal_energy(p, c.closure) - normal_energy(p, offset + c.limit));
-  e.normal = c.share * energy;
-  return e;
-}
-
-// Both springs' energy together [J/m].
-inline double stored_in(const Contact& c, const JointParams& p) {
-  const ContactEnergy e = contact_energy(c, p);
-  return e.normal + e.shear;
 }
 
 }  // namespace edem

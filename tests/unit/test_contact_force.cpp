@@ -5,6 +5,7 @@
 // tip's far face; a tip pressed into a face carries over a length that grows with its depth.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -63,6 +64,66 @@ TEST(ContactForce, JustPastTheCornerTheForceFadesWithTheShare) {
   Corner c;
   const double f = c.force_at(-0.05, -1e-3);  // past by half its length: share 0.75
   EXPECT_NEAR(f, 1e9 * 1e-3 * 0.1 * 0.75, 1e-6);
+}
+
+// A face pressed in and slid off the corner: the energy its fade takes (its springs' share) comes
+// back as work on the gridpoint, a push along the face away from the corner, so sliding off and
+// back makes and loses nothing. Without it the energy of every face that slides off a corner
+// under load would vanish.
+TEST(ContactForce, SlidOffTheCornerTheFadeGivesItsEnergyBackAsWork) {
+  Corner c;
+  c.force_at(0.02, -1e-3);
+  const double start = stored_in(c.contact, c.joint);  // kn d^2 length / 2 = 50 J/m
+  ASSERT_NEAR(start, 50.0, 1e-9);
+  constexpr int kSteps = 4000;
+  double work = 0.0, x = 0.02, before = c.contact.fx;
+  for (int i = 1; i <= kSteps; ++i) {  // to 0.25 m past the corner: gone at 0.2 m
+    const double next = 0.02 - 0.27 * i / kSteps;
+    c.force_at(next, -1e-3);
+    work += 0.5 * (before + c.contact.fx) * (next - x);
+    before = c.contact.fx;
+    x = next;
+  }
+  EXPECT_EQ(stored_in(c.contact, c.joint), 0.0);
+  EXPECT_NEAR(work, start, 1e-3 * start);
+  // Halfway, the push is the energy per share over twice the fade span, away from the corner.
+  c.force_at(-0.1, -1e-3);
+  EXPECT_NEAR(c.contact.fx, -50.0 / 0.2, 1e-9);
+  EXPECT_NEAR(c.contact.fy, 0.5 * 1e9 * 1e-3 * 0.1, 1e-6);
+}
+
+// A tip leading past the corner (Contact::leads_past_b) carries the part of its overlap short
+// of the corner, a share that hangs on where it is and how deep: its force is that energy's
+// slope, so taken round a loop near the corner it gives back the work it took.
+TEST(ContactForce, ATipLeadingPastTheCornerGivesBackRoundALoopTheWorkItTook) {
+  Corner c;
+  c.contact.length = 0.001;
+  c.contact.wedge = 0.25;
+  c.contact.limit = 0.1;
+  c.contact.leads_past_b = true;
+  const std::vector<std::array<double, 2>> corners{{0.05, -0.06}, {0.01, -0.06}, {0.01, -0.09}, {0.05, -0.09}, {0.05, -0.06}};
+  c.force_at(0.05, -0.06);
+  const double start = stored_in(c.contact, c.joint);
+  double work = 0.0, taken = 0.0, fx = c.contact.fx, fy = c.contact.fy;
+  constexpr int kSteps = 4000;
+  for (size_t leg = 1; leg < corners.size(); ++leg) {
+    const auto [x0, y0] = corners[leg - 1];
+    const auto [x1, y1] = corners[leg];
+    for (int i = 1; i <= kSteps; ++i) {
+      const double x = x0 + (x1 - x0) * i / kSteps, y = y0 + (y1 - y0) * i / kSteps;
+      c.force_at(x, y);
+      const double step = 0.5 * ((fx + c.contact.fx) * (x1 - x0) + (fy + c.contact.fy) * (y1 - y0)) / kSteps;
+      work += step;
+      taken += std::fabs(step);
+      fx = c.contact.fx;
+      fy = c.contact.fy;
+    }
+    if (leg == 2) {  // beside the corner: its depth from the corner's other face, 0.06 m
+      EXPECT_NEAR(c.contact.share, 1.0 - std::pow(1.0 - 0.01 / 0.03, 2), 1e-9);
+    }
+  }
+  EXPECT_NEAR(stored_in(c.contact, c.joint), start, 1e-9 * start);
+  EXPECT_NEAR(work, 0.0, 1e-4 * taken) << "of " << taken << " J/m taken and given";
 }
 
 TEST(ContactForce, BesideTheBlockPastItsCornerNoDeepLinePressesItIn) {
