@@ -162,13 +162,16 @@ inline double stored_in(const Contact& c, const JointParams& p) {
   // contact length shrinks with the distance past the corner and is gone at twice its length
   // (its half-edges then no longer lie over the block): the force fades as a face slides off a
   // corner instead of dropping at once. Faces zoned alike (zoning.hpp) put the gridpoints at a
-  // joint's ends exactly on the corners, where any all-or-nothing rule would flicker.
-  double share = 1.0;
+  // joint's ends exactly on the corners, where any all-or-nothing rule would flicker: the share
+  // starts and ends level (a smooth step over the span), so the push below it gives is nothing
+  // on the corner, whichever side of it round-off puts the gridpoint.
+  double share = 1.0, fade_slope = 0.0;  // the share, and its fall a metre further out
   const double fade = std::max(c.length, c.wedge * c.limit);  // a tip's: at its deepest
   const bool past = (t_line < 0.0 && e.corner_a) || (t_line > 1.0 && e.corner_b);
   if (past) {
-    const double beyond = (t_line < 0.0 ? -t_line : t_line - 1.0) * len;
-    share = fade > 0.0 ? std::max(0.0, 1.0 - beyond / (2.0 * fade)) : 0.0;
+    const double out = fade > 0.0 ? std::min(1.0, (t_line < 0.0 ? -t_line : t_line - 1.0) * len / (2.0 * fade)) : 1.0;
+    share = 1.0 - out * out * (3.0 - 2.0 * out);
+    fade_slope = out < 1.0 ? 6.0 * out * (1.0 - out) / (2.0 * fade) : 0.0;
   }
   const double fade_share = share;
   // Past the corner the far extension of this edge's line must not press in a gridpoint that
@@ -290,12 +293,11 @@ inline double stored_in(const Contact& c, const JointParams& p) {
   const double fn = sn * length;
   c.fx = fn * nx + c.fs * sx;
   c.fy = fn * ny + c.fs * sy;
-  // Past the corner its springs' energy is share x what they would store over the whole length,
-  // and the share falls by 1 / (2 fade) a metre further out: the fade's force is that energy's
-  // slope, a push along the edge away from the corner. Without it the energy a face sliding off
-  // a corner under load stores would vanish as its share goes.
+  // Past the corner its springs' energy is share x what they would store over the whole length:
+  // the fade's force is that energy's slope, a push along the edge away from the corner. Without
+  // it the energy a face sliding off a corner under load stores would vanish as its share goes.
   if (past && share > 0.0 && share == fade_share) [[unlikely]] {
-    const double push = stored_in(c, p) / (share * 2.0 * fade) * (t_line < 0.0 ? -1.0 : 1.0);
+    const double push = stored_in(c, p) / share * fade_slope * (t_line < 0.0 ? -1.0 : 1.0);
     c.fx += push * sx;
     c.fy += push * sy;
   }

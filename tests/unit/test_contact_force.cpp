@@ -62,8 +62,9 @@ TEST(ContactForce, OnTheCornerInOrOutByRoundOffItKeepsItsForce) {
 
 TEST(ContactForce, JustPastTheCornerTheForceFadesWithTheShare) {
   Corner c;
-  const double f = c.force_at(-0.05, -1e-3);  // past by half its length: share 0.75
-  EXPECT_NEAR(f, 1e9 * 1e-3 * 0.1 * 0.75, 1e-6);
+  const double f = c.force_at(-0.05, -1e-3);  // past by half its length, a quarter of the span
+  EXPECT_NEAR(f, 1e9 * 1e-3 * 0.1 * (1.0 - 0.25 * 0.25 * (3.0 - 2.0 * 0.25)), 1e-6);
+  EXPECT_NEAR(c.force_at(-0.1, -1e-3), 1e9 * 1e-3 * 0.1 * 0.5, 1e-6);  // halfway
 }
 
 // A face pressed in and slid off the corner: the energy its fade takes (its springs' share) comes
@@ -86,10 +87,13 @@ TEST(ContactForce, SlidOffTheCornerTheFadeGivesItsEnergyBackAsWork) {
   }
   EXPECT_EQ(stored_in(c.contact, c.joint), 0.0);
   EXPECT_NEAR(work, start, 1e-3 * start);
-  // Halfway, the push is the energy per share over twice the fade span, away from the corner.
+  // Halfway the share falls fastest, by 1.5 over the span (0.2 m): the push is the energy per
+  // share times that, away from the corner. On the corner, in or out by round-off, none.
   c.force_at(-0.1, -1e-3);
-  EXPECT_NEAR(c.contact.fx, -50.0 / 0.2, 1e-9);
+  EXPECT_NEAR(c.contact.fx, -50.0 * 1.5 / 0.2, 1e-9);
   EXPECT_NEAR(c.contact.fy, 0.5 * 1e9 * 1e-3 * 0.1, 1e-6);
+  c.force_at(-1e-12, -1e-3);
+  EXPECT_NEAR(c.contact.fx, 0.0, 1e-6);
 }
 
 // A tip leading past the corner (Contact::leads_past_b) carries the part of its overlap short
@@ -129,7 +133,7 @@ TEST(ContactForce, ATipLeadingPastTheCornerGivesBackRoundALoopTheWorkItTook) {
 TEST(ContactForce, BesideTheBlockPastItsCornerNoDeepLinePressesItIn) {
   Corner c;
   c.origin[4] = 1.0;  // the boundary turns down at 45 deg at b, to (1, -1): an acute corner
-  // 0.05 m past the corner along the edge (share 0.75) but 0.5 m below its line: by that line
+  // 0.05 m past the corner along the edge (a quarter of the span) but 0.5 m below its line: by that line
   // 0.5 m deep, yet 0.39 m outside the block's other face, more than the fade span (0.2 m).
   EXPECT_EQ(c.force_at(-0.05, -0.5), 0.0);
   EXPECT_EQ(c.contact.sn, 0.0);
