@@ -200,22 +200,12 @@ inline double stored_in(const Contact& c, const JointParams& p) {
   // the block: its share is that part of the overlap's area, 1 that far from the corner, 0 at the
   // corner and beyond. The fade above would have the face's line, run on past the corner, push
   // the corner of a block that stands beside, on the block next to this one (a slipped crossing).
-  // Its share's slope along the edge (towards b) and into the block, for the force below.
-  double lead_along = 0.0, lead_in = 0.0;
   if (c.leads_past_a || c.leads_past_b) [[unlikely]] {
-    const double to_a = c.leads_past_a ? t_line * len : INFINITY;
-    const double to_b = c.leads_past_b ? (1.0 - t_line) * len : INFINITY;
-    const double from_corner = std::min(to_a, to_b);
+    const double from_corner = std::min(c.leads_past_a ? t_line * len : INFINITY,
+                                        c.leads_past_b ? (1.0 - t_line) * len : INFINITY);
     const double chord = 2.0 * c.wedge * std::clamp(-gap, 0.0, c.limit);
     const double beyond_corner = chord > from_corner ? 1.0 - from_corner / chord : 0.0;
-    const double leading = from_corner > 0.0 ? 1.0 - beyond_corner * beyond_corner : 0.0;
-    if (leading < share) {
-      share = leading;
-      if (beyond_corner > 0.0 && from_corner > 0.0) {
-        lead_along = 2.0 * beyond_corner / chord * (to_a <= to_b ? 1.0 : -1.0);
-        if (-gap < c.limit) lead_in = -4.0 * c.wedge * beyond_corner * from_corner / (chord * chord);
-      }
-    }
+    share = std::min(share, from_corner > 0.0 ? 1.0 - beyond_corner * beyond_corner : 0.0);
   }
   const double rvx = v[2 * n] - ((1.0 - t) * v[2 * a] + t * v[2 * b]);
   const double rvy = v[2 * n + 1] - ((1.0 - t) * v[2 * a + 1] + t * v[2 * b + 1]);
@@ -300,13 +290,6 @@ inline double stored_in(const Contact& c, const JointParams& p) {
     const double push = stored_in(c, p) / share * fade_slope * (t_line < 0.0 ? -1.0 : 1.0);
     c.fx += push * sx;
     c.fy += push * sy;
-  }
-  // The same for a tip leading past a corner, whose share hangs on its depth too: the energy's
-  // slope pulls it towards the corner and into the block (less of it then lies over the block).
-  if (lead_along != 0.0) [[unlikely]] {
-    const double whole = stored_in(c, p) / share;
-    c.fx -= whole * (lead_along * sx - lead_in * nx);
-    c.fy -= whole * (lead_along * sy - lead_in * ny);
   }
   return -gap;
 }

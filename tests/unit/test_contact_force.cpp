@@ -5,7 +5,6 @@
 // tip's far face; a tip pressed into a face carries over a length that grows with its depth.
 #include <gtest/gtest.h>
 
-#include <array>
 #include <cmath>
 #include <vector>
 
@@ -94,40 +93,6 @@ TEST(ContactForce, SlidOffTheCornerTheFadeGivesItsEnergyBackAsWork) {
   EXPECT_NEAR(c.contact.fy, 0.5 * 1e9 * 1e-3 * 0.1, 1e-6);
   c.force_at(-1e-12, -1e-3);
   EXPECT_NEAR(c.contact.fx, 0.0, 1e-6);
-}
-
-// A tip leading past the corner (Contact::leads_past_b) carries the part of its overlap short
-// of the corner, a share that hangs on where it is and how deep: its force is that energy's
-// slope, so taken round a loop near the corner it gives back the work it took.
-TEST(ContactForce, ATipLeadingPastTheCornerGivesBackRoundALoopTheWorkItTook) {
-  Corner c;
-  c.contact.length = 0.001;
-  c.contact.wedge = 0.25;
-  c.contact.limit = 0.1;
-  c.contact.leads_past_b = true;
-  const std::vector<std::array<double, 2>> corners{{0.05, -0.06}, {0.01, -0.06}, {0.01, -0.09}, {0.05, -0.09}, {0.05, -0.06}};
-  c.force_at(0.05, -0.06);
-  const double start = stored_in(c.contact, c.joint);
-  double work = 0.0, taken = 0.0, fx = c.contact.fx, fy = c.contact.fy;
-  constexpr int kSteps = 4000;
-  for (size_t leg = 1; leg < corners.size(); ++leg) {
-    const auto [x0, y0] = corners[leg - 1];
-    const auto [x1, y1] = corners[leg];
-    for (int i = 1; i <= kSteps; ++i) {
-      const double x = x0 + (x1 - x0) * i / kSteps, y = y0 + (y1 - y0) * i / kSteps;
-      c.force_at(x, y);
-      const double step = 0.5 * ((fx + c.contact.fx) * (x1 - x0) + (fy + c.contact.fy) * (y1 - y0)) / kSteps;
-      work += step;
-      taken += std::fabs(step);
-      fx = c.contact.fx;
-      fy = c.contact.fy;
-    }
-    if (leg == 2) {  // beside the corner: its depth from the corner's other face, 0.06 m
-      EXPECT_NEAR(c.contact.share, 1.0 - std::pow(1.0 - 0.01 / 0.03, 2), 1e-9);
-    }
-  }
-  EXPECT_NEAR(stored_in(c.contact, c.joint), start, 1e-9 * start);
-  EXPECT_NEAR(work, 0.0, 1e-4 * taken) << "of " << taken << " J/m taken and given";
 }
 
 TEST(ContactForce, BesideTheBlockPastItsCornerNoDeepLinePressesItIn) {
