@@ -169,7 +169,8 @@ inline double stored_in(const Contact& c, const JointParams& p) {
   const double fade = std::max(c.length, c.wedge * c.limit);  // a tip's: at its deepest
   const bool past = (t_line < 0.0 && e.corner_a) || (t_line > 1.0 && e.corner_b);
   if (past) {
-    const double out = fade > 0.0 ? std::min(1.0, (t_line < 0.0 ? -t_line : t_line - 1.0) * len / (2.0 * fade)) : 1.0;
+    const double beyond = (t_line < 0.0 ? -t_line : t_line - 1.0) * len;
+    const double out = fade > 0.0 ? std::min(1.0, beyond / (2.0 * fade)) : 1.0;  // of the span
     share = 1.0 - out * out * (3.0 - 2.0 * out);
     fade_slope = out < 1.0 ? 6.0 * out * (1.0 - out) / (2.0 * fade) : 0.0;
   }

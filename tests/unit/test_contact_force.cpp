@@ -98,8 +98,9 @@ TEST(ContactForce, SlidOffTheCornerTheFadeGivesItsEnergyBackAsWork) {
 TEST(ContactForce, BesideTheBlockPastItsCornerNoDeepLinePressesItIn) {
   Corner c;
   c.origin[4] = 1.0;  // the boundary turns down at 45 deg at b, to (1, -1): an acute corner
-  // 0.05 m past the corner along the edge (a quarter of the span) but 0.5 m below its line: by that line
-  // 0.5 m deep, yet 0.39 m outside the block's other face, more than the fade span (0.2 m).
+  // 0.05 m past the corner along the edge (a quarter of the span) but 0.5 m below its line: by
+  // that line 0.5 m deep, yet 0.39 m outside the block's other face, more than the fade span
+  // (0.2 m).
   EXPECT_EQ(c.force_at(-0.05, -0.5), 0.0);
   EXPECT_EQ(c.contact.sn, 0.0);
   // 0.2 m below the line, 0.177 m outside the other face: deep by at most 0.2 - 0.177 m.
