@@ -67,9 +67,8 @@ TEST(ContactForce, JustPastTheCornerTheForceFadesWithTheShare) {
 }
 
 // A face pressed in and slid off the corner: the energy its fade takes (its springs' share) comes
-// back as work on the gridpoint, a push along the face away from the corner, so sliding off and
-// back makes and loses nothing. Without it the energy of every face that slides off a corner
-// under load would vanish.
+// back as work on the gridpoint, a push along the face away from the corner, so sliding off loses
+// nothing. Without it the energy of every face that slides off a corner under load would vanish.
 TEST(ContactForce, SlidOffTheCornerTheFadeGivesItsEnergyBackAsWork) {
   Corner c;
   c.force_at(0.02, -1e-3);
