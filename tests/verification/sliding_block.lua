@@ -21,12 +21,13 @@
 --     with friction 89 deg, given phi = 30.1 (and 30.5, 0.04 and 2 m high) and settled again:
 --     each stays put (displacement over 2 s below 10 x the elastic shear-spring value).
 -- Given its friction without settling again, a block is not in equilibrium when the dynamic run
--- starts: settled at 89 deg, its contacts carry the elastic block's shear, and 8 of the 18
--- under the 2 m x 1 m block are past the strength of phi = 30.1 (its uphill half, where the
--- weight's moment about the base leaves the least normal force). They slip at once, a step load, and with no damping the vibration it starts
--- never decays: contacts are springs, impacts perfectly elastic. A block within 0.4 % of its
--- friction (1 - tan 30 / tan 30.1) walks down whenever its normal force swings by more than that,
--- and gravity pays: printed below, the balance closes (energy_balance.lua measures it too).
+-- starts: settled at 89 deg, its contacts carry the elastic block's shear, and 8 of the 18 under
+-- the 2 m x 1 m block are past the strength of phi = 30.1 (its uphill half, where the weight's
+-- moment about the base leaves the least normal force). They slip at once, a step load, and with no
+-- damping the vibration it starts never decays: contacts are springs, impacts perfectly elastic. A
+-- block within 0.4 % of its friction (1 - tan 30 / tan 30.1) walks down whenever its normal force
+-- swings by more than that, and gravity pays: printed below, the balance closes (energy_balance.lua
+-- measures it too).
 -- The slow sliding cases use a rigid-like block: flat (2 m x 0.02 m, density raised to keep the
 -- mass) on joints 100 x softer (kn = ks = 0.1 GPa/m). An elastic block that slides slowly with
 -- no damping slides too fast: phi = 29.9 with the 2 m x 1 m block slides 0.33 m in 2 s instead
