@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "state/contacts.hpp"
+#include "contact/facing_length.hpp"
 #include "contact/joint_law.hpp"
 #include "contact/past_the_end.hpp"
 
@@ -105,13 +106,23 @@ inline double stored_in(const Contact& c, const JointParams& p) {
   return e.normal + e.shear;
 }
 
+// The force a contact whose length follows its facing length (Contact::per_facing) gives its
+// nodes as they move: its stored energy's slope with respect to their positions, at its closure
+// and shear stress [N/m], by role (kContactRoles, x and y each).
+struct LengthPush {
+  double on[2 * kContactRoles] = {};
+};
+
 // Updates `c` and its force on the gridpoint (c.fx, c.fy) from the node positions, origin + u,
 // and velocities `v`; returns the overlap, how far the
 // gridpoint is inside the edge's block [m] (negative: a gap). `edges`: all of them (the edge is
 // edges[c.edge]; past a corner its neighbour matters too). Adds what it dissipates to `lost`.
+// With `pushing`, a contact whose length follows its facing length puts there the force that
+// gives (LengthPush; the caller's, zeroed).
 [[gnu::always_inline]] inline double contact_force(Contact& c, const ContactEdge* edges, const JointParams& p,
                                                    const double* origin, const double* u,
-                                                   const double* v, double dt, ContactLoss& lost) {
+                                                   const double* v, double dt, ContactLoss& lost,
+                                                   LengthPush* pushing = nullptr) {
   const ContactEdge& e = edges[c.edge];
   const size_t n = static_cast<size_t>(c.node), a = static_cast<size_t>(e.a), b = static_cast<size_t>(e.b);
   const auto x = [&](size_t dof) { return origin[dof] + u[dof]; };
@@ -120,6 +131,19 @@ inline double stored_in(const Contact& c, const JointParams& p) {
   const double px = x(2 * n) - xa, py = x(2 * n + 1) - ya;
   const double len = std::sqrt(dx * dx + dy * dy);
   double sx = dx / len, sy = dy / len;  // along the edge
+  // The length last cycle's force was found over, then this cycle's as the gridpoint's edges
+  // face the edge now (facing_length.hpp).
+  const double length_before = last_carrying_length(c);
+  double facing = 0.0;
+  FacingSlope facing_slope;
+  if (c.per_facing > 0.0) {
+    const size_t fa = static_cast<size_t>(c.far_a), fb = static_cast<size_t>(c.far_b);
+    const FacingNodes nodes{{x(2 * n), x(2 * n + 1)}, {x(2 * fa), x(2 * fa + 1)}, {x(2 * fb), x(2 * fb + 1)},
+                            {xa, ya},                 {x(2 * b), x(2 * b + 1)},   e.corner_a,
+                            e.corner_b};
+    facing = facing_length(nodes, pushing ? &facing_slope : nullptr);
+    c.length = c.per_facing * facing;
+  }
   double nx = sy, ny = -sx;             // out of the edge's block
   const double t_line = (px * sx + py * sy) / len;
   const double t = std::clamp(t_line, 0.0, 1.0);
@@ -166,6 +190,7 @@ inline double stored_in(const Contact& c, const JointParams& p) {
   // starts and ends level (a smooth step over the span), so the push below it gives is nothing
   // on the corner, whichever side of it round-off puts the gridpoint.
   double share = 1.0, fade_slope = 0.0;  // the share, and its fall a metre further out
+  double fade_by_length = 0.0;  // its rise as a span set by the length grows [1/m]
   const double fade = std::max(c.length, c.wedge * c.limit);  // a tip's: at its deepest
   const bool past = (t_line < 0.0 && e.corner_a) || (t_line > 1.0 && e.corner_b);
   if (past) {
@@ -173,6 +198,7 @@ inline double stored_in(const Contact& c, const JointParams& p) {
     const double out = fade > 0.0 ? std::min(1.0, beyond / (2.0 * fade)) : 1.0;  // of the span
     share = 1.0 - out * out * (3.0 - 2.0 * out);
     fade_slope = out < 1.0 ? 6.0 * out * (1.0 - out) / (2.0 * fade) : 0.0;
+    if (fade == c.length) fade_by_length = 2.0 * fade_slope * out;
   }
   const double fade_share = share;
   // Past the corner the far extension of this edge's line must not press in a gridpoint that
@@ -213,7 +239,6 @@ inline double stored_in(const Contact& c, const JointParams& p) {
   const double dus = (rvx * sx + rvy * sy) * dt;
   // The state the last step left, for what this one dissipates.
   const double closure_before = c.closure, sn_before = c.sn, fs_before = c.fs;
-  const double length_before = last_carrying_length(c);
   const bool open_before = c.state == ContactState::open, intact_before = c.intact;
   c.t = t;
   c.share = share;
@@ -291,6 +316,20 @@ inline double stored_in(const Contact& c, const JointParams& p) {
     const double push = stored_in(c, p) / share * fade_slope * (t_line < 0.0 ? -1.0 : 1.0);
     c.fx += push * sx;
     c.fy += push * sy;
+  }
+  // Its energy is its length times what it stores per metre, at the closure and shear stress it
+  // has: where the length is its own (not a tip's grown past it), the slope of that energy with
+  // its facing length pushes the nodes that set it. Without it the energy a turning gridpoint's,
+  // or one sliding past a corner, gains or loses with its length would come from nowhere.
+  if (pushing && facing > 0.0 && c.length >= c.wedge * std::clamp(-gap, 0.0, c.limit)) {
+    const double stored = stored_in(c, p);
+    double w = stored / facing;  // [J/m per m of facing length]
+    // Past a corner the span its share fades over is its length, which the facing length sets.
+    if (past && share > 0.0 && share == fade_share) w += stored / share * fade_by_length * c.per_facing;
+    const double* slopes[kContactRoles] = {facing_slope.p, facing_slope.a, facing_slope.b, facing_slope.far_a,
+                                           facing_slope.far_b};
+    for (int role = 0; role < kContactRoles; ++role)
+      for (int k = 0; k < 2; ++k) pushing->on[2 * role + k] = -w * slopes[role][k];
   }
   return -gap;
 }
