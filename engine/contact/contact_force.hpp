@@ -19,6 +19,9 @@ namespace edem {
 // of a bond broken in tension, and a cohesive shear spring's when its faces part).
 struct ContactLoss {
   double slip = 0.0, bond = 0.0;
+  // What its length's change gave or took of the energy a metre it was given (Contact::given),
+  // booked with the given stress (prestress), not paid for by its push.
+  double given = 0.0;
 };
 
 // Coulomb's limit on a contact's shear force over `length` [N/m] at normal stress `sn`: its
@@ -51,6 +54,7 @@ inline void keep_state(Contact& c, const Contact& old, const JointParams& p) {
   c.intact = old.intact;
   c.opened = old.opened;
   c.share = old.share;  // what its next cycle finds the length it had by
+  c.given = old.given;
   const double overlap = last_overlap(old);
   const double was = carrying_length(old, overlap), now = carrying_length(c, overlap);
   const double strength = shear_strength(c, p, now);
@@ -135,6 +139,7 @@ struct LengthPush {
   // face the edge now (facing_length.hpp).
   const double length_before = last_carrying_length(c);
   double facing = 0.0;
+  const double own_length_before = c.length;
   FacingSlope facing_slope;
   if (c.per_facing > 0.0) {
     const size_t fa = static_cast<size_t>(c.far_a), fb = static_cast<size_t>(c.far_b);
@@ -322,10 +327,17 @@ struct LengthPush {
   // its facing length pushes the nodes that set it. Without it the energy a turning gridpoint's,
   // or one sliding past a corner, gains or loses with its length would come from nowhere.
   if (pushing && facing > 0.0 && c.length >= c.wedge * std::clamp(-gap, 0.0, c.limit)) {
+    // Only what it stores beyond the state it was given: a given stress, in equilibrium as given,
+    // is not pushed on; what its length changes of it goes to the given stress's account.
+    // A contact come off its given state (unloaded, opened) keeps no more of it than it stores:
+    // the given part never pulls on the nodes.
     const double stored = stored_in(c, p);
-    double w = stored / facing;  // [J/m per m of facing length]
+    if (share * c.length * c.given > stored) c.given = share * c.length > 0.0 ? stored / (share * c.length) : 0.0;
+    const double beyond = stored - share * c.length * c.given;
+    double w = beyond / facing;  // [J/m per m of facing length]
     // Past a corner the span its share fades over is its length, which the facing length sets.
-    if (past && share > 0.0 && share == fade_share) w += stored / share * fade_by_length * c.per_facing;
+    if (past && share > 0.0 && share == fade_share) w += beyond / share * fade_by_length * c.per_facing;
+    lost.given += c.given * share * (c.length - own_length_before);
     const double* slopes[kContactRoles] = {facing_slope.p, facing_slope.a, facing_slope.b, facing_slope.far_a,
                                            facing_slope.far_b};
     for (int role = 0; role < kContactRoles; ++role)

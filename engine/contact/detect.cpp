@@ -709,6 +709,12 @@ void book_prestress(Mechanics& m, const ContactEnergy& now, const ContactEnergy&
   }
 }
 
+// What a contact stores a metre of the length that carries it [J/m^2].
+double stored_per_metre(const Contact& c, const JointParams& p) {
+  const double length = last_carrying_length(c);
+  return length > 0.0 ? stored_in(c, p) / length : 0.0;
+}
+
 // Books what a contact's energy changed by, from `had` to `now`, as taken away with rock dug out
 // (at the last booked point too, as book_prestress does).
 void book_taken_away(Mechanics& m, const ContactEnergy& now, const ContactEnergy& had) {
@@ -906,6 +912,7 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
         if (const Contact* from = loaded.nearest(m, c.block, c.other, at(m, c.node), f.normal, within)) {
           inherit_faces(m, c, p, *from, f.gap, s);
           book_prestress(m, contact_energy(c, p), {});
+          c.given = stored_per_metre(c, p);
         }
       }
       if (given) {
@@ -921,6 +928,7 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
         if (c.state == ContactState::open && c.sn != 0.0) c.state = c.intact ? ContactState::bonded : ContactState::elastic;
         // What the given stress stores in it is the stress's, not the method's: booked as such.
         book_prestress(m, contact_energy(c, p), had);
+        c.given = stored_per_metre(c, p);
       }
       if (booking) {
         ContactBook book = kept ? set.books[static_cast<size_t>(old - set.list.begin())] : ContactBook{};

@@ -129,13 +129,14 @@ template <class Ar> void fields(Ar& ar, Contact& c) {
   ar("far_a", c.far_a);
   ar("far_b", c.far_b);
   ar("per_facing", c.per_facing);
+  ar("given", c.given);
 }
 // Older schema-1 files may lack these, read then at their defaults: a tip's own length (such
 // files have no tips), the leads_past flags (their tips fade past any corner), a softening
 // bond's opening (they have no softening bonds) and the facing a length follows (theirs hold
 // the length found until the next detection).
 std::vector<const char*> later_members(const Contact*) {
-  return {"wedge", "leads_past_a", "leads_past_b", "opened", "far_a", "far_b", "per_facing"};
+  return {"wedge", "leads_past_a", "leads_past_b", "opened", "far_a", "far_b", "per_facing", "given"};
 }
 template <class Ar> void fields(Ar& ar, ContactSet& s) {
   ar("list", s.list); ar("gather_first", s.gather_first); ar("gather", s.gather); ar("rows", s.rows);

@@ -249,7 +249,8 @@ void book_contact(const Mechanics& m, const Contact& c, const JointParams& p, do
   book.nodes[0] = c.node, book.nodes[1] = e.a, book.nodes[2] = e.b;
   book.nodes[3] = c.far_a, book.nodes[4] = c.far_b;
   work += half_step_work(book, m.v.data(), m.step);  // this one's
-  book.made += stored_in(c, p) - before + (lost.slip - lost_before.slip) + (lost.bond - lost_before.bond) + work;
+  book.made += stored_in(c, p) - before + (lost.slip - lost_before.slip) + (lost.bond - lost_before.bond) -
+               (lost.given - lost_before.given) + work;
 }
 
 // Forces of contacts [begin, end), `begin` starting a chunk; the nodes gather them in their own
@@ -286,6 +287,7 @@ void contact_pass(Mechanics& m, int begin, int end, Partials& partials) {
     const size_t chunk = static_cast<size_t>(first / kChunk);
     partials.contact_loss[chunk].slip += lost.slip;
     partials.contact_loss[chunk].bond += lost.bond;
+    partials.contact_loss[chunk].given += lost.given;
     if constexpr (kMeasure) {
       partials.contact_applied[chunk] = applied;
       partials.contact_overlapping[chunk] = overlapping;
@@ -577,6 +579,7 @@ Measure run_cycles(Mechanics& m, int count) {
   for (const ContactLoss& lost : partials.contact_loss) {
     energy.slip += lost.slip;
     energy.bond += lost.bond;
+    energy.prestress += lost.given;
   }
   for (const NodeWork& work : partials.work) {
     energy.by_contacts += work.contacts;

@@ -111,6 +111,10 @@ struct Contact {
   // detections. 0: held as found (a gridpoint where glued blocks meet, with more own edges).
   int far_a = -1, far_b = -1;
   double per_facing = 0.0;
+  // What it stored a metre in the state it was given (insitu{}, a fresh crack's traction, a loaded
+  // joint's faces) [J/m^2]: its length's push pays only for what it stores beyond that, the rest
+  // is the given stress's (contact_force.hpp).
+  double given = 0.0;
   double wedge = 0.0;  // a tip's length per unit overlap (0: not a tip) [-]
   double limit = 0.0;  // the gridpoint's reach: how deep a tip's length grows, where its corners fade [m]
   double t = 0.0;      // where the gridpoint projects on the edge, 0 at a, 1 at b
