@@ -290,8 +290,8 @@ struct LengthPush {
   }
   const double ks = p.ks * length;
   // Its length changes past a corner or as a tip sinks: it keeps its shear stress, as its normal
-  // stress keeps to its closure (the energy the change gives or takes is the method's, and the
-  // energy balance shows it).
+  // stress keeps to its closure (what that changes in its energy the length's push below pays
+  // for a length the facing length sets; a tip's is the method's, and the balance shows it).
   const double fs_start = length_before > 0.0 ? fs_before * (length / length_before) : 0.0;
   const double trial = fs_start - ks * dus;
   const double cohesion =
@@ -330,14 +330,19 @@ struct LengthPush {
     // Only what it stores beyond the state it was given: a given stress, in equilibrium as given,
     // is not pushed on; what its length changes of it goes to the given stress's account.
     // A contact come off its given state (unloaded, opened) keeps no more of it than it stores:
-    // the given part never pulls on the nodes.
+    // its length's push never pulls to lengthen it.
     const double stored = stored_in(c, p);
     if (share * c.length * c.given > stored) c.given = share * c.length > 0.0 ? stored / (share * c.length) : 0.0;
     const double beyond = stored - share * c.length * c.given;
     double w = beyond / facing;  // [J/m per m of facing length]
     // Past a corner the span its share fades over is its length, which the facing length sets.
-    if (past && share > 0.0 && share == fade_share) w += beyond / share * fade_by_length * c.per_facing;
-    lost.given += c.given * share * (c.length - own_length_before);
+    // The given part's change with the length, its share's span included.
+    double given_by_length = c.given * share;
+    if (past && share > 0.0 && share == fade_share) {
+      w += beyond / share * fade_by_length * c.per_facing;
+      given_by_length += c.given * c.length * fade_by_length;
+    }
+    lost.given += given_by_length * (c.length - own_length_before);
     const double* slopes[kContactRoles] = {facing_slope.p, facing_slope.a, facing_slope.b, facing_slope.far_a,
                                            facing_slope.far_b};
     for (int role = 0; role < kContactRoles; ++role)

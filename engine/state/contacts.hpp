@@ -12,9 +12,10 @@
 // Between detections the length follows where the nodes are: it is held in proportion to the
 // facing length, what the gridpoint's half-edges give over the face's line, clipped at its
 // convex corners (facing_length.hpp), and the slope of the contact's stored energy with that
-// length pushes the nodes that set it (contact_force.hpp). A contact found again finds the length
-// it already has, and what a turn of the blocks (at an oblique corner) or a slide past a corner
-// changes in its energy, at first order, is work its force did, not a jump at the detection.
+// length pushes the nodes that set it (contact_force.hpp). A contact found again finds close to
+// the length it has (the detection walks the outline, the facing length one line), and what a
+// turn of the blocks (at an oblique corner) or a slide past a corner changes in its energy, at
+// first order, is work its force did, not a jump at the detection.
 //
 // A gridpoint at a convex corner whose edges both leave the other block's face (a tip driven in
 // point first) has almost no such length, yet its boundary crosses the face over a chord that

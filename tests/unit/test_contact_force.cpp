@@ -331,6 +331,7 @@ TEST(ContactForce, AtTheEdgeOfARe_entrantCornersSpanTheForceIsContinuous) {
 // face's block stays put), to the round-off of the midpoint rule.
 struct Turning : Corner {
   const double d1[2] = {0.2, 0.0}, d2[2] = {0.1, 0.2};  // its edges: along the face, and rising
+  double given_booked = 0.0;  // what its length changed of its given part (ContactLoss::given)
   Turning() {
     origin.resize(12, 0.0);
     u.assign(12, 0.0);
@@ -357,6 +358,7 @@ struct Turning : Corner {
     ContactLoss lost;
     LengthPush turn;
     contact_force(contact, edges.data(), joint, origin.data(), u.data(), v.data(), 1e-4, lost, &turn);
+    given_booked += lost.given;
     return {contact.fx + turn.on[0], contact.fy + turn.on[1], turn.on[6], turn.on[7], turn.on[8], turn.on[9]};
   }
   // The work of those forces from (x0, angle0) to (x1, angle1), and the stored energy's change.
@@ -401,6 +403,22 @@ TEST(ContactForce, AGridpointSlidingPastACornerStoresTheWorkOfThePush) {
   EXPECT_LT(change, 0.0);
   // (The midpoint rule errs by a step's worth where a half-edge's end crosses the corner.)
   EXPECT_NEAR(work, -change, 1e-3 * std::fabs(change));
+}
+
+// Given half of what it stores a metre (a given stress), slid as above: the push pays for the
+// rest, and what the length, and the span its share fades over, change of the given part is
+// booked with the given stress.
+TEST(ContactForce, SlidPastACornerTheGivenPartIsBookedAndTheRestIsWork) {
+  Turning c;
+  c.contact.fs = 0.0;
+  c.place(0.1, 0.0);
+  c.contact.length = 0.25 * (0.2 + 0.1 * 0.1 / std::hypot(0.1, 0.2));
+  c.push();
+  c.contact.given = 0.5 * stored_in(c.contact, c.joint) / c.contact.length;
+  c.given_booked = 0.0;
+  const auto [work, change] = c.move(0.1, 0.0, -0.05, 0.0, 3000);
+  EXPECT_LT(c.given_booked, 0.25 * change);  // about half of it, a loss
+  EXPECT_NEAR(work - c.given_booked, -change, 1e-3 * std::fabs(change));
 }
 
 }  // namespace
