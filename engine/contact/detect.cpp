@@ -876,7 +876,10 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
         // Its gridpoint's own boundary has changed: a crack broke at it (what that changes in its
         // length and energy goes with the crack's new faces, booked as the stress they are given
         // is), or a block that shared it was dug out (that block's part of it goes with it).
-        if (c.far_a != old->far_a || c.far_b != old->far_b) {
+        if (!set.facing_known) {
+          // Read from a file without them: what it stores is taken as given, its far ends as found.
+          c.given = stored_per_metre(c, p);
+        } else if (c.far_a != old->far_a || c.far_b != old->far_b) {
           had = contact_energy(c, p);
           const ContactEnergy before = contact_energy(*old, m.joint_params[static_cast<size_t>(old->material)]);
           if (m.fresh_cracks)
@@ -967,6 +970,7 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
   set.rows = std::move(rows);
   set.detected = true;
   set.as_built = false;
+  if (all) set.facing_known = true;
   if (with_insitu) set.from_insitu = false;
   if (m.fresh_cracks) {
     for (Section& s : m.sections) s.fresh = false;
@@ -1125,7 +1129,7 @@ bool refresh_contacts(Mechanics& m, double ahead) {
   const ContactBoundary& cb = m.faces;
   if (cb.touchable_blocks < 2) return false;  // nothing can ever touch
   const ContactSet& set = m.contacts;
-  if (!set.detected || set.as_built || set.from_insitu || m.fresh_cracks) {
+  if (!set.detected || set.as_built || set.from_insitu || m.fresh_cracks || !set.facing_known) {
     detect_contacts(m);
     return true;
   }

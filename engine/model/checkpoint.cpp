@@ -143,6 +143,7 @@ template <class Ar> void fields(Ar& ar, ContactSet& s) {
   ar("x_detected", s.x_detected); ar("detected", s.detected); ar("as_built", s.as_built);
   ar("from_insitu", s.from_insitu); ar("late", s.late); ar("searched", s.searched);
   ar("partial", s.partial);
+  optional_member(ar, "facing_known", s.facing_known, false);  // files older than it: not known
 }
 // Files written before detection was done block by block lack these (and had only full ones).
 std::vector<const char*> later_members(const ContactSet*) { return {"searched", "partial"}; }

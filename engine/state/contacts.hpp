@@ -180,6 +180,9 @@ struct ContactSet {
   bool as_built = true;              // the next detection is the first on this mesh
   bool from_insitu = false;          // the next detection sets contact forces from insitu{}
   bool partial = false;              // some blocks were found again since the last full search
+  // Its contacts' far ends and given states are known (false: read from a file without them,
+  // until the next detection takes what they store as given and their far ends as found).
+  bool facing_known = true;
   // Contacts found new but already pressed in by more than a tenth of their reach, since the
   // mesh was made: detection came too late for them (a lost contact); should stay 0.
   long late = 0;
