@@ -199,6 +199,34 @@ TEST(Bolts, CountASegmentThatBrokeAfterItIsCutAwayWithItsRock) {
   )lua");
 }
 
+// A bolt laid after the model has cycled (as a cavern's step is bolted once it is solved) and
+// saved before the next cycle: the checkpoint restores, and cycling goes on from it as from the
+// model it was saved from.
+TEST(Bolts, LaidAfterCyclingAreSavedAndRestoredBeforeTheNextCycle) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, std::string(kBolted) + R"lua(
+    set{ damping = "adaptive" }
+    solve{ ratio = 1e-5 }
+    bolt{ from = {0.5, 1.6}, to = {3.0, 1.8}, segments = 10, material = "rebar" }
+    local file = os.tmpname()
+    save(file .. ".h5")
+    cycle(50)
+    local went_on = {}
+    for g in gridpoints() do went_on[g.id] = g.uy end
+    restore(file .. ".h5")
+    os.remove(file .. ".h5")
+    os.remove(file)
+    local n = 0
+    for _ in bolts() do n = n + 1 end
+    assert(n == 2, ("%d bolts restored, 2 saved"):format(n))
+    cycle(50)
+    for g in gridpoints() do
+      assert(g.uy == went_on[g.id], ("gridpoint %d: uy %.17g restored, %.17g as saved"):format(g.id, g.uy, went_on[g.id]))
+    end
+  )lua");
+}
+
 // The cut is applied when the model is next prepared, but a head dug out by an excavate{} just
 // before is gone already: a drive given to it then is refused too, not dropped at the next cycle.
 TEST(Bolts, RefuseADriveOnAHeadDugOutBeforeAnyCycle) {
