@@ -222,7 +222,8 @@ TEST(Bolts, LaidAfterCyclingAreSavedAndRestoredBeforeTheNextCycle) {
     assert(n == 2, ("%d bolts restored, 2 saved"):format(n))
     cycle(50)
     for g in gridpoints() do
-      assert(g.uy == went_on[g.id], ("gridpoint %d: uy %.17g restored, %.17g as saved"):format(g.id, g.uy, went_on[g.id]))
+      assert(g.uy == went_on[g.id],
+             ("gridpoint %d: uy %.17g restored, %.17g as saved"):format(g.id, g.uy, went_on[g.id]))
     end
   )lua");
 }
