@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "state/contacts.hpp"
+#include "contact/facing_length.hpp"
 #include "contact/joint_law.hpp"
 #include "contact/past_the_end.hpp"
 
@@ -18,6 +19,9 @@ namespace edem {
 // of a bond broken in tension, and a cohesive shear spring's when its faces part).
 struct ContactLoss {
   double slip = 0.0, bond = 0.0;
+  // What its length's change gave or took of the energy a metre it was given (Contact::given),
+  // booked with the given stress (prestress), not paid for by its push.
+  double given = 0.0;
 };
 
 // Coulomb's limit on a contact's shear force over `length` [N/m] at normal stress `sn`: its
@@ -50,6 +54,7 @@ inline void keep_state(Contact& c, const Contact& old, const JointParams& p) {
   c.intact = old.intact;
   c.opened = old.opened;
   c.share = old.share;  // what its next cycle finds the length it had by
+  c.given = old.given;
   const double overlap = last_overlap(old);
   const double was = carrying_length(old, overlap), now = carrying_length(c, overlap);
   const double strength = shear_strength(c, p, now);
@@ -105,13 +110,23 @@ inline double stored_in(const Contact& c, const JointParams& p) {
   return e.normal + e.shear;
 }
 
+// The force a contact whose length follows its facing length (Contact::per_facing) gives its
+// nodes as they move: its stored energy's slope with respect to their positions, at its closure
+// and shear stress [N/m], by role (kContactRoles, x and y each).
+struct LengthPush {
+  double on[2 * kContactRoles] = {};
+};
+
 // Updates `c` and its force on the gridpoint (c.fx, c.fy) from the node positions, origin + u,
 // and velocities `v`; returns the overlap, how far the
 // gridpoint is inside the edge's block [m] (negative: a gap). `edges`: all of them (the edge is
 // edges[c.edge]; past a corner its neighbour matters too). Adds what it dissipates to `lost`.
+// With `pushing`, a contact whose length follows its facing length puts there the force that
+// gives (LengthPush; the caller's, zeroed).
 [[gnu::always_inline]] inline double contact_force(Contact& c, const ContactEdge* edges, const JointParams& p,
                                                    const double* origin, const double* u,
-                                                   const double* v, double dt, ContactLoss& lost) {
+                                                   const double* v, double dt, ContactLoss& lost,
+                                                   LengthPush* pushing = nullptr) {
   const ContactEdge& e = edges[c.edge];
   const size_t n = static_cast<size_t>(c.node), a = static_cast<size_t>(e.a), b = static_cast<size_t>(e.b);
   const auto x = [&](size_t dof) { return origin[dof] + u[dof]; };
@@ -120,6 +135,20 @@ inline double stored_in(const Contact& c, const JointParams& p) {
   const double px = x(2 * n) - xa, py = x(2 * n + 1) - ya;
   const double len = std::sqrt(dx * dx + dy * dy);
   double sx = dx / len, sy = dy / len;  // along the edge
+  // The length last cycle's force was found over, then this cycle's as the gridpoint's edges
+  // face the edge now (facing_length.hpp).
+  const double length_before = last_carrying_length(c);
+  double facing = 0.0;
+  const double own_length_before = c.length;
+  FacingSlope facing_slope;
+  if (c.per_facing > 0.0) {
+    const size_t fa = static_cast<size_t>(c.far_a), fb = static_cast<size_t>(c.far_b);
+    const FacingNodes nodes{{x(2 * n), x(2 * n + 1)}, {x(2 * fa), x(2 * fa + 1)}, {x(2 * fb), x(2 * fb + 1)},
+                            {xa, ya},                 {x(2 * b), x(2 * b + 1)},   e.corner_a,
+                            e.corner_b};
+    facing = facing_length(nodes, pushing ? &facing_slope : nullptr);
+    c.length = c.per_facing * facing;
+  }
   double nx = sy, ny = -sx;             // out of the edge's block
   const double t_line = (px * sx + py * sy) / len;
   const double t = std::clamp(t_line, 0.0, 1.0);
@@ -166,6 +195,7 @@ inline double stored_in(const Contact& c, const JointParams& p) {
   // starts and ends level (a smooth step over the span), so the push below it gives is nothing
   // on the corner, whichever side of it round-off puts the gridpoint.
   double share = 1.0, fade_slope = 0.0;  // the share, and its fall a metre further out
+  double fade_by_length = 0.0;  // its rise as a span set by the length grows [1/m]
   const double fade = std::max(c.length, c.wedge * c.limit);  // a tip's: at its deepest
   const bool past = (t_line < 0.0 && e.corner_a) || (t_line > 1.0 && e.corner_b);
   if (past) {
@@ -173,6 +203,7 @@ inline double stored_in(const Contact& c, const JointParams& p) {
     const double out = fade > 0.0 ? std::min(1.0, beyond / (2.0 * fade)) : 1.0;  // of the span
     share = 1.0 - out * out * (3.0 - 2.0 * out);
     fade_slope = out < 1.0 ? 6.0 * out * (1.0 - out) / (2.0 * fade) : 0.0;
+    if (fade == c.length) fade_by_length = 2.0 * fade_slope * out;
   }
   const double fade_share = share;
   // Past the corner the far extension of this edge's line must not press in a gridpoint that
@@ -213,7 +244,6 @@ inline double stored_in(const Contact& c, const JointParams& p) {
   const double dus = (rvx * sx + rvy * sy) * dt;
   // The state the last step left, for what this one dissipates.
   const double closure_before = c.closure, sn_before = c.sn, fs_before = c.fs;
-  const double length_before = last_carrying_length(c);
   const bool open_before = c.state == ContactState::open, intact_before = c.intact;
   c.t = t;
   c.share = share;
@@ -260,8 +290,8 @@ inline double stored_in(const Contact& c, const JointParams& p) {
   }
   const double ks = p.ks * length;
   // Its length changes past a corner or as a tip sinks: it keeps its shear stress, as its normal
-  // stress keeps to its closure (the energy the change gives or takes is the method's, and the
-  // energy balance shows it).
+  // stress keeps to its closure (what that changes in its energy the length's push below pays
+  // for a length the facing length sets; a tip's is the method's, and the balance shows it).
   const double fs_start = length_before > 0.0 ? fs_before * (length / length_before) : 0.0;
   const double trial = fs_start - ks * dus;
   const double cohesion =
@@ -291,6 +321,32 @@ inline double stored_in(const Contact& c, const JointParams& p) {
     const double push = stored_in(c, p) / share * fade_slope * (t_line < 0.0 ? -1.0 : 1.0);
     c.fx += push * sx;
     c.fy += push * sy;
+  }
+  // Its energy is its length times what it stores per metre, at the closure and shear stress it
+  // has: where the length is its own (not a tip's grown past it), the slope of that energy with
+  // its facing length pushes the nodes that set it. Without it the energy a turning gridpoint's,
+  // or one sliding past a corner, gains or loses with its length would come from nowhere.
+  if (pushing && facing > 0.0 && c.length >= c.wedge * std::clamp(-gap, 0.0, c.limit)) {
+    // Only what it stores beyond the state it was given: a given stress, in equilibrium as given,
+    // is not pushed on; what its length changes of it goes to the given stress's account.
+    // A contact come off its given state (unloaded, opened) keeps no more of it than it stores:
+    // its length's push never pulls to lengthen it.
+    const double stored = stored_in(c, p);
+    if (share * c.length * c.given > stored) c.given = share * c.length > 0.0 ? stored / (share * c.length) : 0.0;
+    const double beyond = stored - share * c.length * c.given;
+    double w = beyond / facing;  // [J/m per m of facing length]
+    // Past a corner the span its share fades over is its length, which the facing length sets.
+    // The given part's change with the length, its share's span included.
+    double given_by_length = c.given * share;
+    if (past && share > 0.0 && share == fade_share) {
+      w += beyond / share * fade_by_length * c.per_facing;
+      given_by_length += c.given * c.length * fade_by_length;
+    }
+    lost.given += given_by_length * (c.length - own_length_before);
+    const double* slopes[kContactRoles] = {facing_slope.p, facing_slope.a, facing_slope.b, facing_slope.far_a,
+                                           facing_slope.far_b};
+    for (int role = 0; role < kContactRoles; ++role)
+      for (int k = 0; k < 2; ++k) pushing->on[2 * role + k] = -w * slopes[role][k];
   }
   return -gap;
 }

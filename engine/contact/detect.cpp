@@ -14,6 +14,7 @@
 
 #include "contact/contact_force.hpp"
 #include "contact/edge_choice.hpp"
+#include "contact/facing_length.hpp"
 #include "core/error.hpp"
 #include "geom/polygon.hpp"
 #include "state/insitu.hpp"
@@ -255,6 +256,12 @@ std::optional<Stress> traction_source(const Mechanics& m, int edge, Vec2 point, 
   if (with_insitu) return insitu_here(m, point);
   return std::nullopt;
 }
+
+// A contact's length per unit facing length is 1 where its half-edges lie over one straight face;
+// a face that bends on, or turns at a blunt corner its half-edge reaches past, can give more
+// (covered_length measures along each edge, facing_length along the first one's line). Larger,
+// the length was not theirs.
+constexpr double kMostPerFacing = 1.25;
 
 // How far an edge at a corner may turn into a face and still count as along it: sin 10 deg [-].
 constexpr double kAlongFace = 0.17364817766693033;
@@ -702,6 +709,23 @@ void book_prestress(Mechanics& m, const ContactEnergy& now, const ContactEnergy&
   }
 }
 
+// What a contact stores a metre of the length that carries it [J/m^2].
+double stored_per_metre(const Contact& c, const JointParams& p) {
+  const double length = last_carrying_length(c);
+  return length > 0.0 ? stored_in(c, p) / length : 0.0;
+}
+
+// Books what a contact's energy changed by, from `had` to `now`, as taken away with rock dug out
+// (at the last booked point too, as book_prestress does).
+void book_taken_away(Mechanics& m, const ContactEnergy& now, const ContactEnergy& had) {
+  m.energy.excavated.normal += had.normal - now.normal;
+  m.energy.excavated.shear += had.shear - now.shear;
+  if (m.energy.last_current) {
+    m.energy.last.normal += now.normal - had.normal;
+    m.energy.last.shear += now.shear - had.shear;
+  }
+}
+
 // A new contact `c` (its gridpoint at `gap` from its edge, whose direction is `s`) takes the
 // state of the faces `from` presses together: their closure at zero gap (the prestress they carry
 // beyond their real overlap: the new contact's own real overlap adds to it) and their shear
@@ -735,6 +759,33 @@ void cap_at_peak(Contact& c, const JointParams& p, double length) {
   c.sn = std::max(c.sn, -p.tension);
   const double limit = shear_limit(c, p, c.sn, p.cohesion, length);
   c.fs = std::clamp(c.fs, -limit, limit);
+}
+
+// Lets a contact's length follow its facing length between detections (facing_length.hpp,
+// Contact::per_facing): the ends of the gridpoint's own edges, and its length per unit facing
+// length now. Only a gridpoint with just two own edges, one on each side of it along its loop,
+// and a length its half-edges gave (up to kMostPerFacing times the facing length); one where glued
+// blocks meet, or one keeping its length while its edges turn away (keep_pressed), keeps the length
+// found.
+void follow_facing(const Mechanics& m, size_t k, Contact& c) {
+  const ContactBoundary& cb = m.faces;
+  int before = -1, after = -1, own = 0;
+  for (int i = cb.edge_first[k]; i < cb.edge_first[k + 1]; ++i) {
+    const ContactEdge& e = cb.edges[static_cast<size_t>(cb.node_edges[static_cast<size_t>(i)])];
+    if (!m.block_live[static_cast<size_t>(e.block)]) continue;
+    ++own;
+    if (e.b == c.node) before = e.a;
+    if (e.a == c.node) after = e.b;
+  }
+  if (own != 2 || before < 0 || after < 0) return;
+  c.far_a = before;
+  c.far_b = after;
+  if (!(c.length > 0.0)) return;
+  const ContactEdge& edge = cb.edges[static_cast<size_t>(c.edge)];
+  const Vec2 p = at(m, c.node), fa = at(m, before), fb = at(m, after), a = at(m, edge.a), b = at(m, edge.b);
+  const FacingNodes nodes{{p.x, p.y}, {fa.x, fa.y}, {fb.x, fb.y}, {a.x, a.y}, {b.x, b.y}, edge.corner_a, edge.corner_b};
+  const double facing = facing_length(nodes, nullptr);
+  if (facing > 0.0 && c.length <= kMostPerFacing * facing) c.per_facing = c.length / facing;
 }
 
 // How far from a gridpoint its contacts are looked for, at most [m].
@@ -800,6 +851,7 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
       c.leads_past_b = f.leads_past_b;
       c.t = f.t;
       c.limit = cb.reach[k];
+      follow_facing(m, k, c);
       const ContactEdge& edge = cb.edges[static_cast<size_t>(f.edge)];
       c.material = edge.material;
       if (c.material < 0)  // the gridpoint's own side may have one
@@ -817,8 +869,24 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
         return x.node != y.node ? x.node < y.node : x.other < y.other;
       });
       const bool kept = old != set.list.end() && old->node == c.node && old->other == c.other;
+      // What it stores as a stress given below finds it, for the prestress that stress adds.
+      ContactEnergy had = kept ? contact_energy(*old, m.joint_params[static_cast<size_t>(old->material)]) : ContactEnergy{};
       if (kept) {
         keep_state(c, *old, p);
+        // Its gridpoint's own boundary has changed: a crack broke at it (what that changes in its
+        // length and energy goes with the crack's new faces, booked as the stress they are given
+        // is), or a block that shared it was dug out (that block's part of it goes with it).
+        if (!set.facing_known) {
+          // Read from a file without them: what it stores is taken as given, its far ends as found.
+          c.given = stored_per_metre(c, p);
+        } else if (c.far_a != old->far_a || c.far_b != old->far_b) {
+          had = contact_energy(c, p);
+          const ContactEnergy before = contact_energy(*old, m.joint_params[static_cast<size_t>(old->material)]);
+          if (m.fresh_cracks)
+            book_prestress(m, had, before);
+          else
+            book_taken_away(m, had, before);
+        }
       } else {
         // Already pressed in, and nothing held this gridpoint back before: it went into the other
         // block unseen. (At a junction a gridpoint held by one block may turn to its neighbour:
@@ -847,6 +915,7 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
         if (const Contact* from = loaded.nearest(m, c.block, c.other, at(m, c.node), f.normal, within)) {
           inherit_faces(m, c, p, *from, f.gap, s);
           book_prestress(m, contact_energy(c, p), {});
+          c.given = stored_per_metre(c, p);
         }
       }
       if (given) {
@@ -861,53 +930,47 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
         c.dilation = c.us = c.slip = c.opened = 0.0;
         if (c.state == ContactState::open && c.sn != 0.0) c.state = c.intact ? ContactState::bonded : ContactState::elastic;
         // What the given stress stores in it is the stress's, not the method's: booked as such.
-        book_prestress(m, contact_energy(c, p), kept ? contact_energy(*old, p) : ContactEnergy{});
+        book_prestress(m, contact_energy(c, p), had);
+        c.given = stored_per_metre(c, p);
       }
       if (booking) {
         ContactBook book = kept ? set.books[static_cast<size_t>(old - set.list.begin())] : ContactBook{};
-        const double had = kept ? stored_in(*old, m.joint_params[static_cast<size_t>(old->material)]) : 0.0;
-        book.made += stored_in(c, p) - had - (m.energy.prestress - prestress_before);
+        const double stored = kept ? stored_in(*old, m.joint_params[static_cast<size_t>(old->material)]) : 0.0;
+        book.made += stored_in(c, p) - stored - (m.energy.prestress - prestress_before);
         books.push_back(book);
       }
       list.push_back(c);
     }
   }
 
-  // The forces each node takes, in contact order; and the stiffness rows.
+  // The stiffness rows.
   const size_t nodes = static_cast<size_t>(m.node_count);
-  std::vector<int> first_slot(nodes + 1, 0);
+  std::vector<double> rows(nodes, 0.0);
   for (const Contact& c : list) {
     const ContactEdge& e = cb.edges[static_cast<size_t>(c.edge)];
-    ++first_slot[static_cast<size_t>(c.node) + 1];
-    ++first_slot[static_cast<size_t>(e.a) + 1];
-    ++first_slot[static_cast<size_t>(e.b) + 1];
-  }
-  for (size_t n = 0; n < nodes; ++n) first_slot[n + 1] += first_slot[n];
-  std::vector<int> gather(static_cast<size_t>(first_slot[nodes]));
-  std::vector<int> fill(first_slot.begin(), first_slot.end() - 1);
-  std::vector<double> rows(nodes, 0.0);
-  for (size_t i = 0; i < list.size(); ++i) {
-    const Contact& c = list[i];
-    const ContactEdge& e = cb.edges[static_cast<size_t>(c.edge)];
-    const int id = static_cast<int>(i);
-    gather[static_cast<size_t>(fill[static_cast<size_t>(c.node)]++)] = 3 * id;
-    gather[static_cast<size_t>(fill[static_cast<size_t>(e.a)]++)] = 3 * id + 1;
-    gather[static_cast<size_t>(fill[static_cast<size_t>(e.b)]++)] = 3 * id + 2;
     const JointParams& p = m.joint_params[static_cast<size_t>(c.material)];
     // A tip's force grows as its overlap squared: twice the stiffness of its length at the limit.
     const double k = kRowBound * (p.kn_max + p.ks) * std::max(c.length, 2.0 * c.wedge * c.limit);
     rows[static_cast<size_t>(c.node)] += 2.0 * k;
     rows[static_cast<size_t>(e.a)] += 2.0 * (1.0 - c.t) * k;
     rows[static_cast<size_t>(e.b)] += 2.0 * c.t * k;
+    if (c.per_facing > 0.0 && c.length > 0.0) {
+      // The push that pays for its length's changes (contact_force.hpp) stiffens it as well: by
+      // its normal stress, and by its energy per metre over the shorter of its half-edges.
+      const Vec2 q = at(m, c.node);
+      const double half = 0.5 * std::min(norm(q - at(m, c.far_a)), norm(at(m, c.far_b) - q));
+      const double turn = kRowBound * c.per_facing * (std::fabs(c.sn) + stored_in(c, p) / c.length / half);
+      for (const int node : {c.node, e.a, e.b, c.far_a, c.far_b}) rows[static_cast<size_t>(node)] += 2.0 * turn;
+    }
   }
   set.list = std::move(list);
   if (booking) set.books = std::move(books);
   set.late += late;
-  set.gather_first = std::move(first_slot);
-  set.gather = std::move(gather);
+  gather_contact_forces(set, cb, m.node_count);
   set.rows = std::move(rows);
   set.detected = true;
   set.as_built = false;
+  if (all) set.facing_known = true;
   if (with_insitu) set.from_insitu = false;
   if (m.fresh_cracks) {
     for (Section& s : m.sections) s.fresh = false;
@@ -1017,6 +1080,30 @@ void mark_glued_tips(ContactBoundary& cb, const std::vector<double>& position) {
   }
 }
 
+void gather_contact_forces(ContactSet& set, const ContactBoundary& cb, int node_count) {
+  const size_t nodes = static_cast<size_t>(node_count);
+  const auto roles = [&](const Contact& c) {
+    const ContactEdge& e = cb.edges[static_cast<size_t>(c.edge)];
+    return std::array<int, kContactRoles>{c.node, e.a, e.b, c.far_a, c.far_b};
+  };
+  std::vector<int> first_slot(nodes + 1, 0);
+  for (const Contact& c : set.list)
+    for (const int node : roles(c))
+      if (node >= 0) ++first_slot[static_cast<size_t>(node) + 1];
+  for (size_t n = 0; n < nodes; ++n) first_slot[n + 1] += first_slot[n];
+  std::vector<int> gather(static_cast<size_t>(first_slot[nodes]));
+  std::vector<int> fill(first_slot.begin(), first_slot.end() - 1);
+  for (size_t i = 0; i < set.list.size(); ++i) {
+    const std::array<int, kContactRoles> node = roles(set.list[i]);
+    for (int role = 0; role < kContactRoles; ++role)
+      if (node[static_cast<size_t>(role)] >= 0)
+        gather[static_cast<size_t>(fill[static_cast<size_t>(node[static_cast<size_t>(role)])]++)] =
+            kContactRoles * static_cast<int>(i) + role;
+  }
+  set.gather_first = std::move(first_slot);
+  set.gather = std::move(gather);
+}
+
 double median_edge_length(const ContactBoundary& cb, const std::vector<double>& position) {
   std::vector<double> lengths;
   for (const ContactEdge& e : cb.edges)
@@ -1042,7 +1129,7 @@ bool refresh_contacts(Mechanics& m, double ahead) {
   const ContactBoundary& cb = m.faces;
   if (cb.touchable_blocks < 2) return false;  // nothing can ever touch
   const ContactSet& set = m.contacts;
-  if (!set.detected || set.as_built || set.from_insitu || m.fresh_cracks) {
+  if (!set.detected || set.as_built || set.from_insitu || m.fresh_cracks || !set.facing_known) {
     detect_contacts(m);
     return true;
   }

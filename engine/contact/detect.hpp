@@ -40,6 +40,10 @@ void assign_joint_materials(Mechanics& m);
 // a contact forms on an edge without a joint material.
 void detect_contacts(Mechanics& m);
 
+// Rebuilds set.gather_first and set.gather from its list: the forces each of the node_count
+// nodes takes, by contact and role (kContactRoles), in contact order.
+void gather_contact_forces(ContactSet& set, const ContactBoundary& cb, int node_count);
+
 // The contacts a detection would find now, found on a copy of m: m is left as it is (a view from
 // a callback or a field-output frame must not change the run). Throws edem::Error as prepare()
 // and detect_contacts() do (model_contacts.cpp).

@@ -126,18 +126,24 @@ template <class Ar> void fields(Ar& ar, Contact& c) {
   ar("leads_past_a", c.leads_past_a);
   ar("leads_past_b", c.leads_past_b);
   ar("opened", c.opened);
+  ar("far_a", c.far_a);
+  ar("far_b", c.far_b);
+  ar("per_facing", c.per_facing);
+  ar("given", c.given);
 }
 // Older schema-1 files may lack these, read then at their defaults: a tip's own length (such
-// files have no tips), the leads_past flags (their tips fade past any corner) and a softening
-// bond's opening (they have no softening bonds).
+// files have no tips), the leads_past flags (their tips fade past any corner), a softening
+// bond's opening (they have no softening bonds) and the facing a length follows (theirs hold
+// the length found until the next detection).
 std::vector<const char*> later_members(const Contact*) {
-  return {"wedge", "leads_past_a", "leads_past_b", "opened"};
+  return {"wedge", "leads_past_a", "leads_past_b", "opened", "far_a", "far_b", "per_facing", "given"};
 }
 template <class Ar> void fields(Ar& ar, ContactSet& s) {
   ar("list", s.list); ar("gather_first", s.gather_first); ar("gather", s.gather); ar("rows", s.rows);
   ar("x_detected", s.x_detected); ar("detected", s.detected); ar("as_built", s.as_built);
   ar("from_insitu", s.from_insitu); ar("late", s.late); ar("searched", s.searched);
   ar("partial", s.partial);
+  optional_member(ar, "facing_known", s.facing_known, false);  // files older than it: not known
 }
 // Files written before detection was done block by block lack these (and had only full ones).
 std::vector<const char*> later_members(const ContactSet*) { return {"searched", "partial"}; }
@@ -471,6 +477,8 @@ void check_indices(const Mechanics& m, const Mesh& mesh) {
   materials.clear();
   for (const Contact& c : m.contacts.list) {
     contact_nodes.push_back(c.node);
+    for (const int far : {c.far_a, c.far_b})
+      if (far >= 0 || c.per_facing > 0.0) contact_nodes.push_back(far);
     contact_edges.push_back(c.edge);
     contact_blocks.insert(contact_blocks.end(), {c.block, c.other});
     materials.push_back(c.material);
@@ -598,7 +606,7 @@ void check_sizes(const Mechanics& m, const Mesh& mesh) {
   if (contacts_current) {
     expect(m.contacts.gather_first.size(), nodes + 1, "contacts' gather_first");
     check_first(m.contacts.gather_first, nodes, m.contacts.gather.size(), "contact gather");
-    check_range(m.contacts.gather, 0, 3 * m.contacts.list.size(), "contact gathers' forces");
+    check_range(m.contacts.gather, 0, kContactRoles * m.contacts.list.size(), "contact gathers' forces");
   }
   expect(m.node_block.size(), nodes, "node_block");
   if (!m.dirty) {
@@ -745,6 +753,8 @@ struct CheckpointAccess {
       check_sizes(m, model.mesh_);
       check_indices(m, model.mesh_);
       if (!(m.faces.median_edge > 0.0)) m.faces.median_edge = median_edge_length(m.faces, m.position);
+      // The gather follows from the contacts and the faces: made anew, whatever the file holds.
+      if (m.contacts.detected) gather_contact_forces(m.contacts, m.faces, m.node_count);
       mark_glued_tips(m.faces, m.position);
       r("prepass_yield", model.prepass_yield_);
       r("last_prepass", model.last_prepass_);

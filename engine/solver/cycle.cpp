@@ -128,15 +128,16 @@ template <bool kMeasure>
 }
 
 // A contact's force on its gridpoint, and the reaction on its edge's ends split by where it
-// projects: {gridpoint x, y, end a x, y, end b x, y} [N/m].
-[[gnu::always_inline]] inline void contact_push(const Contact& c, double p[6]) {
+// projects, with what its length's changes give (LengthPush): by role (kContactRoles), x and y [N/m].
+[[gnu::always_inline]] inline void contact_push(const Contact& c, const LengthPush& length, double p[2 * kContactRoles]) {
   const double wa = -(1.0 - c.t), wb = -c.t;
-  p[0] = c.fx;
-  p[1] = c.fy;
-  p[2] = wa * c.fx;
-  p[3] = wa * c.fy;
-  p[4] = wb * c.fx;
-  p[5] = wb * c.fy;
+  p[0] = c.fx + length.on[0];
+  p[1] = c.fy + length.on[1];
+  p[2] = wa * c.fx + length.on[2];
+  p[3] = wa * c.fy + length.on[3];
+  p[4] = wb * c.fx + length.on[4];
+  p[5] = wb * c.fy + length.on[5];
+  for (int k = 6; k < 2 * kContactRoles; ++k) p[k] = length.on[k];
 }
 
 // What a contact adds to the applied force the ratio is measured against: its force on both sides.
@@ -244,10 +245,12 @@ void book_contact(const Mechanics& m, const Contact& c, const JointParams& p, do
                   const ContactLoss& lost_before, const ContactLoss& lost, const double* push, ContactBook& book) {
   const ContactEdge& e = m.faces.edges[static_cast<size_t>(c.edge)];
   double work = half_step_work(book, m.v.data(), m.step);  // last cycle's force
-  for (int k = 0; k < 6; ++k) book.push[k] = push[k];
+  for (int k = 0; k < 2 * kContactRoles; ++k) book.push[k] = push[k];
   book.nodes[0] = c.node, book.nodes[1] = e.a, book.nodes[2] = e.b;
+  book.nodes[3] = c.far_a, book.nodes[4] = c.far_b;
   work += half_step_work(book, m.v.data(), m.step);  // this one's
-  book.made += stored_in(c, p) - before + (lost.slip - lost_before.slip) + (lost.bond - lost_before.bond) + work;
+  book.made += stored_in(c, p) - before + (lost.slip - lost_before.slip) + (lost.bond - lost_before.bond) -
+               (lost.given - lost_before.given) + work;
 }
 
 // Forces of contacts [begin, end), `begin` starting a chunk; the nodes gather them in their own
@@ -270,10 +273,12 @@ void contact_pass(Mechanics& m, int begin, int end, Partials& partials) {
       const JointParams& p = params[c.material];
       const ContactLoss lost_before = lost;
       const double before = booking ? stored_in(c, p) : 0.0;
-      const double overlap = contact_force(c, edges, p, m.origin.data(), m.u.data(), m.v.data(), m.step, lost);
-      contact_push(c, push + 6 * static_cast<size_t>(i));
+      LengthPush length;
+      const double overlap = contact_force(c, edges, p, m.origin.data(), m.u.data(), m.v.data(), m.step, lost, &length);
+      double* pushed = push + 2 * kContactRoles * static_cast<size_t>(i);
+      contact_push(c, length, pushed);
       if (booking) [[unlikely]]
-        book_contact(m, c, p, before, lost_before, lost, push + 6 * static_cast<size_t>(i), m.contacts.books[static_cast<size_t>(i)]);
+        book_contact(m, c, p, before, lost_before, lost, pushed, m.contacts.books[static_cast<size_t>(i)]);
       if constexpr (kMeasure) {
         applied += contact_applied(c);
         if (overlapping < 0 && overlap > limit) overlapping = i;
@@ -282,6 +287,7 @@ void contact_pass(Mechanics& m, int begin, int end, Partials& partials) {
     const size_t chunk = static_cast<size_t>(first / kChunk);
     partials.contact_loss[chunk].slip += lost.slip;
     partials.contact_loss[chunk].bond += lost.bond;
+    partials.contact_loss[chunk].given += lost.given;
     if constexpr (kMeasure) {
       partials.contact_applied[chunk] = applied;
       partials.contact_overlapping[chunk] = overlapping;
@@ -499,7 +505,7 @@ Measure run_cycles(Mechanics& m, int count) {
   partials.fastest.assign(node_chunks, -1);
   partials.finite.assign(node_chunks, 1);
   const int contact_count = static_cast<int>(m.contacts.list.size());
-  m.contacts.push.resize(6 * static_cast<size_t>(contact_count));
+  m.contacts.push.resize(2 * kContactRoles * static_cast<size_t>(contact_count));
   const size_t contact_chunks = (static_cast<size_t>(contact_count) + kChunk - 1) / kChunk;
   partials.contact_applied.assign(contact_chunks, 0.0);
   partials.contact_overlapping.assign(contact_chunks, -1);
@@ -573,6 +579,7 @@ Measure run_cycles(Mechanics& m, int count) {
   for (const ContactLoss& lost : partials.contact_loss) {
     energy.slip += lost.slip;
     energy.bond += lost.bond;
+    energy.prestress += lost.given;
   }
   for (const NodeWork& work : partials.work) {
     energy.by_contacts += work.contacts;
@@ -651,14 +658,17 @@ Measure measure_state(const Mechanics& m) {
     Contact now = c;
     const ContactEdge& e = m.faces.edges[static_cast<size_t>(c.edge)];
     ContactLoss ignored;
+    LengthPush length;
     contact_force(now, m.faces.edges.data(), m.joint_params[static_cast<size_t>(c.material)], m.origin.data(),
-                  m.u.data(), m.v.data(), 0.0, ignored);
-    double p[6];
-    contact_push(now, p);
-    const size_t n = static_cast<size_t>(c.node), a = static_cast<size_t>(e.a), b = static_cast<size_t>(e.b);
-    for (const auto& [node, k] : {std::pair{n, 0}, std::pair{a, 2}, std::pair{b, 4}}) {
-      f[2 * node] += p[k];
-      f[2 * node + 1] += p[k + 1];
+                  m.u.data(), m.v.data(), 0.0, ignored, &length);
+    double p[2 * kContactRoles];
+    contact_push(now, length, p);
+    const int nodes[kContactRoles] = {c.node, e.a, e.b, c.far_a, c.far_b};
+    for (int k = 0; k < kContactRoles; ++k) {
+      if (nodes[k] < 0) continue;
+      const size_t node = static_cast<size_t>(nodes[k]);
+      f[2 * node] += p[2 * k];
+      f[2 * node + 1] += p[2 * k + 1];
     }
     out.applied += contact_applied(now);
   }

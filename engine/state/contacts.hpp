@@ -9,6 +9,13 @@
 // gridpoint facing the end of one block and the start of the next shares between them, and the
 // length moves smoothly as it slides past a joint crossing); where two blocks' faces both lie
 // under a half-edge, the one nearer its quarter point takes more (detect.cpp, kShareBand).
+// Between detections the length follows where the nodes are: it is held in proportion to the
+// facing length, what the gridpoint's half-edges give over the face's line, clipped at its
+// convex corners (facing_length.hpp), and the slope of the contact's stored energy with that
+// length pushes the nodes that set it (contact_force.hpp). A contact found again finds close to
+// the length it has (the detection walks the outline, the facing length one line), and what a
+// turn of the blocks (at an oblique corner) or a slide past a corner changes in its energy, at
+// first order, is work its force did, not a jump at the detection.
 //
 // A gridpoint at a convex corner whose edges both leave the other block's face (a tip driven in
 // point first) has almost no such length, yet its boundary crosses the face over a chord that
@@ -100,6 +107,15 @@ struct Contact {
   int edge = -1;       // index into ContactBoundary::edges
   int material = -1;   // joint material
   double length = 0.0; // [m]
+  // The ends of the gridpoint's own edges, before it (far_a) and after it (far_b) along its loop,
+  // and its length per unit facing length (facing_length.hpp), which it follows between
+  // detections. 0: held as found (a gridpoint where glued blocks meet, with more own edges).
+  int far_a = -1, far_b = -1;
+  double per_facing = 0.0;
+  // What it stored a metre in the state it was given (insitu{}, a fresh crack's traction, a loaded
+  // joint's faces) [J/m^2]: its length's push pays only for what it stores beyond that, the rest
+  // is the given stress's (contact_force.hpp).
+  double given = 0.0;
   double wedge = 0.0;  // a tip's length per unit overlap (0: not a tip) [-]
   double limit = 0.0;  // the gridpoint's reach: how deep a tip's length grows, where its corners fade [m]
   double t = 0.0;      // where the gridpoint projects on the edge, 0 at a, 1 at b
@@ -121,20 +137,24 @@ struct Contact {
   bool leads_past_a = false, leads_past_b = false;
 };
 
+// The nodes a contact pushes (ContactSet::gather): its gridpoint, its edge's ends a and b, and
+// the far ends of the gridpoint's own edges (Contact::far_a, far_b).
+constexpr int kContactRoles = 5;
+
 // A contact's own energy balance, kept while energy{ by_contact = true }: the energy it made
 // since the balance started [J/m] (its stored energy's change and what it dissipated, less the
 // work its nodes did on it, each step as the balance books it), and the force its last cycle
-// pushed its three nodes with, for that work over the next step.
+// pushed its nodes with, for that work over the next step.
 struct ContactBook {
   double made = 0.0;
-  double push[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
-  int nodes[3] = {-1, -1, -1};  // gridpoint, edge end a, edge end b; -1: no cycle yet
+  double push[2 * kContactRoles] = {};
+  int nodes[kContactRoles] = {-1, -1, -1, -1, -1};  // by role (kContactRoles); -1: none, or no cycle yet
 };
 
 // The work of a book's force on its nodes over half a step at velocities `v` (dt: the step) [J/m].
 inline double half_step_work(const ContactBook& book, const double* v, double dt) {
   double work = 0.0;
-  for (int k = 0; k < 3; ++k) {
+  for (int k = 0; k < kContactRoles; ++k) {
     if (book.nodes[k] < 0) continue;
     const size_t n = static_cast<size_t>(book.nodes[k]);
     work += 0.5 * dt * (book.push[2 * k] * v[2 * n] + book.push[2 * k + 1] * v[2 * n + 1]);
@@ -147,8 +167,9 @@ struct ContactSet {
   // Per contact, in list order, while contacts book their own energy (EnergyLedger::by_contact,
   // ContactBook); else empty.
   std::vector<ContactBook> books;
-  // Per node (CSR over all nodes): the contact forces it takes, as contact * 3 + role (0: the
-  // gridpoint's own, 1: edge end a, 2: edge end b), in a fixed order.
+  // Per node (CSR over all nodes): the contact forces it takes, as contact * kContactRoles + role
+  // (0: the gridpoint's own, 1: edge end a, 2: edge end b, 3 and 4: the far ends of the
+  // gridpoint's edges), in a fixed order.
   std::vector<int> gather_first, gather;
   // Scratch of the cycle: per contact and role, the force (x, y) on that node, written by the
   // contact pass; the node pass adds push[2 * gather[s]] and the next, not reading the contact.
@@ -159,6 +180,9 @@ struct ContactSet {
   bool as_built = true;              // the next detection is the first on this mesh
   bool from_insitu = false;          // the next detection sets contact forces from insitu{}
   bool partial = false;              // some blocks were found again since the last full search
+  // Its contacts' far ends and given states are known (false: read from a file without them,
+  // until the next detection takes what they store as given and their far ends as found).
+  bool facing_known = true;
   // Contacts found new but already pressed in by more than a tenth of their reach, since the
   // mesh was made: detection came too late for them (a lost contact); should stay 0.
   long late = 0;

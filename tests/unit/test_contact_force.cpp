@@ -5,6 +5,7 @@
 // tip's far face; a tip pressed into a face carries over a length that grows with its depth.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -321,6 +322,103 @@ TEST(ContactForce, AtTheEdgeOfARe_entrantCornersSpanTheForceIsContinuous) {
   EXPECT_NEAR(past.closure, over.closure, 1e-12);
   EXPECT_NEAR(past.fx, over.fx, 1e-3);
   EXPECT_NEAR(past.fy, over.fy, 1e-3);
+}
+
+// A gridpoint at an obtuse corner of its block (node 3; its edges' far ends nodes 4 and 5), pressed
+// into the face of the Corner's block under a prestress and a shear stress, its length following
+// its facing length (facing_length.hpp; unclipped, the length a detection finds). Moved by
+// `place` through `steps` positions, its springs store what the forces on its nodes did (the
+// face's block stays put), to the round-off of the midpoint rule.
+struct Turning : Corner {
+  const double d1[2] = {0.2, 0.0}, d2[2] = {0.1, 0.2};  // its edges: along the face, and rising
+  double given_booked = 0.0;  // what its length changed of its given part (ContactLoss::given)
+  Turning() {
+    origin.resize(12, 0.0);
+    u.assign(12, 0.0);
+    v.assign(12, 0.0);
+    contact.far_a = 4;
+    contact.far_b = 5;
+    contact.per_facing = 1.0;
+    contact.closure0 = 2e-3;  // 3 mm closed at 1 mm in: 3 MPa
+    contact.fs = 5e3;
+    joint.tan_friction = joint.tan_residual_friction = 1.0;
+  }
+  // The gridpoint at (x, -1 mm), its edges turned by `angle`.
+  void place(double x, double angle) {
+    const double cs = std::cos(angle), sn = std::sin(angle), y = -1e-3;
+    origin[6] = x;
+    origin[7] = y;
+    origin[8] = x - (cs * d1[0] - sn * d1[1]);
+    origin[9] = y - (sn * d1[0] + cs * d1[1]);
+    origin[10] = x + (cs * d2[0] - sn * d2[1]);
+    origin[11] = y + (sn * d2[0] + cs * d2[1]);
+  }
+  // The forces on nodes 3, 4 and 5 at the current positions.
+  std::array<double, 6> push() {
+    ContactLoss lost;
+    LengthPush turn;
+    contact_force(contact, edges.data(), joint, origin.data(), u.data(), v.data(), 1e-4, lost, &turn);
+    given_booked += lost.given;
+    return {contact.fx + turn.on[0], contact.fy + turn.on[1], turn.on[6], turn.on[7], turn.on[8], turn.on[9]};
+  }
+  // The work of those forces from (x0, angle0) to (x1, angle1), and the stored energy's change.
+  std::pair<double, double> move(double x0, double angle0, double x1, double angle1, int steps) {
+    place(x0, angle0);
+    contact.length = 0.25 * (0.2 + 0.1 * 0.1 / std::hypot(0.1, 0.2));  // found here, unclipped
+    std::array<double, 6> force = push();
+    const double start = stored_in(contact, joint);
+    double work = 0.0;
+    for (int i = 1; i <= steps; ++i) {
+      const std::vector<double> before(origin.begin() + 6, origin.end());
+      const std::array<double, 6> was = force;
+      place(x0 + (x1 - x0) * i / steps, angle0 + (angle1 - angle0) * i / steps);
+      force = push();
+      for (size_t k = 0; k < 6; ++k) work += 0.5 * (was[k] + force[k]) * (origin[6 + k] - before[k]);
+    }
+    return {work, stored_in(contact, joint) - start};
+  }
+};
+
+// Turned by 0.3 rad where it stands, its facing length, and with it its length, falls to 0.77
+// of what it was; the force its edges' far ends take pays for the energy that takes away.
+TEST(ContactForce, AGridpointWhoseEdgesTurnStoresTheWorkOfTheTurningForce) {
+  Turning c;
+  const double length_start = 0.25 * (0.2 + 0.1 * 0.1 / std::hypot(0.1, 0.2));
+  const auto [work, change] = c.move(0.5, 0.0, 0.5, 0.3, 3000);
+  EXPECT_NEAR(c.contact.length / length_start, 0.770, 0.001);
+  EXPECT_LT(change, -0.1 * (change - work));
+  EXPECT_NEAR(work, -change, 1e-6 * std::fabs(change));
+  EXPECT_NEAR(c.contact.fs / c.contact.length, 5e3 / length_start, 1e-6);  // the shear stress it had
+}
+
+// Slid from 0.1 m short of the block's corner (b, at x = 0) to 0.05 m past it: its half-edge
+// along the face hangs past the corner, and its facing length shrinks with it (to a fifth at the
+// corner), and past the corner its share fades over a span its length sets; the push along the
+// face pays for the energy that takes away.
+TEST(ContactForce, AGridpointSlidingPastACornerStoresTheWorkOfThePush) {
+  Turning c;
+  c.contact.fs = 0.0;  // no shear stress: its shear spring does not see a move made by placing
+  const auto [work, change] = c.move(0.1, 0.0, -0.05, 0.0, 3000);
+  EXPECT_LT(c.contact.length, 0.5 * 0.25 * (0.2 + 0.1 * 0.1 / std::hypot(0.1, 0.2)));
+  EXPECT_LT(change, 0.0);
+  // (The midpoint rule errs by a step's worth where a half-edge's end crosses the corner.)
+  EXPECT_NEAR(work, -change, 1e-3 * std::fabs(change));
+}
+
+// Given half of what it stores a metre (a given stress), slid as above: the push pays for the
+// rest, and what the length, and the span its share fades over, change of the given part is
+// booked with the given stress.
+TEST(ContactForce, SlidPastACornerTheGivenPartIsBookedAndTheRestIsWork) {
+  Turning c;
+  c.contact.fs = 0.0;
+  c.place(0.1, 0.0);
+  c.contact.length = 0.25 * (0.2 + 0.1 * 0.1 / std::hypot(0.1, 0.2));
+  c.push();
+  c.contact.given = 0.5 * stored_in(c.contact, c.joint) / c.contact.length;
+  c.given_booked = 0.0;
+  const auto [work, change] = c.move(0.1, 0.0, -0.05, 0.0, 3000);
+  EXPECT_LT(c.given_booked, 0.25 * change);  // about half of it, a loss
+  EXPECT_NEAR(work - c.given_booked, -change, 1e-3 * std::fabs(change));
 }
 
 }  // namespace
