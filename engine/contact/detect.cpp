@@ -378,6 +378,21 @@ void keep_pressed(const ContactSet& set, int node, Found& f) {
   f.leads_past_b = c->leads_past_b;
 }
 
+// A tip pressed into a block (its length growing with its overlap: Contact::wedge) that a
+// detection finds with some length of its own but no longer a tip (an edge nearly along the face
+// rocking past it: out of the face at one detection, into it at the next) stays a tip: its length
+// is the larger of the two, as the part of its boundary within the block is at least the tip's
+// chord. Dropped, its length would fall from the tip's to its half-edges' (a tenth of it or less)
+// and come back at the next detection that finds a tip, deeper: the gridpoint rocking between
+// the two, its contact would gain energy at every round.
+void keep_tip(const ContactSet& set, int node, Found& f) {
+  const Contact* c = held_contact(set, node, f.other);
+  if (!c || c->state == ContactState::open || !(c->sn > 0.0) || !(c->wedge > 0.0)) return;
+  f.wedge = c->wedge;
+  f.leads_past_a = c->leads_past_a;
+  f.leads_past_b = c->leads_past_b;
+}
+
 // How far `q` is from the found edge of `f` or those beside it along its block's outline [m].
 // (A gridpoint where a joint ends on another block's face is as near to the face's piece on
 // either side of it; either may have been found, and its half-edge lying over the other piece is
@@ -506,6 +521,7 @@ std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t
     f.wedge = tip_wedge(m, k, p, own_normal, f, reach);
     if (f.wedge > 0.0 && !(f.length > 1e-12 * reach)) mark_leading_past(m, k, p, f);
     if (!(f.length > 1e-12 * reach) && !(f.wedge > 0.0)) keep_pressed(m.contacts, node, f);
+    else if (!(f.wedge > 0.0)) keep_tip(m.contacts, node, f);
   }
   std::erase_if(found, [&](const Found& f) { return !(f.length > 1e-12 * reach) && !(f.wedge > 0.0); });
   return found;
