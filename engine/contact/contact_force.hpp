@@ -326,7 +326,7 @@ struct LengthPush {
   // has: where the length is its own (not a tip's grown past it), the slope of that energy with
   // its facing length pushes the nodes that set it. Without it the energy a turning gridpoint's,
   // or one sliding past a corner, gains or loses with its length would come from nowhere.
-  if (pushing && facing > 0.0 && c.length >= c.wedge * std::clamp(-gap, 0.0, c.limit)) {
+  if (pushing && facing > 0.0) {
     // Only what it stores beyond the state it was given: a given stress, in equilibrium as given,
     // is not pushed on; what its length changes of it goes to the given stress's account.
     // A contact come off its given state (unloaded, opened) keeps no more of it than it stores:
@@ -338,7 +338,14 @@ struct LengthPush {
     // Past a corner the span its share fades over is its length, which the facing length sets.
     // The given part's change with the length, its share's span included.
     double given_by_length = c.given * share;
-    if (past && share > 0.0 && share == fade_share) {
+    if (c.wedge * std::clamp(-gap, 0.0, c.limit) > c.length) {
+      // A tip pressed past its own length: its energy is its own length's up to the overlap where
+      // the tip's took over, c.length / c.wedge, and the tip's beyond (contact_energy), whose
+      // slope with its own length is what a metre of it stores at that overlap. At the overlap
+      // where the tip takes over that is the slope below, so the push goes on smoothly.
+      const double at_switch = normal_energy(p, c.closure0 + c.dilation + c.length / c.wedge);
+      w = c.per_facing * share * std::max(0.0, at_switch - c.given);
+    } else if (past && share > 0.0 && share == fade_share) {
       w += beyond / share * fade_by_length * c.per_facing;
       given_by_length += c.given * c.length * fade_by_length;
     }
