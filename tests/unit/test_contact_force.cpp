@@ -391,6 +391,19 @@ TEST(ContactForce, AGridpointWhoseEdgesTurnStoresTheWorkOfTheTurningForce) {
   EXPECT_NEAR(c.contact.fs / c.contact.length, 5e3 / length_start, 1e-6);  // the shear stress it had
 }
 
+// The same gridpoint as a tip pressed past its own length (its tip's length, 80 x the 1 mm
+// overlap, above the 0.061 m its edges give): its energy still hangs on its own length, up to
+// the overlap where the tip took over, and the push pays for what the turn changes of it.
+TEST(ContactForce, ATipPressedPastItsOwnLengthStoresTheWorkOfTheTurningForce) {
+  Turning c;
+  c.contact.wedge = 80.0;
+  c.contact.limit = 0.01;
+  const auto [work, change] = c.move(0.5, 0.0, 0.5, 0.3, 3000);
+  EXPECT_GT(c.contact.wedge * 1e-3, c.contact.length);  // the tip's length carries it throughout
+  EXPECT_LT(change, 0.0);
+  EXPECT_NEAR(work, -change, 1e-6 * std::fabs(change));
+}
+
 // Slid from 0.1 m short of the block's corner (b, at x = 0) to 0.05 m past it: its half-edge
 // along the face hangs past the corner, and its facing length shrinks with it (to a fifth at the
 // corner), and past the corner its share fades over a span its length sets; the push along the
