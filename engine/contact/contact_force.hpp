@@ -323,9 +323,10 @@ struct LengthPush {
     c.fy += push * sy;
   }
   // Its energy is its length times what it stores per metre, at the closure and shear stress it
-  // has: where the length is its own (not a tip's grown past it), the slope of that energy with
-  // its facing length pushes the nodes that set it. Without it the energy a turning gridpoint's,
-  // or one sliding past a corner, gains or loses with its length would come from nowhere.
+  // has (a tip pressed past its own length: up to the overlap where the tip's took over): the
+  // slope of that energy with its facing length pushes the nodes that set it. Without it the
+  // energy a turning gridpoint's, or one sliding past a corner, gains or loses with its length
+  // would come from nowhere.
   if (pushing && facing > 0.0) {
     // Only what it stores beyond the state it was given: a given stress, in equilibrium as given,
     // is not pushed on; what its length changes of it goes to the given stress's account.
@@ -343,7 +344,9 @@ struct LengthPush {
       // the tip's took over, c.length / c.wedge, and the tip's beyond (contact_energy), whose
       // slope with its own length is what a metre of it stores at that overlap. At the overlap
       // where the tip takes over that is the slope below, so the push goes on smoothly.
-      const double at_switch = normal_energy(p, c.closure0 + c.dilation + c.length / c.wedge);
+      // (Touched only past that overlap, it stores nothing over its own length.)
+      const double switch_closure = c.closure0 + c.dilation + c.length / c.wedge;
+      const double at_switch = switch_closure > 0.0 ? normal_energy(p, switch_closure) : 0.0;
       w = c.per_facing * share * std::max(0.0, at_switch - c.given);
     } else if (past && share > 0.0 && share == fade_share) {
       w += beyond / share * fade_by_length * c.per_facing;
