@@ -200,5 +200,84 @@ TEST(ContactTips, AGridpointAtTheSeamOfAStraightGluedFaceIsCarriedInFull) {
   )lua");
 }
 
+
+// A triangle pressed apex first 2 cm into a face, its short edge 5 degrees above the face's line,
+// then turned about its apex until that edge is 10.5 degrees into the face: past the 10 degrees an
+// edge at a corner may lean in and still count as along it (detect.cpp, tip_wedge), so the next
+// detection finds the apex some length of its own (its short half-edge over the face, 1.2 cm) but
+// no tip. Pressed as deep as before, it is still the tip it was: its length stays about the tip's
+// (2.3 cm). Were it dropped to its half-edge's, an apex rocking about that angle would lose and
+// regain half its length at every rocking, each time at another depth, and its contact would make
+// energy (in the seed's Case 3 at 212 m, 1e6 J/m a rocking).
+TEST(ContactTips, APressedTipWhoseEdgeTurnsIntoTheFaceStaysATip) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, R"lua(
+    model{ title = "a tip turned past the face" }
+    block{ x = {0, 2}, y = {-1, 0} }
+    local short = 0.05
+    local apex = {1, 0.002}
+    local top = {apex[1] + 0.25, apex[2] + 1}
+    local left = {apex[1] + short * math.cos(math.rad(175)), apex[2] + short * math.sin(math.rad(175))}
+    block{ apex, top, left }
+    zone{ edge = 3 }
+    material{ "rock", density = 2600, young = 1e12, poisson = 0.25 }
+    assign{ material = "rock" }
+    joint_material{ "j", kn = 1e8, ks = 1e8, friction = 0 }
+    jassign{ material = "j" }
+    boundary{ polygon = {{-0.1, -1.1}, {2.1, -1.1}, {2.1, -0.9}, {-0.1, -0.9}}, fix = "xy" }
+    -- The triangle moved as a rigid body: its three corners held at velocity(x, y), where they are.
+    local corners = {gp_near(apex[1], apex[2]), gp_near(top[1], top[2]), gp_near(left[1], left[2])}
+    local function drive(velocity)
+      for _, g in ipairs(corners) do
+        local now = gp_near(g.x, g.y)
+        local vx, vy = velocity(now.x + now.ux, now.y + now.uy)
+        local h = 0.01  -- boundary{} selects by the gridpoints' positions as built
+        boundary{ polygon = {{g.x - h, g.y - h}, {g.x + h, g.y - h}, {g.x + h, g.y + h}, {g.x - h, g.y + h}},
+                  xvel = vx, yvel = vy }
+      end
+    end
+    local function tip_contact()
+      local found
+      for c in contacts() do
+        if math.abs(c.x - apex[1]) < 1e-3 and c.y < 0 then
+          assert(not found, "two contacts at the apex")
+          found = c
+        end
+      end
+      assert(found, "no contact at the apex")
+      return found
+    end
+    while gp_near(apex[1], apex[2]).uy > -0.022 do
+      drive(function() return 0, -1e-3 end)
+      cycle(1)
+    end
+    drive(function() return 0, 0 end)
+    cycle(1)
+    local pressed = tip_contact()
+    assert(pressed.length > -pressed.un, ("a tip's length %g m at an overlap of %g m"):format(pressed.length, -pressed.un))
+    -- Turned anticlockwise about the apex, 1 mrad a cycle, until the short edge is 10.5 degrees
+    -- into the face.
+    local centre = gp_near(apex[1], apex[2])
+    local cx, cy = centre.x + centre.ux, centre.y + centre.uy
+    local function short_edge_angle()
+      local g = gp_near(left[1], left[2])
+      return math.deg(math.atan(g.y + g.uy - cy, g.x + g.ux - cx)) % 360
+    end
+    while short_edge_angle() < 180 + 10.5 do
+      drive(function(x, y) return -1e-3 * (y - cy), 1e-3 * (x - cx) end)
+      cycle(1)
+    end
+    drive(function() return 0, 0 end)
+    cycle(20)
+    local turned = tip_contact()
+    print(("pressed: length %.4g m at overlap %.4g m; turned %.3g deg: length %.4g m at overlap %.4g m"):format(
+      pressed.length, -pressed.un, short_edge_angle() - 175, turned.length, -turned.un))
+    assert(math.abs(turned.un / pressed.un - 1) < 0.05, ("the apex moved: overlap %g m, was %g"):format(-turned.un, -pressed.un))
+    assert(turned.length > 0.9 * pressed.length,
+           ("turned, the tip's length fell from %g m to %g m"):format(pressed.length, turned.length))
+  )lua");
+}
+
 }  // namespace
 }  // namespace edem::test
