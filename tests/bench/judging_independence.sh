@@ -6,20 +6,22 @@
 # judging mode, the crack counts and crown settlements with their spread ((max - min) / mean), and
 # each run's seconds and cycles; exits 1 if the equilibrium mode's spread is over 3 % in cracks or
 # 2 % in crown settlement.
-#   bash tests/bench/judging_independence.sh [--edem PATH] [--out DIR] [--jobs N] [--threads M]
+#   bash tests/bench/judging_independence.sh [--edem PATH] [--out DIR] [--jobs N] [--threads M] [--keep]
+# --keep: a run whose row.csv is in DIR already is taken as it is, not run again (a go resumed).
 # And, judged at equilibrium under local damping released over 100 cycles (case.lua's defaults),
 # with 1 and 2 m zones at the opening (1.5 m above), for the charts of speed against accuracy that
 # it draws at its end (tests/bench/judging_chart.lua: OUT/judging_cracks.png, OUT/judging_crown.png).
 # One thread a run and two runs at a time on two cores take about 55 minutes (tests/bench/RESULTS.md).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
-edem=$root/build/interp/edem out=judging-independence jobs=2 threads=1
+edem=$root/build/interp/edem out=judging-independence jobs=2 threads=1 keep=0
 while [[ $# -gt 0 ]]; do
   case $1 in
     --edem) edem=$2; shift 2 ;;
     --out) out=$2; shift 2 ;;
     --jobs) jobs=$2; shift 2 ;;
     --threads) threads=$2; shift 2 ;;
+    --keep) keep=1; shift ;;
     *) echo "judging_independence.sh: unknown option $1" >&2; exit 2 ;;
   esac
 done
@@ -41,6 +43,7 @@ run_one() {
   local judge=$1 damping=$2 release=$3 edge=${4:-}
   local name=${judge}_${damping}_${release}${edge:+_edge$edge}
   local dir=$out/$name
+  [[ $keep == 1 && -f $dir/row.csv ]] && return 0
   mkdir -p "$dir"
   (cd "$dir" && "$edem" --threads "$threads" --out "$dir" --set set=P --set case=3 --set depth=158 \
      --set judge="$judge" --set damping="$damping" --set release="$release" --set threads="$threads" \
@@ -48,7 +51,7 @@ run_one() {
     echo "judging_independence.sh: $name failed (its log: $dir/log)" >&2
 }
 export -f run_one
-export edem out threads root
+export edem out threads root keep
 printf '%s\n' "${runs[@]}" | xargs -P "$jobs" -I{} bash -c 'run_one {}'
 
 # One line a run: mode, damping, release, cracks, crown settlement, seconds, cycles (from the log).
