@@ -131,6 +131,7 @@ int run_solve(lua_State* L, Context& context, const Args& args) {
   SolveDef def;
   def.ratio = args.number("ratio");
   def.max_cycles = static_cast<long>(args.integer("max_cycles"));
+  def.stall = static_cast<long>(args.integer("stall"));
   const SolveResult result = [&] {
     const ProgressLineCloser closer{context};
     return context.model().solve(def);
@@ -146,7 +147,11 @@ int run_solve(lua_State* L, Context& context, const Args& args) {
     // Short of the ratio after breaks: they found no new equilibrium; short of it with sections
     // intact and none broken: the last state was not judged.
     std::string why;
-    if (result.broke > 0)
+    if (result.stalled)
+      why = fmt::format(": the ratio has not fallen a tenth below its lowest in the last {} cycles (stall): the "
+                        "rock keeps moving without nearing an equilibrium{}",
+                        def.stall, result.unjudged ? "; its state was not judged" : "");
+    else if (result.broke > 0)
       why = ": the breaks of the last judgment found no new equilibrium in the cycles given (is the "
             "rock collapsing?); the state is kept as it is";
     else if (result.unjudged)
@@ -158,11 +163,13 @@ int run_solve(lua_State* L, Context& context, const Args& args) {
                  result.cycles, result.ratio, def.ratio, rounds, why);
     std::fflush(stdout);
   }
-  lua_createtable(L, 0, 5);
+  lua_createtable(L, 0, 6);
   set_field(L, "cycles", static_cast<long long>(result.cycles));
   set_field(L, "ratio", result.ratio);
   lua_pushboolean(L, result.converged);
   lua_setfield(L, -2, "converged");
+  lua_pushboolean(L, result.stalled);
+  lua_setfield(L, -2, "stalled");
   set_field(L, "judgments", static_cast<long long>(result.judgments));
   set_field(L, "broke", static_cast<long long>(result.broke));
   return 1;
@@ -288,10 +295,15 @@ const Command& solve_command() {
                "zone forces"},
               {"max_cycles", Type::integer, "", between(1, kMostCycles), "100000",
                "stop after this many cycles (at most 1e12)"},
+              {"stall", Type::integer, "", between(0, kMostCycles), "0",
+               "stop after this many cycles in which the ratio has not fallen a tenth below its lowest "
+               "since the load came off or sections last broke: rock that keeps sliding or creeping, "
+               "with no equilibrium near, ends its solve there instead of at max_cycles; 0: never"},
           },
       .run = run_solve,
-      .returns = "a table: cycles (run by this call), ratio (reached), converged (true or false), judgments "
-                 "(with judge{ at = \"equilibrium\"}: the states judged) and broke (the sections they broke)",
+      .returns = "a table: cycles (run by this call), ratio (reached), converged (true or false), stalled "
+                 "(true: stopped by stall), judgments (with judge{ at = \"equilibrium\"}: the states judged) and "
+                 "broke (the sections they broke)",
       .usage = "solve{ ratio = 1e-5 }\nsolve()",
       .bare_call = true,
   };

@@ -216,6 +216,7 @@ struct SolverSettings {
 struct SolveDef {
   double ratio = 1e-5;        // stop when the unbalanced-force ratio is at most this [-]
   long max_cycles = 100000;   // and stop after this many cycles whatever the ratio
+  long stall = 0;             // and after this many without the ratio falling a tenth (0: never)
 };
 
 struct SolveResult {
@@ -230,6 +231,9 @@ struct SolveResult {
   bool unjudged = false;
   // Stopped at the end of a cycle because the stop flag was raised (Model::set_stop).
   bool interrupted = false;
+  // Stopped because the ratio had not fallen a tenth below its lowest in `stall` cycles: the model
+  // keeps moving without coming nearer to an equilibrium.
+  bool stalled = false;
 };
 
 // Where a long cycle() or solve{} stands, for a progress line (Model::set_progress).

@@ -24,6 +24,8 @@ namespace {
 // The ratio and the watchdog look at the state every this many cycles (and at the end of
 // every batch cut short by a callback or history).
 constexpr int kMeasureInterval = 10;
+// A solve with a stall limit counts a ratio as progress when it is this much of the lowest before.
+constexpr double kProgress = 0.9;
 // Kinetic energy growing faster than this per cycle for kGrowthChecks checks in a row is an
 // instability (a stable run from rest grows as t^2, far slower).
 constexpr double kGrowthPerCycle = 1.585;  // 100x over 10 cycles
@@ -291,7 +293,7 @@ void follow_thread_watch(Mechanics& m, const Measure& batch, long cycles) {
 
 }  // namespace
 
-SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double target_ratio) {
+SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double target_ratio, long stall) {
   if (m.cycling_now) fail("cannot cycle from inside a callback or history while cycling");
   check_functions_given(m);
   prepare(m, mesh);  // a changed model; else the thread count may have changed
@@ -325,6 +327,11 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
       return result;
     }
   }
+  // Progress towards an equilibrium: the lowest ratio since the load came off or sections last
+  // broke, and when it was reached. Rock that keeps sliding or creeping holds the ratio level (or
+  // lets it rise) however long it runs: a solve with `stall` stops there instead of at max_cycles.
+  double lowest = INFINITY;
+  long lowest_at = 0;
   while (result.cycles < max_cycles) {
     if (m.stop != nullptr && m.stop->load(std::memory_order_relaxed) != 0) {
       result.interrupted = true;
@@ -377,9 +384,21 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
     // A model that has just cracked is not in equilibrium, whatever the ratio said before.
     const bool cracked = run_due(m, mesh, m.info.cycle, commands_pending);
     // Nor is one whose excavation loads are still coming off.
+    const int broke_before = result.broke;
     if (target_ratio > 0.0 && m.info.ratio <= target_ratio && !cracked && !releasing &&
         stands_judged(m, mesh, result)) {
       result.converged = true;
+      break;
+    }
+    if (releasing || cracked || result.broke != broke_before) {
+      lowest = INFINITY;
+      lowest_at = result.cycles;
+    } else if (m.info.cycle % kMeasureInterval == 0 && m.info.ratio < kProgress * lowest) {
+      lowest = m.info.ratio;
+      lowest_at = result.cycles;
+    }
+    if (stall > 0 && result.cycles - lowest_at >= stall) {
+      result.stalled = true;
       break;
     }
     if (reporting) {

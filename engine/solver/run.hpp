@@ -12,6 +12,6 @@ namespace edem {
 // a model already in equilibrium takes none. Prepares the arrays first (and again when a
 // callback changes the model). The watchdog throws edem::Error, naming the cycle, the place
 // and the likely cause, when the run goes unstable; exceptions from callbacks pass through.
-SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double target_ratio);
+SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double target_ratio, long stall = 0);
 
 }  // namespace edem
