@@ -397,7 +397,7 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
       lowest = m.info.ratio;
       lowest_at = result.cycles;
     }
-    if (stall > 0 && result.cycles - lowest_at >= stall) {
+    if (stall > 0 && m.info.cycle % kMeasureInterval == 0 && result.cycles - lowest_at >= stall) {
       result.stalled = true;
       break;
     }
