@@ -24,7 +24,8 @@ namespace {
 // The ratio and the watchdog look at the state every this many cycles (and at the end of
 // every batch cut short by a callback or history).
 constexpr int kMeasureInterval = 10;
-// A solve with a stall limit counts a ratio as progress when it is this much of the lowest before.
+// A solve with a stall limit counts a ratio as progress when it is below this share of the lowest
+// one before it.
 constexpr double kProgress = 0.9;
 // Kinetic energy growing faster than this per cycle for kGrowthChecks checks in a row is an
 // instability (a stable run from rest grows as t^2, far slower).
