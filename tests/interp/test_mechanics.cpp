@@ -130,6 +130,56 @@ TEST(Mechanics, AStallLimitEndsTheSolveOfABlockThatKeepsSliding) {
       << out;
 }
 
+// solve{ stall } and judging at equilibrium: each judgment that breaks sections starts the count
+// again, so the rounds after a hole dug at once (150 cracks in 6 judgments, about 500 cycles
+// each) run as without the limit even when it is shorter than a round. Were the count kept
+// across a judgment, the ratio at the equilibrium just judged would be the lowest to beat and a
+// limit of 2,000 cycles would already cut the rounds short.
+TEST(Mechanics, AStallLimitDoesNotCutShortTheRoundsOfJudgingAtEquilibrium) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, R"lua(
+    local function circle(r)
+      local points = {}
+      for k = 0, 31 do
+        local a = 2 * math.pi * k / 32
+        points[#points + 1] = { 20 + r * math.cos(a), 15 + r * math.sin(a) }
+      end
+      return points
+    end
+    local function hole_dug_at_once(stall)
+      model{ title = "cracks at equilibrium" }
+      block{ x = { 0, 40 }, y = { 0, 30 } }
+      region{ name = "hole", polygon = circle(3) }
+      region{ name = "ring", polygon = circle(7) }
+      crackseed{ region = "ring", angles = { 30, 120 }, spacing = 1, material = "strength", after = "crack" }
+      zone{ edge = 0.5, far = 2, near = { "ring" } }
+      material{ "rock", density = 2500, young = 2e9, poisson = 0.25 }
+      material{ "strength", model = "mohr", young = 2e9, poisson = 0.25, cohesion = 1e6, friction = 30,
+                tension = 0.3e6 }
+      assign{ material = "rock" }
+      joint_material{ "crack", kn = 2e10, ks = 1e10, friction = 30 }
+      insitu{ sxx = -3e6, syy = -5e6, szz = -4e6 }
+      for _, side in ipairs{ "left", "right", "top", "bottom" } do boundary{ side = side, fix = "xy" } end
+      judge{ at = "equilibrium" }
+      excavate{ region = "hole" }
+      return solve{ ratio = 1e-5, max_cycles = 20000, stall = stall }
+    end
+    local free = hole_dug_at_once(0)
+    assert(free.converged and free.judgments >= 4 and free.broke > 100,
+           ("the rounds: %d judgments, %d broke"):format(free.judgments, free.broke))
+    local cracks = info().cracks
+    for _, stall in ipairs{ 2000, 300 } do
+      local limited = hole_dug_at_once(stall)
+      assert(limited.converged and not limited.stalled, ("stall %d: stopped after %d cycles, %d judgments"):format(
+             stall, limited.cycles, limited.judgments))
+      assert(limited.cycles == free.cycles and limited.judgments == free.judgments and info().cracks == cracks,
+             ("stall %d: %d cycles, %d judgments, %d cracks against %d, %d, %d"):format(stall, limited.cycles,
+             limited.judgments, info().cracks, free.cycles, free.judgments, cracks))
+    end
+  )lua");
+}
+
 TEST(Mechanics, QuietSolvePrintsNothing) {
   Interpreter interpreter({.quiet = true, .stdlib_dirs = {}});
   testing::internal::CaptureStdout();
