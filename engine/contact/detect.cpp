@@ -363,6 +363,20 @@ int held_edge(const ContactSet& set, int node, int block) {
   return c ? c->edge : -1;
 }
 
+// The contact of `node` with `block` in the list as it stands if it presses (closed, in
+// compression), or null.
+const Contact* pressed_contact(const ContactSet& set, int node, int block) {
+  const Contact* c = held_contact(set, node, block);
+  return c && c->state != ContactState::open && c->sn > 0.0 ? c : nullptr;
+}
+
+// `f` takes the tip `c` had: its wedge and the sharp corners its edges lead past.
+void take_tip(const Contact& c, Found& f) {
+  f.wedge = c.wedge;
+  f.leads_past_a = c.leads_past_a;
+  f.leads_past_b = c.leads_past_b;
+}
+
 // A gridpoint pressed into a block that a detection finds no length and no tip over (its edges
 // turning about the face's direction as it rocks: a tip at one detection, edges running into the
 // face at the next) keeps the length and tip its contact had: the contact goes when its gap opens
@@ -370,12 +384,10 @@ int held_edge(const ContactSet& set, int node, int block) {
 // made again, it would start with none of its load and take it from its overlap at once, energy
 // made at every detection.
 void keep_pressed(const ContactSet& set, int node, Found& f) {
-  const Contact* c = held_contact(set, node, f.other);
-  if (!c || c->state == ContactState::open || !(c->sn > 0.0)) return;
+  const Contact* c = pressed_contact(set, node, f.other);
+  if (!c) return;
   f.length = c->length;
-  f.wedge = c->wedge;
-  f.leads_past_a = c->leads_past_a;
-  f.leads_past_b = c->leads_past_b;
+  take_tip(*c, f);
 }
 
 // A tip pressed into a block (its length growing with its overlap: Contact::wedge) that a
@@ -386,11 +398,8 @@ void keep_pressed(const ContactSet& set, int node, Found& f) {
 // and come back at the next detection that finds a tip, deeper: the gridpoint rocking between
 // the two, its contact would gain energy at every round.
 void keep_tip(const ContactSet& set, int node, Found& f) {
-  const Contact* c = held_contact(set, node, f.other);
-  if (!c || c->state == ContactState::open || !(c->sn > 0.0) || !(c->wedge > 0.0)) return;
-  f.wedge = c->wedge;
-  f.leads_past_a = c->leads_past_a;
-  f.leads_past_b = c->leads_past_b;
+  const Contact* c = pressed_contact(set, node, f.other);
+  if (c && c->wedge > 0.0) take_tip(*c, f);
 }
 
 // How far `q` is from the found edge of `f` or those beside it along its block's outline [m].
@@ -714,15 +723,20 @@ class LoadedFaces {
   std::unordered_map<std::uint64_t, std::vector<int>> by_pair_;
 };
 
+// A contact's energy changed from `had` to `now` by a detection, not by a cycle: the last booked
+// point (EnergyLedger::last) moves with it, so that commands do not book the change again.
+void book_at_last_point(Mechanics& m, const ContactEnergy& now, const ContactEnergy& had) {
+  if (!m.energy.last_current) return;
+  m.energy.last.normal += now.normal - had.normal;
+  m.energy.last.shear += now.shear - had.shear;
+}
+
 // Books what a contact made with a given state stores (`now`, less `had` if it was there) as
 // prestress: the joint's, not made by the method; at the last booked point too, so that commands
 // do not book it again.
 void book_prestress(Mechanics& m, const ContactEnergy& now, const ContactEnergy& had) {
   m.energy.prestress += now.normal + now.shear - had.normal - had.shear;
-  if (m.energy.last_current) {
-    m.energy.last.normal += now.normal - had.normal;
-    m.energy.last.shear += now.shear - had.shear;
-  }
+  book_at_last_point(m, now, had);
 }
 
 // What a contact stores a metre of the length that carries it [J/m^2].
@@ -732,14 +746,11 @@ double stored_per_metre(const Contact& c, const JointParams& p) {
 }
 
 // Books what a contact's energy changed by, from `had` to `now`, as taken away with rock dug out
-// (at the last booked point too, as book_prestress does).
+// (at the last booked point too).
 void book_taken_away(Mechanics& m, const ContactEnergy& now, const ContactEnergy& had) {
   m.energy.excavated.normal += had.normal - now.normal;
   m.energy.excavated.shear += had.shear - now.shear;
-  if (m.energy.last_current) {
-    m.energy.last.normal += now.normal - had.normal;
-    m.energy.last.shear += now.shear - had.shear;
-  }
+  book_at_last_point(m, now, had);
 }
 
 // A new contact `c` (its gridpoint at `gap` from its edge, whose direction is `s`) takes the
