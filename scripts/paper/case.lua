@@ -42,13 +42,12 @@
 --   tolerance model{}'s geometric tolerance [7e-4]
 --   fracture_energy, shear_fracture_energy  J/m^2: broken sections soften as cohesive cracks
 --             instead of becoming joints at once [0, 0]
---   table     CSV file the result row is appended to [case_results.csv]; a row after each step
---             goes to NAME_steps.csv; an existing table must have this script's columns. The
---             row is also the run's result{} (result.csv), which edem sweep gathers
+--   table     CSV file the result row is appended to, and NAME_steps.csv a row a step; also the
+--             run's result{}, which edem sweep gathers [case_results.csv]
 --   threads   recorded in the table [OMP_NUM_THREADS, else default]
 --   strict    true: a step stopped by an error fails the script [false]
---   save_after  a checkpoint CASE_stepN.h5 after step N (restore() continues from it, as
---             tests/bench/step_from_checkpoint.lua does) [0: none]
+--   save_after  a checkpoint CASE_stepN.h5 after step N (for restore(), sections_left.lua)
+--             [0: none]
 -- Steps: the region with the case's joints and the cavern's steps cut as regions; the prepass
 -- (jointed: over the steps the run digs; continuum: over all 16); potential cracks where it
 -- yielded (crackseed{ auto }, 4.8 m apart, a tenth of the cavern's height, with the set's intact
@@ -372,8 +371,8 @@ end
 -- Judged at equilibrium, what is mucked out must not depend on the release any more than what
 -- breaks: a loose block goes only if it was loose at the check before too, 200 cycles earlier (a
 -- block a step's transient lifts off its seat for a moment has not fallen), and rock of a step not
--- yet dug stays for its step (with the load of a step coming off over 100 cycles, the next bench
--- down was found loose and taken, and the step after had nothing left to dig).
+-- yet dug stays for its step (a step's load coming off over 100 cycles can leave the next bench
+-- down loose for a moment; taken then, it would leave the step after nothing to dig).
 local stays_loose = loose.tracker()
 local function muck_out()
   local moved = {}
