@@ -1,7 +1,7 @@
 -- Where a run of case.lua laid its potential cracks, which broke, and how near their strength the
 -- ones left intact stand: read from a checkpoint the run saved (case.lua --set save_after=16).
--- It shows why one case breaks a smaller share of its sections than another (the README, "Why
--- Case 3 cracks less than Case 2").
+-- It shows why one case breaks a smaller share of its sections than another (the README, "What
+-- the runs show of those that do not hold": Case 3 against Case 2).
 --
 --   edem --set case=3 --set save_after=16 run scripts/paper/case.lua
 --   edem --quiet --set file=case3_P_h158_none_step16.h5 run scripts/paper/sections_left.lua
@@ -29,6 +29,10 @@ local BANDS = { { 0, 2 }, { 2, 5 }, { 5, 10 }, { 10, math.huge } }
 local function band_of(d)
   for i, b in ipairs(BANDS) do if d < b[2] then return i end end
 end
+local function band_name(b)
+  local from, to = BANDS[b][1], BANDS[b][2]
+  return to < math.huge and ("%g to %g m"):format(from, to) or ("beyond %g m"):format(from)
+end
 -- The share of its strength a section's fitted stress reaches (1 breaks it).
 local function share_of_strength(s)
   local phi = math.rad(s.friction)
@@ -48,17 +52,12 @@ end
 for _, place in ipairs{ "roof", "left upper", "right upper", "left lower", "right lower", "floor" } do
   order[#order + 1] = "within 2 m, " .. place
 end
-for b = 2, #BANDS do
-  order[#order + 1] = BANDS[b][2] < math.huge and ("%g to %g m"):format(BANDS[b][1], BANDS[b][2])
-                      or ("beyond %g m"):format(BANDS[b][1])
-end
+for b = 2, #BANDS do order[#order + 1] = band_name(b) end
 order[#order + 1] = "all"
 for s in sections() do
   local d = shapes.distance_to(outline, s.x, s.y)
   local b = band_of(d)
-  local key = b == 1 and ("within 2 m, " .. place_of(s.x, s.y))
-              or (BANDS[b][2] < math.huge and ("%g to %g m"):format(BANDS[b][1], BANDS[b][2])
-                  or ("beyond %g m"):format(BANDS[b][1]))
+  local key = b == 1 and ("within 2 m, " .. place_of(s.x, s.y)) or band_name(b)
   for _, r in ipairs{ row(key), row("all") } do
     r.laid = r.laid + 1
     local share = share_of_strength(s)
