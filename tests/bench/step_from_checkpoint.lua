@@ -13,11 +13,13 @@
 -- point followed (x, y: the right wall at the springline), every (cycles between the trace's
 -- lines), save_to (a checkpoint of the state the solve ends at; "" none), muck (blocks loose at two
 -- checks 200 cycles apart are dug out, edem.loose, as case.lua's default does; case.lua also keeps
--- rock of steps not yet dug, which one step from a checkpoint cannot tell apart). The trace gives the
+-- rock of steps not yet dug, which one step from a checkpoint cannot tell apart), by_contact (N > 0:
+-- each contact keeps its own energy balance, energy{ by_contact }, and the N that made or lost the
+-- most are listed at the end: where an energy error arises). The trace gives the
 -- energies from the start (slip and damping: what they took), the point's movement and adaptive
 -- damping's rate c = 2 omega (info().damping_rate).
 local s = settings{ file = "", step = "", damping = "local", release = 100, cycles = 40000, x = 12.0, y = 0.0,
-                    every = 2000, save_to = "", muck = true, on = false }
+                    every = 2000, save_to = "", muck = true, on = false, by_contact = 0 }
 if s.file == "" then error("give --set file=CHECKPOINT.h5", 0) end
 restore(s.file)
 if s.damping == "local" then
@@ -34,6 +36,7 @@ local function moved()  -- towards the axis, x = 0 [m] (a mucked-out point keeps
     if g.id == point.id then return (point.x > 0 and -1 or 1) * (g.ux - point.ux) end
   end
 end
+if s.by_contact > 0 then energy{ by_contact = true } end
 local start = energy()
 local peak = 0
 print(("following gridpoint %d at (%.2f, %.2f); damping %s"):format(point.id, point.x, point.y, s.damping))
@@ -70,5 +73,19 @@ for _, name in ipairs(steps) do
          .. "towards the axis; kinetic energy at most %.4g J/m (at the trace's lines); %.0f s"):format(
          name ~= "" and name .. ", " or "", s.damping, r.converged and "converged" or "NOT converged", r.cycles,
          r.ratio, info().cracks, fallen, moved(), peak, os.clock() - clock))
+end
+if s.by_contact > 0 then
+  local made = {}
+  for c in contacts() do made[#made + 1] = c end
+  table.sort(made, function(a, b) return math.abs(a.energy_made) > math.abs(b.energy_made) end)
+  local e = energy()
+  print(("energy error since the checkpoint %.4g J/m, %.4g of it in the contacts; the contacts that made most:"):format(
+    e.error - start.error, e.contact_error - start.contact_error))
+  for i = 1, math.min(s.by_contact, #made) do
+    local c = made[i]
+    print(("  contact %d, %s, %s, gridpoint of block %d at (%.2f, %.2f) on block %d: made %.4g J/m; fn %.4g N/m over "
+           .. "%.4g m, overlap %.4g m, shear displacement %.4g m, slip %.4g m"):format(c.id, c.kind, c.state, c.block,
+           c.x, c.y, c.other, c.energy_made, c.fn, c.length, c.overlap, c.us, c.slip))
+  end
 end
 if s.save_to ~= "" then save(s.save_to) end
