@@ -24,24 +24,19 @@ local function build()
                edge = 3, far = 15, tolerance = 7e-4 }
 end
 local rock = seed.P.rock
-local function intact_rock()  -- Mohr-Coulomb: the prepass's rock, and the potential cracks' strength
-  material{ "intact", model = "mohr", density = rock.density, young = rock.young, poisson = rock.poisson,
-            cohesion = rock.cohesion, friction = rock.friction, tension = rock.tension }
-  assign{ material = "intact" }
-end
 local names = {}
 for _, s in ipairs(c.stages) do names[#names + 1] = s.name end
 
 -- 1. The prepass digs the model: build it again afterwards for the cracks.
 build()
-intact_rock()
+seed.intact("P")  -- Mohr-Coulomb: the prepass's rock, and the potential cracks' strength
 local n = info()
 print(("model: %d blocks, %d zones; prepass: digging its %d stages in Mohr-Coulomb rock"):format(
       n.blocks, n.zones, #names))
 local pre = yield_pass.run{ stages = names, release = 100, max_cycles = 10000, damping = "local" }
 build()
 yield_pass.check(pre)
-intact_rock()
+seed.intact("P")
 local yielded = 0
 for _, z in ipairs(pre.zones) do if z.state ~= "none" then yielded = yielded + 1 end end
 

@@ -174,12 +174,7 @@ build_region()
 local rock = seed[SET].rock
 
 -- 1. Where the rock mass yields as it is dug: Mohr-Coulomb rock of the set over all the steps.
-local function intact_rock()
-  material{ "intact", model = "mohr", density = rock.density, young = rock.young, poisson = rock.poisson,
-            cohesion = rock.cohesion, friction = rock.friction, tension = rock.tension }
-  assign{ material = "intact" }
-end
-intact_rock()
+seed.intact(SET)
 local names = {}
 for _, s in ipairs(c.stages) do names[#names + 1] = s.name end
 local WINDOW = { -60, 60, -50, 60 }
@@ -198,7 +193,7 @@ if PREPASS == "jointed" then
   prepass_note = pre.failure and ("stopped in " .. pre.failure:sub(1, 160):gsub('"', "'")) or "complete"
   build_region()
   yield_pass.check(pre)
-  intact_rock()
+  seed.intact(SET)
 else
   -- The rock mass as one continuum, joints tied, by the implicit prepass (Newton). Where Newton
   -- fails on the stage's load path and the four finer ones it tries after it (4, 8, 16 and 32

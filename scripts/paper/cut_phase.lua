@@ -16,10 +16,7 @@ local c = cavern.warhead{}
 local function build()
   seed.region{ case = given.case, set = "P", depth = 158, regions = c.stages, near = { c.outline }, edge = 1.5,
                far = 10, tolerance = 7e-4 }
-  local rock = seed.P.rock
-  material{ "intact", model = "mohr", density = rock.density, young = rock.young, poisson = rock.poisson,
-            cohesion = rock.cohesion, friction = rock.friction, tension = rock.tension }
-  assign{ material = "intact" }
+  seed.intact("P")
 end
 build()
 local names = {}

@@ -96,9 +96,7 @@ for _, depth in ipairs(DEPTHS) do
   local shear, tension, _, deepest, dug = areas(prepass{ stages = names, joints = false, steps = 1, solver = "lu" },
                                                 area)
   local radius = math.sqrt(dug / math.pi)
-  material{ "intact", model = "mohr", density = rock.density, young = rock.young, poisson = rock.poisson,
-            cohesion = rock.cohesion, friction = rock.friction, tension = rock.tension }
-  assign{ material = "intact" }
+  seed.intact(SET)
   -- As case.lua's prepass, so that the yielded zones are the ones its cracks are placed in.
   local pre = prepass{ stages = names, joints = false, steps = 2, restarts = 4, on_failure = "keep", solver = "lu" }
   if pre.failure then error(("depth %d m: the prepass stopped short, so its yielded area is not the whole "

@@ -6,6 +6,7 @@
 --   local seed = require "edem.seed"
 --   seed.region{ cross_spacing = 16, edge = 4 }   -- builds, zones, loads; returns info()
 --   seed.P.rock, seed.P.joint                      -- the parameter sets it uses (seed.S, seed.M too)
+--   seed.intact("P")                               -- the set's rock as Mohr-Coulomb, "intact"
 --   seed.elastoplastic{}                           -- Mohr-Coulomb rock, bonded joints (a prepass)
 --
 -- The region: 200 m x 180 m, centred on the origin, the joints of `case` (seed.cases; default 3:
@@ -123,6 +124,17 @@ function seed.region(t)
   boundary{ side = "bottom", fix = "y" }
   boundary{ side = "top", stress = "insitu" }
   return info()
+end
+
+-- The intact rock of a set (default "P") as Mohr-Coulomb, material "intact" in every zone: what a
+-- prepass yields in and the strength crackseed{} gives the potential cracks. Call it after
+-- seed.region{}.
+function seed.intact(set)
+  local rock = (seed[set or "P"] or error(("seed.intact: set must be \"P\", \"S\" or \"M\", got %s"):format(
+    tostring(set)), 2)).rock
+  material{ "intact", model = "mohr", density = rock.density, young = rock.young, poisson = rock.poisson,
+            cohesion = rock.cohesion, friction = rock.friction, tension = rock.tension }
+  assign{ material = "intact" }
 end
 
 -- The continuum an elastoplastic pre-analysis sees (prepass{}, and the explicit run it is checked
