@@ -150,13 +150,18 @@ std::optional<Found> nearest_edge(const Mechanics& m, int node, Vec2 p, Vec2 own
     nearest = std::min(nearest, distance_to_segment(p, at(m, edge.a), at(m, edge.b)));
   }
   const double about = std::min(search, nearest + 0.1 * reach);
+  // The held edge stays on offer a band further: a gridpoint whose nearest edges differ by about
+  // the band's width would otherwise be offered the squarer one at one search and not at the
+  // next, and its contact would swing between them (with its stress, made for one face, pressed
+  // on the other), making energy at every swing.
+  const double held_about = std::min(search, nearest + 0.2 * reach);
   EdgeChoice choice{.held = held, .own_size = norm(own_normal)};
   for (int e = first; e < last; ++e) {
     const ContactEdge& edge = cb.edges[static_cast<size_t>(e)];
     if (!edge.touchable || edge.a == node || edge.b == node) continue;
     const Vec2 a = at(m, edge.a), b = at(m, edge.b);
     const double d = distance_to_segment(p, a, b);
-    if (d > about) continue;
+    if (d > (e == held ? held_about : about)) continue;
     const double along = dot(p - a, b - a);
     choice.offer(e, d, dot(outward(a, b), own_normal), along >= 0.0 && along <= dot(b - a, b - a));
   }
@@ -675,6 +680,14 @@ constexpr double kLendingReaches = 4.0;
 // Faces along the same joint: their edges' normals within 20 degrees, parallel or opposed.
 const double kSameJoint = std::cos(20.0 * M_PI / 180.0);
 
+// Whether edges `a` and `b` of a block lie along the same face: their normals within 20 degrees.
+bool same_face(const Mechanics& m, int a, int b) {
+  if (a == b) return true;
+  const ContactEdge& ea = m.faces.edges[static_cast<size_t>(a)];
+  const ContactEdge& eb = m.faces.edges[static_cast<size_t>(b)];
+  return dot(outward(at(m, ea.a), at(m, ea.b)), outward(at(m, eb.a), at(m, eb.b))) > kSameJoint;
+}
+
 // The contacts pressed together before a detection, by the pair of blocks they join: a contact
 // made between two blocks where the same two already press on each other nearby takes their
 // faces' state instead of starting from nothing (inherit_faces). A gridpoint that slides past a
@@ -895,7 +908,13 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
       const auto old = std::lower_bound(set.list.begin(), set.list.end(), c, [](const Contact& x, const Contact& y) {
         return x.node != y.node ? x.node < y.node : x.other < y.other;
       });
-      const bool kept = old != set.list.end() && old->node == c.node && old->other == c.other;
+      // A contact found again keeps its state while its edge lies along the same face; found on
+      // another face of the block (a side past a corner), it starts anew as any contact made
+      // there: its closure, stress and length were the old face's (its in-situ closure,
+      // decimetres under soft joints, pressed on a side it never touched), and carried over
+      // they would make energy at the switch.
+      const bool kept = old != set.list.end() && old->node == c.node && old->other == c.other &&
+                        same_face(m, old->edge, c.edge);
       // What it stores as a stress given below finds it, for the prestress that stress adds.
       ContactEnergy had = kept ? contact_energy(*old, m.joint_params[static_cast<size_t>(old->material)]) : ContactEnergy{};
       if (kept) {

@@ -7,11 +7,15 @@
 //
 // The edge the contact had before (`held`) is kept while it is offered, the gridpoint still
 // projects onto it (not past its ends: a gridpoint sliding along a face goes on to the next
-// edge), and it faces the boundary within kHeldFacing of the best. A corner pressed into the
-// corner of the block diagonally across a crossing of two joints faces that block's two edges
-// equally (they are its own edges' continuations); choosing afresh at each search would swing
-// its force between their normals, some 100 degrees apart, as the blocks' small rotations
-// reorder them: a limit cycle that keeps the walls of the seed cavern from settling.
+// edge), and it faces the boundary within kHeldFacing of the best, or the best is an edge the
+// gridpoint lies past the end of. A corner pressed into the corner of the block diagonally
+// across a crossing of two joints faces that block's two edges equally (they are its own edges'
+// continuations); choosing afresh at each search would swing its force between their normals,
+// some 100 degrees apart, as the blocks' small rotations reorder them: a limit cycle that keeps
+// the walls of the seed cavern from settling. A tip that has slid past the corner of a face onto
+// the block's side faces that face more squarely than the side, yet is not over it: taken back
+// to the face at one search and handed to the side at the next, as the search's distances
+// reorder, it would swing between them the same way.
 #pragma once
 
 #include <algorithm>
@@ -31,6 +35,7 @@ struct EdgeChoice {
   int best = -1;
   double best_distance = std::numeric_limits<double>::infinity();     // [m]
   double best_opposition = std::numeric_limits<double>::infinity();   // [-]
+  bool best_over = false;  // the gridpoint projects onto the best edge
   double held_opposition = std::numeric_limits<double>::infinity();   // [-], infinite: not offered
 
   // `over`: the gridpoint projects onto the edge, between its ends.
@@ -42,6 +47,7 @@ struct EdgeChoice {
       best = edge;
       best_distance = distance;
       best_opposition = opposition;
+      best_over = over;
     }
   }
 
@@ -49,6 +55,7 @@ struct EdgeChoice {
   int chosen() const {
     const bool offered = held_opposition < std::numeric_limits<double>::infinity();
     if (held < 0 || held == best || !offered) return best;
+    if (!best_over) return held;
     return angle(held_opposition) <= angle(best_opposition) + kHeldFacing ? held : best;
   }
 

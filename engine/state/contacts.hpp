@@ -36,16 +36,19 @@
 // were done: a region that moves as a whole is not searched twice as often. The state of a
 // contact that persists is carried over, by its gridpoint and the other block, as stresses: its
 // length found again, its closure is kept and its shear force scaled with the length (within its
-// strength). A contact made where the same two blocks already press together nearby, along the
-// same joint, takes their faces' state: their closure at zero gap and their shear traction
-// (detect.cpp, LoadedFaces); a gridpoint sliding past a joint crossing onto the next block, or a
-// face sliding onto more of its neighbour, carries the joint's stress at once. Finding only
+// strength), while its new edge lies along the same face as its old one (normals within 20
+// degrees); found on another face of the block it starts anew. A contact made where the same
+// two blocks already press together nearby, along the same joint, takes their faces' state:
+// their closure at zero gap and their shear traction (detect.cpp, LoadedFaces); a gridpoint
+// sliding past a joint crossing onto the next block, or a face sliding onto more of its
+// neighbour, carries the joint's stress at once. Finding only
 // where things move keeps a few falling blocks from costing a search of the whole model every
 // few cycles. Between rebuilds the edge of a contact is fixed; a gridpoint
 // that slides past the edge's end is held at the end, at most an eighth of an edge away. At a
-// rebuild a contact keeps its edge while the gridpoint projects onto it and no other faces it
-// much more squarely (edge_choice.hpp): a corner pressed into a corner would otherwise swing
-// between that corner's two edges.
+// rebuild a contact keeps its edge while the gridpoint projects onto it and no other it projects
+// onto faces it much more squarely (edge_choice.hpp), and that edge stays on offer a band further
+// than the others (detect.cpp): a corner pressed into a corner, or a tip past the corner of a
+// face, would otherwise swing between two edges.
 #pragma once
 
 #include <algorithm>

@@ -1,5 +1,6 @@
 // Which edge a contact goes to: the squarest facing, the nearest among equals, and the edge it
-// had kept while no other faces the gridpoint more than 10 degrees more squarely. The corner
+// had kept while no other faces the gridpoint more than 10 degrees more squarely, or while the
+// squarer one is an edge the gridpoint lies past the end of. The corner
 // case is the seed cavern's: the tip of a 55 degree wedge pressed into the tip of the wedge
 // across a crossing of two joints, whose two edges it faces equally.
 #include <gtest/gtest.h>
@@ -81,6 +82,20 @@ TEST(EdgeChoice, AHeldEdgeTheGridpointHasSlidPastIsDropped) {
   choice.offer(4, 0.011, -1.0, false);
   choice.offer(5, 0.010, -1.0, true);
   EXPECT_EQ(choice.chosen(), 5);
+}
+
+TEST(EdgeChoice, AHeldEdgeIsNotLeftForOneTheGridpointIsPastTheEndOf) {
+  // A tip of one block past the corner of the other's face, over that block's side: the face
+  // faces it 75 deg off squarely, the side 115 deg (it leans away), but the tip is past the face's
+  // end. Held on the side, it stays there; with nothing held the squarer face wins.
+  const double face = -std::cos(75.0 * M_PI / 180.0), side = -std::cos(115.0 * M_PI / 180.0);
+  EdgeChoice held{.held = 2, .own_size = 1.0}, fresh{.own_size = 1.0};
+  for (EdgeChoice* c : {&held, &fresh}) {
+    c->offer(1, 0.24, face, false);
+    c->offer(2, 0.21, side, true);
+  }
+  EXPECT_EQ(held.chosen(), 2);
+  EXPECT_EQ(fresh.chosen(), 1);
 }
 
 TEST(EdgeChoice, AHeldEdgeNoLongerAmongTheNearOnesIsDropped) {
