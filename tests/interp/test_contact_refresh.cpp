@@ -65,5 +65,58 @@ TEST(ContactRefresh, TheFallingBlockLandsOnTheBaseWithNoContactFoundLate) {
   )");
 }
 
+// A block on another, their joint given 1 MPa (closed 0.1 m), is slid 6 cm right, its corner past
+// the lower block's, then 20 cm down: its corner lies beside the lower block's side, 6 cm out. Its
+// contact, found again on that side, must not keep the closure it had on the top face: 4 cm of
+// it would be left, and the side would push a corner that is nowhere near it.
+TEST(ContactRefresh, ACornerSlidOffALoadedFaceIsNotPushedByTheSideItDropsBeside) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, R"lua(
+    model{ title = "a loaded corner slid off a face" }
+    block{ x = {-1, 0}, y = {-1, 0} }
+    block{ x = {-1, 0}, y = {0, 1} }
+    zone{ edge = 1 }
+    material{ "rock", density = 2600, young = 1e12, poisson = 0.25 }
+    assign{ material = "rock" }
+    joint_material{ "j", kn = 1e7, ks = 1e7, friction = 0 }
+    jassign{ material = "j" }
+    local lower, upper = gp_near(-0.5, -0.9).block, gp_near(-0.5, 0.9).block
+    boundary{ polygon = {{-1.1, -1.1}, {0.1, -1.1}, {0.1, -0.9}, {-1.1, -0.9}}, fix = "xy" }
+    insitu{ sxx = 0, syy = -1e6, szz = 0 }
+    cycle(1)
+    local function corner_contacts()
+      local found = {}
+      for c in contacts() do
+        if c.block == upper and c.other == lower and c.x > -0.01 then found[#found + 1] = c end
+      end
+      return found
+    end
+    local given = corner_contacts()
+    assert(#given == 1 and given[1].fn < 0 and math.abs(given[1].un + 0.1) < 1e-3,
+           "the corner is not pressed in by the given stress")
+    -- The upper block moved as a rigid body by its gridpoints above its base (those on its base
+    -- lie on the lower block's and would be selected with them).
+    local driven = {}
+    for g in gridpoints() do if g.block == upper and g.y > 0.25 then driven[#driven + 1] = g end end
+    local function drive(vx, vy)
+      for _, g in ipairs(driven) do
+        local h = 0.01  -- boundary{} selects by the gridpoints' positions as built
+        boundary{ polygon = {{g.x - h, g.y - h}, {g.x + h, g.y - h}, {g.x + h, g.y + h}, {g.x - h, g.y + h}},
+                  xvel = vx, yvel = vy }
+      end
+    end
+    while gp_near(0, 1).ux < 0.06 do drive(1e-2, 0); cycle(1) end
+    while gp_near(0, 1).uy > -0.2 do drive(0, -1e-2); cycle(1) end
+    drive(0, 0)
+    cycle(20)
+    for _, c in ipairs(corner_contacts()) do
+      assert(c.x > 0.03 and c.y < -0.1, ("the corner is at (%g, %g), not beside the side"):format(c.x, c.y))
+      assert(c.fn == 0, ("the side pushes the corner %g m out of it with %g N/m (closure %g m)"):format(
+                         c.x, c.fn, -c.un))
+    end
+  )lua");
+}
+
 }  // namespace
 }  // namespace edem::test
