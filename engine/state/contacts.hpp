@@ -41,10 +41,10 @@
 // two blocks already press together nearby, along the same joint, takes their faces' state:
 // their closure at zero gap and their shear traction (detect.cpp, LoadedFaces); a gridpoint
 // sliding past a joint crossing onto the next block, or a face sliding onto more of its
-// neighbour, carries the joint's stress at once. Finding only
-// where things move keeps a few falling blocks from costing a search of the whole model every
-// few cycles. Between rebuilds the edge of a contact is fixed; a gridpoint
-// that slides past the edge's end is held at the end, at most an eighth of an edge away. At a
+// neighbour, carries the joint's stress at once. Finding only where things move keeps a few
+// falling blocks from costing a search of the whole model every few cycles. Between rebuilds the
+// edge of a contact is fixed; a gridpoint that slides past the edge's end is held at the end, at
+// most an eighth of an edge away. At a
 // rebuild a contact keeps its edge while the gridpoint projects onto it and no other it projects
 // onto faces it much more squarely (edge_choice.hpp), and that edge stays on offer a band further
 // than the others (detect.cpp): a corner pressed into a corner, or a tip past the corner of a
