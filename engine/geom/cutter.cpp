@@ -200,9 +200,8 @@ class BaseCutter {
       collect_rings();
       fixed_at_.clear();
       bent_in_round_.clear();
-      unfixable_.clear();
       const int fixes = snap_small_features();
-      if (fixes == 0 && unfixable_.empty()) {
+      if (fixes == 0) {
         // Clean: now cut back the optional pieces that make a sharp corner, then clean again.
         const int cut = cut_back_sharp_corners();
         if (cut == 0) break;
@@ -211,11 +210,9 @@ class BaseCutter {
         continue;
       }
       snapped += fixes;
-      if (fixes > 0 && round + 1 < kMaxSnapRounds) continue;
-      // Bending goes round in circles, or leaves a feature no bend changes: the optional cuts
-      // still being bent or in such a feature give way (else the last-resort ones), and the rest
-      // get half the rounds again to settle.
-      bent_in_round_.insert(bent_in_round_.end(), unfixable_.begin(), unfixable_.end());
+      if (round + 1 < kMaxSnapRounds) continue;
+      // Bending goes round in circles: the optional cuts still being bent give way (else the
+      // last-resort ones), and the rest get half the rounds again to settle.
       if (left_out_ < kMaxLeftOut &&
           (leave_out(bent_in_round_, false) || leave_out(bent_in_round_, true))) {
         round = kMaxSnapRounds / 2 - 1;
@@ -420,16 +417,25 @@ class BaseCutter {
   }
 
   // Piece `id` already has vertex k where it is bent to: its neighbours closer than the
-  // tolerance to it go (a small feature the piece makes by itself). False if none did.
+  // tolerance to it go (a small feature the piece makes by itself), and so does a neighbour the
+  // piece folds back at, running out to it along a segment and back to q beside that segment
+  // (a spike: bent by its two ends in turn, a piece can fold so, and no bend through q unfolds
+  // it). False if none went.
   bool drop_close_neighbours(int id, size_t k) {
     auto& pts = pieces_[static_cast<size_t>(id)].points;
     const Point q = pts[k];
     const auto close = [&](size_t i) {
       return CGAL::compare(CGAL::squared_distance(q, pts[i]), tolerance2_at(q)) == CGAL::SMALLER;
     };
+    const auto near_segment = [&](size_t i, size_t j) {
+      return CGAL::compare(CGAL::squared_distance(q, Segment(pts[i], pts[j])), tolerance2_at(q)) == CGAL::SMALLER;
+    };
     const size_t before = pts.size();
-    if (k + 1 < pts.size() && pts.size() > 2 && close(k + 1)) pts.erase(pts.begin() + static_cast<long>(k) + 1);
-    if (k > 0 && pts.size() > 2 && close(k - 1)) pts.erase(pts.begin() + static_cast<long>(k) - 1);
+    if (k + 1 < pts.size() && pts.size() > 2 &&
+        (close(k + 1) || (k + 2 < pts.size() && near_segment(k + 1, k + 2))))
+      pts.erase(pts.begin() + static_cast<long>(k) + 1);
+    if (k > 0 && pts.size() > 2 && (close(k - 1) || (k > 1 && near_segment(k - 2, k - 1))))
+      pts.erase(pts.begin() + static_cast<long>(k) - 1);
     return pts.size() != before;
   }
 
@@ -481,29 +487,14 @@ class BaseCutter {
     return changed;
   }
 
-  // Vertex v and a vertex w near it become one, at q (w's rounded position): a cut with a point
-  // at v moves that point there (a bend keeps it where q is further from it than the tolerance at
-  // q, and adds q beside it: a kink that later bends can fold into a spike), the other cuts
-  // through v are bent there, and those through w follow.
-  bool merge(Vertex v, Vertex w) {
-    const Point q = rounded(w->point());
-    bool changed = false;
-    for (int id : cut_pieces_at(v)) {
-      const auto& pts = pieces_[static_cast<size_t>(id)].points;
-      changed |= std::find(pts.begin(), pts.end(), v->point()) != pts.end() ? reroute(id, v->point(), q) : bend(id, q);
-    }
-    if (w->point() != q)
-      for (int id : cut_pieces_at(w)) changed |= reroute(id, w->point(), q);
-    return changed;
-  }
-
   // Resolve a vertex v closer than the tolerance to an edge e it is not on.
   bool fix(Vertex v, Halfedge e) {
     const Point& p = v->point();
     const bool v_fixed = is_base_vertex(p);
     const bool e_base = has_base_piece(e, pieces_);
     // A nearby end of e: bring v's cuts to it (the two vertices become one).
-    if (const std::optional<Vertex> w = end_near(p, e); w && !v_fixed) return merge(v, *w);
+    if (const std::optional<Vertex> w = end_near(p, e); w && !v_fixed)
+      return bend_all(cut_pieces_at(v), *w, rounded((*w)->point()));
     if (!e_base) {
       // Bend e's cuts through v.
       const auto& on_e = e->curve().data();
@@ -540,7 +531,8 @@ class BaseCutter {
   // moves, not e: a joint keeps its line.
   bool reach(Vertex v, Halfedge e) {
     const Point& p = v->point();
-    if (const std::optional<Vertex> w = end_near(p, e)) return merge(v, *w);
+    if (const std::optional<Vertex> w = end_near(p, e))
+      return bend_all(cut_pieces_at(v), *w, rounded((*w)->point()));
     std::vector<int> ids = cut_pieces_at(v);
     if (!has_base_piece(e, pieces_)) ids.insert(ids.end(), e->curve().data().begin(), e->curve().data().end());
     return bend_all(ids, std::nullopt, foot(p, e));
@@ -600,16 +592,6 @@ class BaseCutter {
             last_bent_ = ids;
             for (int id : ids) bent_in_round_.emplace_back(id, pv);
             break;
-          }
-          // No bend changes it (a cut folded back on itself, through v already). Where only the
-          // zone-size tolerance finds it, it may stay (fixes nearby often clear it); below the
-          // model's own, and not the base's, it is a needle zoning cannot take.
-          if (!(is_base_vertex(v->point()) && has_base_piece(he, pieces_)) &&
-              CGAL::compare(CGAL::squared_distance(v->point(), s), Kernel::FT(tolerance_ * tolerance_)) ==
-                  CGAL::SMALLER) {
-            last_fix_ = pv;
-            last_bent_ = ids;
-            for (int id : ids) unfixable_.emplace_back(id, pv);
           }
         }
       }
@@ -873,7 +855,6 @@ class BaseCutter {
   Vec2 last_fix_{};             // where the last small feature was, for the error message
   std::vector<int> last_bent_;  // the pieces its fix bent
   std::vector<std::pair<int, Vec2>> bent_in_round_;  // the pieces the last round's fixes bent, and where
-  std::vector<std::pair<int, Vec2>> unfixable_;  // the pieces in the last round's features no bend changed, and where
   std::vector<Piece> pieces_;
   std::vector<Point> base_vertices_;
   Arrangement arrangement_;

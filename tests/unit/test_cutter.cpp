@@ -232,27 +232,6 @@ TEST(Cutter, ACutEndingWithinTheToleranceOfAnotherReachesIt) {
   EXPECT_EQ(short_of.blocks().dropped_cuts, 1);
 }
 
-// Where the tolerance grows from a joint crossing w towards a cut's end v beside it, v is within
-// its own tolerance of w but w's tolerance is less: the cut's end moves to w (no stub is left from
-// w back to v, to be dropped as dangling or folded by later bends into a needle).
-TEST(Cutter, ACutEndMergedIntoACrossingWhereTheToleranceGrowsMovesThere) {
-  CutInput input;
-  input.bases.push_back(box(-10, 10, -10, 10));
-  input.tolerance = 1e-3;
-  input.local_tolerance = [](Vec2 p) { return 0.1 + 0.5 * std::max(p.x, 0.0); };
-  input.largest_tolerance = 0.1 + 0.5 * 10.0;
-  input.cuts.push_back({{-11, 0}, {11, 0}, {EdgeKind::joint, 0, 0, false}});
-  input.cuts.push_back({{0, -11}, {0, 11}, {EdgeKind::joint, 1, 1, false}});
-  const Vec2 v{0.15, 0.02};  // 0.151 m from (0, 0): tolerance 0.175 at v, 0.1 at the crossing
-  input.cuts.push_back({{4, 11}, v, {EdgeKind::crack, -1, 0, false}});
-  const BlockSet set = cut_blocks(input);
-  EXPECT_EQ(set.dropped_cuts, 0);
-  EXPECT_EQ(set.blocks.size(), 5u);
-  EXPECT_NEAR(total_area(set), 400.0, 1e-9 * 400.0);
-  for (const Block& b : set.blocks)
-    for (const Vec2 p : b.outer.points) EXPECT_GT(norm(p - v), 0.1) << "a corner at the cut's old end";
-}
-
 // The seed region's block and its main joint set (60 deg at 16, 12, 8 m), at tolerance 1e-3.
 Model seed_region_coarse() {
   Model model(ModelDef{"", 1e-3});
@@ -652,10 +631,11 @@ std::pair<double, Vec2> closest_vertex_to_an_edge(const Ring& ring) {
 }
 
 // The cuts crackseed{ auto } gives the study's Case 3 at 262 m, where the tolerance grows with the
-// zones away from the opening. A group's outline segment, bent through a joint crossing at its
-// one end and then its other end bent back towards the first, folded into a spike: block 252
-// came out with a corner of 1e-8 rad, (-15.314, 5.475) m, that zoning could not cut off. No block
-// may have a corner within the model's tolerance of an edge of its own.
+// zones away from the opening. A group's outline segment is bent through a joint crossing beyond
+// its one end, and then that end is bent back along it: the segment folds into a spike, which a
+// bend through its end cannot unfold, and block 252 kept a corner of 1e-8 rad at (-15.314, 5.475)
+// m that zoning could not cut off. No block may have a corner within the model's tolerance of an
+// edge of its own.
 TEST(Cutter, AnOutlineBentBackOnItselfLeavesNoNeedle) {
   const CutInput input = read_cut_input("cuts_folding_an_outline_into_a_needle.txt");
   ASSERT_EQ(input.cuts.size(), 818u);
