@@ -2,10 +2,8 @@
 // for (a cut through a vertex, along an edge, nearly parallel to another).
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <functional>
 #include <memory>
 #include <numbers>
 #include <random>
