@@ -4,7 +4,6 @@
 
 #include <cmath>
 #include <fstream>
-#include <memory>
 #include <numbers>
 #include <random>
 #include <sstream>
@@ -545,7 +544,7 @@ CutInput read_cut_input(const std::string& name) {
   std::ifstream file(std::string(EDEM_UNIT_DATA) + "/" + name);
   EXPECT_TRUE(file.good()) << name;
   CutInput input;
-  auto size = std::make_shared<SizeField>();
+  SizeField size;
   double sliver = 0.0;
   std::string line;
   while (std::getline(file, line)) {
@@ -575,16 +574,16 @@ CutInput read_cut_input(const std::string& name) {
       cut.last_resort = last_resort != 0;
       input.cuts.push_back(cut);
     } else if (tag == "size") {
-      in >> size->edge >> size->far >> size->growth >> sliver;
+      in >> size.edge >> size.far >> size.growth >> sliver;
     } else if (tag == "near") {
-      size->near.push_back(polygon());
+      size.near.push_back(polygon());
     } else if (tag == "tol") {
       in >> input.tolerance;
     }
   }
   if (sliver > 0.0) {
-    input.local_tolerance = [size, sliver](Vec2 p) { return sliver * size->at(p); };
-    input.largest_tolerance = sliver * size->far;
+    input.local_tolerance = [size, sliver](Vec2 p) { return sliver * size.at(p); };
+    input.largest_tolerance = sliver * size.far;
   }
   return input;
 }
@@ -595,10 +594,8 @@ CutInput read_cut_input(const std::string& name) {
 // there lays them; bent to rounded points, every cut is laid at the first try, and so are the same
 // cuts all required. (The fresh start stays for inputs that still go round in circles; the cuts of
 // the tests above that do have nothing optional near the spot to leave out.)
-CutInput cuts_that_bend_two_joints_together() { return read_cut_input("cuts_bending_two_joints_together.txt"); }
-
 TEST(Cutter, JointsBentTogetherByOptionalCutsAreLaid) {
-  const CutInput input = cuts_that_bend_two_joints_together();
+  const CutInput input = read_cut_input("cuts_bending_two_joints_together.txt");
   ASSERT_EQ(input.cuts.size(), 638u);
   CutInput required = input;
   for (CutSegment& cut : required.cuts) cut.optional = cut.last_resort = false;
