@@ -10,6 +10,7 @@
 
 #include "core/error.hpp"
 #include "contact/detect.hpp"
+#include "contact/joint_law.hpp"
 #include "crack/judge.hpp"
 #include "bolt/bolt_coupling.hpp"
 #include "solver/cycle.hpp"
@@ -64,7 +65,10 @@ std::string overlap_cause(const Mechanics& m, const Measure& measure) {
   const size_t n = static_cast<size_t>(c.node);
   const Vec2 p{m.origin[2 * n] + m.u[2 * n], m.origin[2 * n + 1] + m.u[2 * n + 1]};
   const JointParams& jp = m.joint_params[static_cast<size_t>(c.material)];
-  const double limit = overlap_limit(m), needs = c.sn / jp.kn_max;
+  // The closure its joint law gives at the contact's stress (the law's inverse: a nonlinear law
+  // closes more than sigma_n / kn_max), and the overlap that is beyond its prestress.
+  const double limit = overlap_limit(m), closes = c.sn > 0.0 ? closure_at(jp, c.sn) : 0.0;
+  const double needs = closes - (c.closure0 + c.dilation);
   // The gridpoint's shortest touchable edge, and what made it.
   const ContactBoundary& cb = m.faces;
   const auto k = std::lower_bound(cb.nodes.begin(), cb.nodes.end(), c.node) - cb.nodes.begin();
@@ -93,9 +97,16 @@ std::string overlap_cause(const Mechanics& m, const Measure& measure) {
                         "with next to no force",
                         carrying, half_edges);
   else if (needs > 0.5 * limit)
-    cause = fmt::format("joint material '{}' is too soft for this stress: sigma_n / kn is {:.3g} m, more than half "
-                        "the limit; give a larger set{{ overlap }}, or a stiffer joint",
-                        m.joint_materials[static_cast<size_t>(c.material)].name, needs);
+    cause = fmt::format("joint material '{}' is too soft for this stress: its law closes {:.3g} m at it, {:.3g} m "
+                        "beyond its prestress, more than half the limit; give a larger set{{ overlap }}, or a "
+                        "stiffer joint",
+                        m.joint_materials[static_cast<size_t>(c.material)].name, closes, needs) +
+            // The stress is the force over the length: a corner pressed in point first raises it.
+            (carrying < 0.1 * half_edges
+                 ? fmt::format(" (its force acts over {:.3g} m of the {:.3g} m its gridpoint's half-edges give: a "
+                               "corner pressed in point first, which raises the stress)",
+                               carrying, half_edges)
+                 : std::string());
   else if (moved > 0.1 * limit)
     cause = fmt::format("driven in faster than the contact pushes back: the gridpoint moves {:.3g} m a step "
                         "(a boundary velocity or a time step too large)", moved);
@@ -103,16 +114,16 @@ std::string overlap_cause(const Mechanics& m, const Measure& measure) {
     cause = fmt::format("a sliver: the gridpoint's shortest edge, {:.3g} m, is under a fifth of the median "
                         "edge ({:.3g} m), and a tip that short is driven into the face", shortest, cb.median_edge);
   else
-    cause = fmt::format("the contact carries only what its stress gives ({:.3g} m of closure) yet is {:.3g} m in: "
+    cause = fmt::format("the contact carries only what its stress gives ({:.3g} m of overlap) yet is {:.3g} m in: "
                         "it was made late, or the gridpoint went past a corner it was not in contact with",
                         needs, measure.overlap);
   return fmt::format(
       "overlap too great: the gridpoint at ({:.6g}, {:.6g}) of block {} is {:.3g} m inside block {}, more than "
       "the limit of {:.3g} m (set{{ overlap }}); its contact carries {:.4g} Pa over {:.3g} m, {:.3g} of it over "
-      "the edge, with joint material '{}' (kn up to {:.4g} Pa/m: {:.3g} m of closure at that stress; prestress "
+      "the edge, with joint material '{}' (kn up to {:.4g} Pa/m; its law closes {:.3g} m at that stress; prestress "
       "{:.3g} m); the gridpoint's shortest edge is {:.3g} m, {}; measured cause: {}",
       p.x, p.y, c.block + 1, measure.overlap, c.other + 1, limit, c.sn, carrying,
-      c.share, m.joint_materials[static_cast<size_t>(c.material)].name, jp.kn_max, needs, c.closure0 + c.dilation,
+      c.share, m.joint_materials[static_cast<size_t>(c.material)].name, jp.kn_max, closes, c.closure0 + c.dilation,
       shortest, made_by, cause);
 }
 
