@@ -123,6 +123,7 @@ int run_energy(lua_State* L, Context& context, const Args& args) {
   set_field(L, "largest", r.largest);
   set_field(L, "relative_error", r.relative_error());
   set_field(L, "zone_error", r.zone_error);
+  set_field(L, "restarted", r.restarted);
   set_field(L, "contact_error", r.contact_error);
   set_field(L, "bolt_error", r.bolt_error);
   return 1;
@@ -468,7 +469,10 @@ const Command& energy_command() {
           "soften or break, cohesive faces that part), damping, bolt_plastic (yield, breaks, grout "
           "slip). error: stored + dissipated + excavated less the work done (positive: energy "
           "made); largest: the largest term in magnitude; relative_error = error / largest; "
-          "zone_error, contact_error, bolt_error: where the error arises",
+          "zone_error, contact_error, bolt_error: where the error arises; restarted: of "
+          "contact_error, what contacts made (negative: lost) where a detection found one on "
+          "another face of the block its gridpoint presses into and it started anew there (a "
+          "gridpoint pressed in about as deep as that block is thick)",
       .usage = "local e = energy()\nprint(e.error, e.relative_error)\nenergy{ reset = true }\n"
                "energy{ by_contact = true }  -- then: for c in contacts() do print(c.id, c.energy_made) end",
       .bare_call = true,

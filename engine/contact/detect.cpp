@@ -913,8 +913,8 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
       // there: its closure, stress and length were the old face's (its in-situ closure,
       // decimetres under soft joints, pressed on a side it never touched), and carried over
       // they would make energy at the switch.
-      const bool kept = old != set.list.end() && old->node == c.node && old->other == c.other &&
-                        same_face(m, old->edge, c.edge);
+      const bool found_again = old != set.list.end() && old->node == c.node && old->other == c.other;
+      const bool kept = found_again && same_face(m, old->edge, c.edge);
       // What it stores as a stress given below finds it, for the prestress that stress adds.
       ContactEnergy had = kept ? contact_energy(*old, m.joint_params[static_cast<size_t>(old->material)]) : ContactEnergy{};
       if (kept) {
@@ -985,6 +985,11 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
         book.made += stored_in(c, p) - stored - (m.energy.prestress - prestress_before);
         books.push_back(book);
       }
+      // Found on another face, it starts anew: what that changes in its energy beyond a stress it
+      // was given is the method's, named in the balance (EnergyLedger::restarted).
+      if (found_again && !kept && m.energy.started)
+        m.energy.restarted += stored_in(c, p) - (m.energy.prestress - prestress_before) -
+                              stored_in(*old, m.joint_params[static_cast<size_t>(old->material)]);
       list.push_back(c);
     }
   }

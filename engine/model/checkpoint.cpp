@@ -226,6 +226,7 @@ template <class Ar> void fields(Ar& ar, EnergyLedger& e) {
   ar("commands", e.commands); ar("excavated", e.excavated); ar("plastic", e.plastic); ar("slip", e.slip);
   ar("bond", e.bond); ar("damping", e.damping); ar("bolt_plastic", e.bolt_plastic); ar("by_contacts", e.by_contacts);
   ar("by_bolts", e.by_bolts);
+  optional_member(ar, "restarted", e.restarted, 0.0);  // files written before it have none
 }
 template <class Ar> void fields(Ar& ar, History& h) {
   ar("name", h.name); ar("every", h.every); ar("unit", h.unit); ar("quantity", h.quantity); ar("at", h.at);

@@ -135,6 +135,7 @@ EnergyReport energy_report(const Mechanics& m) {
   r.contact_error = own.contact() + r.slip + r.bond - r.prestress + e.by_contacts;
   r.bolt_error = own.bolt + r.bolt_plastic + e.by_bolts;
   r.zone_error = r.error - r.contact_error - r.bolt_error;
+  r.restarted = e.restarted;
   for (const double term : {r.stored.kinetic, r.stored.strain, r.stored.normal, r.stored.shear, r.stored.bolt,
                             r.gravity, r.boundary, r.release, r.prestress, r.commands, r.excavated, r.plastic,
                             r.slip, r.bond, r.damping, r.bolt_plastic})

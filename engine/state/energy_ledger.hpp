@@ -64,6 +64,11 @@ struct EnergyLedger {
   // part checks it (the zones' is what is left of the nodes' kinetic energy).
   double by_contacts = 0.0;  // contact forces on the rock's nodes
   double by_bolts = 0.0;     // grout on the rock's nodes, and segments and grout on the bolts' own
+  // Of the contacts' energy made, what detections made (negative: lost) where a contact was found
+  // on another face of the block its gridpoint presses into and started anew there: what it
+  // stores then, beyond a stress it was given, less what it held on the old face. A gridpoint
+  // pressed in about as deep as the block is thick is as near to another face.
+  double restarted = 0.0;
 };
 
 // The balance as energy() reports it [J/m]; stored energies as changes since the start.
@@ -78,6 +83,8 @@ struct EnergyReport {
   // Where it arises: the contacts' and the bolts' stored and dissipated energy less the work done
   // on them; the zones' (with the nodes' integration) the rest. They add up to `error`.
   double zone_error = 0.0, contact_error = 0.0, bolt_error = 0.0;
+  // Of contact_error, what contacts found on another face and started anew made (EnergyLedger).
+  double restarted = 0.0;
   double largest = 0.0;  // the largest term, in magnitude
   double relative_error() const { return largest > 0.0 ? error / largest : 0.0; }
 };

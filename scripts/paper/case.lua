@@ -626,11 +626,11 @@ do
   local e = energy()
   print(("%s: energy balance of the excavation [J/m]: gravity %.4g, boundary %.4g, loads taken off %.4g, "
          .. "prestress %.4g, dug out %.4g; stored %.4g; slip %.4g, plastic %.4g, bonds %.4g, damping %.4g, bolts %.4g; "
-         .. "error %.3g (%.2g %% of the largest term, %.4g; arising in the zones %.3g, the contacts %.3g, "
-         .. "the bolts %.3g)"):format(
+         .. "error %.3g (%.2g %% of the largest term, %.4g; arising in the zones %.3g, the contacts %.3g "
+         .. "(%.3g of it where contacts started anew on another face), the bolts %.3g)"):format(
     tag, e.gravity, e.boundary, e.release, e.prestress, e.excavated, e.kinetic + e.strain + e.contact + e.bolt,
     e.slip, e.plastic, e.bond, e.damping, e.bolt_plastic, e.error, 100 * e.relative_error, e.largest,
-    e.zone_error, e.contact_error, e.bolt_error))
+    e.zone_error, e.contact_error, e.restarted, e.bolt_error))
 end
 plot{ file = tag .. "_cracks.png", show = { "blocks", "cracks", "bolts" }, window = { -50, 50, -40, 50 } }
 local final_profile = profile{ from = PROFILE_LINE.from, to = PROFILE_LINE.to, quantity = "uy",

@@ -1,6 +1,7 @@
 // energy(): the energy balance from a script; its terms as histories; what commands between
 // cycles change (reset{}, excavate{}) booked as theirs; the same bits on any thread count; each
-// contact's own balance adding up to the contacts' part.
+// contact's own balance adding up to the contacts' part; contacts that start anew on another face
+// named.
 #include <lua.hpp>
 
 #include "interp_test.hpp"
@@ -105,6 +106,43 @@ TEST(Energy, TheContactsOwnBalancesAddUpToTheirPartOfTheError) {
     while info().time < 0.15 do cycle(100); check() end  -- landed at 0.1 s, bouncing back up
     energy{ by_contact = false }
     for c in contacts() do assert(c.energy_made == nil) end
+  )");
+}
+
+// A block pressed through a soft joint into a slab 0.1 m thick: once its gridpoints are deeper in
+// the slab than half its thickness, a detection finds them nearer the slab's underside and their
+// contacts start anew there, what their springs held on the top face gone. The balance names what
+// those restarts made (negative: lost) as `restarted`, nearly all of the contacts' error then.
+TEST(Energy, ContactsFoundOnAnotherFaceAreNamedInTheBalance) {
+  Interpreter interpreter({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+  expect_runs(interpreter, R"(
+    block{ x = {0, 1}, y = {-1, 0} }
+    block{ x = {0, 1}, y = {0, 0.1} }
+    block{ x = {0.2, 0.8}, y = {0.1, 0.7} }
+    zone{ edge = 0.1 }
+    material{ "rock", density = 2600, young = 10e9, poisson = 0.25 }
+    assign{ material = "rock" }
+    joint_material{ "j", kn = 1e7, ks = 1e7, friction = 30 }
+    jassign{ material = "j" }
+    local slab, block = gp_near(0.5, 0.05).block, gp_near(0.5, 0.7).block
+    boundary{ side = "bottom", fix = "xy" }
+    set{ overlap = 0.3 }
+    boundary{ polygon = {{0.1, 0.65}, {0.9, 0.65}, {0.9, 0.75}, {0.1, 0.75}}, xvel = 0, yvel = -2e-5 }
+    local function underside()  -- the block's gridpoints in contact with the slab's underside
+      local n = 0
+      for c in contacts() do if c.block == block and c.other == slab and c.normal.y < -0.5 then n = n + 1 end end
+      return n
+    end
+    cycle(2500)
+    local before = energy()
+    assert(underside() == 0, ("%d gridpoints on the underside already"):format(underside()))
+    cycle(1500)
+    local after = energy()
+    assert(underside() > 0, "no gridpoint was handed to the slab's underside")
+    local restarted, made = after.restarted - before.restarted, after.contact_error - before.contact_error
+    assert(restarted < -1e3, ("restarted %g J/m"):format(restarted))
+    assert(math.abs(made - restarted) < 0.01 * math.abs(restarted),
+           ("the contacts made %g J/m, %g of it restarting"):format(made, restarted))
   )");
 }
 
