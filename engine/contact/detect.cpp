@@ -986,8 +986,10 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
         books.push_back(book);
       }
       // Found on another face, it starts anew: what that changes in its energy beyond a stress it
-      // was given is the method's, named in the balance (EnergyLedger::restarted).
-      if (found_again && !kept && m.energy.started)
+      // was given is the method's, named in the balance (EnergyLedger::restarted). (A detection
+      // between cycling commands, a view's or a command's first, changes what commands are booked
+      // with instead.)
+      if (found_again && !kept && m.energy.started && !m.energy.last_current)
         m.energy.restarted += stored_in(c, p) - (m.energy.prestress - prestress_before) -
                               stored_in(*old, m.joint_params[static_cast<size_t>(old->material)]);
       list.push_back(c);
