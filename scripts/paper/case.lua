@@ -12,6 +12,8 @@
 --             before its load comes off, so that they act on what the step loosens) [solved]
 --   set       P (the prototype), S (P with joint stiffness x 17.86 only) or M (the seed's listed
 --             values unscaled): edem.seed [P]
+--   rock      elastic (the seed's: the rock between the potential cracks does not fail) or mohr
+--             (Mohr-Coulomb with the set's strength, as in the prepass) in the steps [elastic]
 --   prepass   jointed (the seed's: Mohr-Coulomb blocks and slipping joints dug by the explicit
 --             solver, edem.yield_pass) or continuum (prepass{}, joints tied) [jointed]
 --   judge     equilibrium (cracks judged on each step's solved state, in rounds until none
@@ -68,7 +70,7 @@ local loose = require "edem.loose"
 
 local given = settings{
   case = 3, depth = 158, bolts = "none", bolt_at = "solved", set = "P", prepass = "jointed",
-  judge = "equilibrium", release = 0, release_offset = 0, damping = "local", prepass_damping = "local",
+  rock = "elastic", judge = "equilibrium", release = 0, release_offset = 0, damping = "local", prepass_damping = "local",
   edge = 1.5, far = 10, stages = 16, step_cycles = 40000, stall = 0,
   similar = 45, min_angle = 30, origin_x = "centroid", origin_y = "centroid",
   by_mode = false, muck = "loose", first = "left", mirror = false, judge_most = 0, judge_radius = 0,
@@ -84,6 +86,7 @@ end
 local CASE, DEPTH, BOLTS = given.case, given.depth, one_of("bolts", { "none", "1", "2" })
 local SET, EDGE, FAR = one_of("set", { "P", "S", "M" }), given.edge, given.far
 local JUDGE_AT = one_of("judge", { "equilibrium", "cycles" })
+local ROCK = one_of("rock", { "elastic", "mohr" })
 local STAGES, RELEASE_OFFSET = given.stages, given.release_offset
 local RELEASE = (given.release ~= 0 and given.release or (JUDGE_AT == "equilibrium" and 100 or 20000)) + RELEASE_OFFSET
 if not (math.type(RELEASE) == "integer" and RELEASE >= 1) then
@@ -135,7 +138,7 @@ local columns = { "case", "set", "depth", "bolts", "release", "steps", "cracks",
                   "cuts_left_out", "threads", "seconds", "prepass_stopped", "unconverged", "stopped",
                   "points_fallen", "edge_m", "far_m", "first", "muck", "damping", "mirror", "crack_length_m",
                   "origin_x_m", "origin_y_m", "judge", "judgments", "prepass", "bolt_at", "prepass_damping",
-                  "unconverged_why" }
+                  "unconverged_why", "rock" }
 for _, file in ipairs{ TABLE, STEPS_TABLE } do
   local existing = io.open(file, "r")
   if existing then
@@ -159,6 +162,7 @@ if JUDGE_RADIUS ~= 0 then tag = tag .. "_radius" end
 if ORIGIN then tag = tag .. ("_origin%g_%g"):format(ORIGIN_X, ORIGIN_Y) end
 if PREPASS == "continuum" then tag = tag .. "_continuum" end
 if BOLT_AT == "dug" then tag = tag .. "_bolted_when_dug" end
+if ROCK == "mohr" then tag = tag .. "_mohr" end
 local started = os.time()
 
 local c = cavern.warhead{}
@@ -225,7 +229,12 @@ if COHESIVE then
 end
 local groups = crackseed{ auto = pre, spacing = 4.8, material = "intact", similar = SIMILAR, min_angle = MIN_ANGLE,
                           origin = ORIGIN, by_mode = BY_MODE, after = COHESIVE and "cohesive" or nil }
-material{ "rock", density = rock.density, young = rock.young, poisson = rock.poisson }
+if ROCK == "mohr" then
+  material{ "rock", model = "mohr", density = rock.density, young = rock.young, poisson = rock.poisson,
+            cohesion = rock.cohesion, friction = rock.friction, tension = rock.tension }
+else
+  material{ "rock", density = rock.density, young = rock.young, poisson = rock.poisson }
+end
 assign{ material = "rock" }
 local n = info()
 print(("%s: %d zones yielded in the prepass, %d crack groups, %d sections (%d crack pieces left out, %d cut back "
@@ -497,7 +506,7 @@ local function result_row()
                 '"' .. table.concat(unconverged, " ") .. '"',
                 '"' .. stopped:gsub('"', "'") .. '"', '"' .. points_fallen() .. '"', EDGE, FAR, FIRST, MUCK,
                 DAMPING, MIRROR, ("%.2f"):format(r.length), ORIGIN_X or "", ORIGIN_Y or "", JUDGE_AT, judgments, PREPASS,
-                BOLT_AT, PREPASS_DAMPING, '"' .. table.concat(unconverged_why, "; "):gsub('"', "'") .. '"' }
+                BOLT_AT, PREPASS_DAMPING, '"' .. table.concat(unconverged_why, "; "):gsub('"', "'") .. '"', ROCK }
   local named = {}  -- for result{}: each column's value, unquoted
   for i, v in ipairs(row) do
     row[i] = tostring(v)
