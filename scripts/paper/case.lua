@@ -70,8 +70,8 @@ local loose = require "edem.loose"
 
 local given = settings{
   case = 3, depth = 158, bolts = "none", bolt_at = "solved", set = "P", prepass = "jointed",
-  rock = "elastic", judge = "equilibrium", release = 0, release_offset = 0, damping = "local", prepass_damping = "local",
-  edge = 1.5, far = 10, stages = 16, step_cycles = 40000, stall = 0,
+  judge = "equilibrium", release = 0, release_offset = 0, damping = "local", prepass_damping = "local",
+  edge = 1.5, far = 10, stages = 16, step_cycles = 40000, stall = 0, rock = "elastic",
   similar = 45, min_angle = 30, origin_x = "centroid", origin_y = "centroid",
   by_mode = false, muck = "loose", first = "left", mirror = false, judge_most = 0, judge_radius = 0,
   tolerance = 7e-4, fracture_energy = 0, shear_fracture_energy = 0, table = "case_results.csv",
