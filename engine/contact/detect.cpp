@@ -503,8 +503,12 @@ std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t
   const Vec2 p = at(m, node);
   const double reach = cb.reach[k];
   // A contact it already has is followed as deep as the watchdog lets a gridpoint sink, whatever
-  // the length of its own edges; a new one is made within its reach only (further out, the
-  // nearest edge of a block can be one the gridpoint does not face: spurious deep contacts).
+  // the length of its own edges, and one that presses twice as deep: found again past the
+  // watchdog's limit (a detection just before a cycle, as a boundary{} given between cycles
+  // makes), it is still there when the cycle's watchdog looks, which stops the run; dropped, its
+  // gridpoint would sink on through the block unseen. A new one is made within its reach only
+  // (further out, the nearest edge of a block can be one the gridpoint does not face: spurious
+  // deep contacts).
   const double follow = std::max(reach, overlap_limit(m));
   double search = reach;
   const int* own_first = cb.node_blocks.data() + cb.block_first[k];
@@ -523,10 +527,10 @@ std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t
     if (std::find(own_first, own_last, block) != own_last) continue;
     if (!grid.boxes[static_cast<size_t>(block)].contains(p, follow)) continue;
     const int held = held_edge(m.contacts, node, block);
-    const double radius = held >= 0 ? follow : reach;
+    const double radius = held < 0 ? reach : pressed_contact(m.contacts, node, block) ? 2.0 * follow : follow;
     if (auto f = nearest_edge(m, node, p, own_normal, block, reach, radius, held)) {
       found.push_back(*f);
-      search = std::max(search, radius);
+      search = std::max(search, std::min(radius, follow));
     }
   }
   if (found.empty()) return found;
