@@ -253,6 +253,8 @@ void set_section_fields(lua_State* L, const SectionView& s) {
   set_field(L, "cohesion", s.strength.cohesion);
   set_field(L, "friction", s.strength.friction);
   set_field(L, "tension", s.strength.tension);
+  lua_pushboolean(L, s.gone);
+  lua_setfield(L, -2, "gone");
 }
 
 void push_section(lua_State* L, const SectionView& s) {
@@ -396,7 +398,9 @@ const Command& sections_command() {
       .help = "Iterates over the potential-crack sections with their fitted stress of now.",
       .form = Form::call,
       .run = run_sections,
-      .returns = "an iterator; each section is a read-only table as judge{ criterion } gets it",
+      .returns = "an iterator; each section is a read-only table as judge{ criterion } gets it, "
+                 "and gone (true: its rock dug or mucked out on both sides; its stress and "
+                 "strength are then zero, and it is never judged)",
       .usage = "for s in sections() do worst = math.max(worst, s.s3) end",
   };
   return command;

@@ -135,7 +135,7 @@ struct ModelInfo {
   int joint_sets = 0;
   int crack_seeds = 0;      // crackseed{} inputs
   int sections = 0;         // potential-crack sections (state/sections.hpp)
-  int intact_sections = 0;  // of them, not yet broken
+  int intact_sections = 0;  // of them, not yet broken and with rock on a side (SectionView::gone)
   int cracks = 0;           // sections broken, in either mode
   int shear_cracks = 0;
   int tension_cracks = 0;

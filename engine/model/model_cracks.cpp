@@ -21,11 +21,30 @@ void Model::judge(const JudgeDef& def) {
 
 int Model::section_count() const { return static_cast<int>(mechanics_->sections.size()); }
 
+namespace {
+
+// Whether the rock on both sides of section `s` is gone: its blocks have no zone of rock left,
+// each dug or mucked out.
+bool section_gone(const Mechanics& m, const Mesh& mesh, const Section& s) {
+  if (m.zone_material.size() != static_cast<size_t>(mesh.zone_count())) return false;  // not zoned as laid
+  for (const int block : s.block) {
+    if (block < 0) continue;
+    const size_t b = static_cast<size_t>(block);
+    for (int z = mesh.block_first_zone[b]; z < mesh.block_first_zone[b + 1]; ++z)
+      if (m.zone_material[static_cast<size_t>(z)] >= 0 && m.zone_excavated[static_cast<size_t>(z)] == 0) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
 SectionView Model::section(int id) const {
   Mechanics& m = *mechanics_;
   if (id < 0 || id >= section_count()) fail("no section {}: the model has {}", id + 1, section_count());
   prepare(m, mesh_);  // the fits
-  return section_view(m, id);
+  SectionView v = section_view(m, id);
+  v.gone = section_gone(m, mesh_, m.sections[static_cast<size_t>(id)]);
+  return v;
 }
 
 int Model::crack_count() const { return static_cast<int>(mechanics_->cracks.size()); }
@@ -39,7 +58,9 @@ void Model::add_crack_counts(ModelInfo& info) const {
   const Mechanics& m = *mechanics_;
   info.sections = static_cast<int>(m.sections.size());
   info.cracks = static_cast<int>(m.cracks.size());
-  info.intact_sections = info.sections - info.cracks;
+  info.intact_sections = 0;
+  for (const Section& s : m.sections)
+    if (s.mode == CrackMode::none && !section_gone(m, mesh_, s)) ++info.intact_sections;
   for (const CrackView& c : m.cracks) {
     if (c.mode == CrackMode::shear) ++info.shear_cracks;
     if (c.mode == CrackMode::tension) ++info.tension_cracks;

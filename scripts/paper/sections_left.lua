@@ -10,8 +10,8 @@
 -- y = -8 m and its lower part, the floor below y = -23 m) and each band of distance from the
 -- outline: sections laid, sections broken, and of those left intact the median share of their
 -- strength (the larger of s3 / tension and the Mohr circle's radius over the shear strength at its
--- centre, as judge{ most } ranks them) and their mean pressure. A section of rock mucked out has
--- no zones to fit a stress from: it counts as gone.
+-- centre, as judge{ most } ranks them) and their mean pressure. A section whose rock was mucked
+-- out is gone (sections()).
 local shapes = require "edem.shapes"
 local cavern = require "edem.cavern"
 
@@ -60,13 +60,12 @@ for s in sections() do
   local key = b == 1 and ("within 2 m, " .. place_of(s.x, s.y)) or band_name(b)
   for _, r in ipairs{ row(key), row("all") } do
     r.laid = r.laid + 1
-    local share = share_of_strength(s)
     if broken[s.id] then
       r.broken = r.broken + 1
-    elseif share ~= share then
+    elseif s.gone then
       r.gone = r.gone + 1
     else
-      r.shares[#r.shares + 1] = share
+      r.shares[#r.shares + 1] = share_of_strength(s)
       r.pressure = r.pressure - (s.s1 + s.s3) / 2
     end
   end

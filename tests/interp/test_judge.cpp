@@ -2,6 +2,7 @@
 // criteria first; the rest wait for the next judgment. judge{ radius = r }: a section's stress is
 // fitted to its two blocks' zones within r of its point as well. judge{ at = "equilibrium" }:
 // sections judged only on the states a solve brings to its ratio, in rounds until none breaks.
+// sections(): those whose rock is dug out are gone.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -316,6 +317,41 @@ TEST(JudgeAtEquilibrium, ACheckpointKeepsIt) {
   std::filesystem::remove(file);
   EXPECT_EQ(broken(second).count, 0);
   EXPECT_GT(last_solve(second).broke, 0);
+}
+
+// Sections whose rock is dug out are gone: sections() says so (their stress and strength are
+// zero, nothing to fit them from) and info() no longer counts them as intact; those in the rock
+// left are not.
+TEST(Sections, ThoseInRockDugOutAreGone) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, R"(
+    block{ x = {-1, 1}, y = {0, 1} }
+    region{ name = "dug", polygon = {{-1, 0}, {0, 0}, {0, 1}, {-1, 1}} }
+    crackseed{ angle = 90, spacing = 0.5, origin = {-0.75, 0.5}, material = "strength", after = "crack" }
+    zone{ edge = 0.125 }
+    material{ "rock", young = 1e9, poisson = 0.25, density = 2600 }
+    material{ "strength", model = "mohr", young = 1e9, poisson = 0.25, cohesion = 1e6, friction = 30, tension = 1e5 }
+    assign{ material = "rock" }
+    joint_material{ "crack", kn = 1e10, ks = 1e10, friction = 30 }
+    boundary{ side = "bottom", fix = "xy" }
+    local before = info()
+    assert(before.intact_sections == before.sections, "sections gone before anything was dug")
+    excavate{ region = "dug" }
+    local gone, left = 0, 0
+    for s in sections() do
+      assert(s.gone == (s.x < 0), ("section %d at x = %g: gone is %s"):format(s.id, s.x, tostring(s.gone)))
+      if s.gone then
+        gone = gone + 1
+        assert(s.sxx == 0 and s.cohesion == 0, "a gone section has a stress or a strength")
+      else
+        left = left + 1
+      end
+    end
+    assert(gone > 0 and left > 0, ("%d gone, %d left"):format(gone, left))
+    assert(info().intact_sections == left, ("info() counts %d intact, %d are left"):format(info().intact_sections, left))
+    assert(info().sections == gone + left, "info().sections changed")
+  )");
 }
 
 }  // namespace
