@@ -344,8 +344,8 @@ struct SectionView {
   double sn = 0;          // normal stress on the section, compression negative [Pa]
   double tau = 0;         // shear stress on it (along the direction `angle`) [Pa]
   RockStrength strength;  // cohesion [Pa], friction [deg], tension [Pa]
-  // Its rock dug or mucked out on both sides: no stress to fit (the fields above are zero) and
-  // never judged.
+  // Its rock dug or mucked out on both sides: no stress to fit (its stress and strength are
+  // zero), and never judged.
   bool gone = false;
 };
 
