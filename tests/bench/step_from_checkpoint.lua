@@ -15,11 +15,14 @@
 -- checks 200 cycles apart are dug out, edem.loose, as case.lua's default does; case.lua also keeps
 -- rock of steps not yet dug, which one step from a checkpoint cannot tell apart), by_contact (N > 0:
 -- each contact keeps its own energy balance, energy{ by_contact }, and the N that made or lost the
--- most are listed at the end: where an energy error arises). The trace gives the
+-- most are listed at the end: where an energy error arises), nearest (N > 0: no section breaks,
+-- and the N intact ones nearest their strength at the end are listed, each with the larger of
+-- s3 / tension and the Mohr circle's radius over the shear strength at its centre, as judge{ most }
+-- ranks them: 1 breaks it). The trace gives the
 -- energies from the start (slip and damping: what they took), the point's movement and adaptive
 -- damping's rate c = 2 omega (info().damping_rate).
 local s = settings{ file = "", step = "", damping = "local", release = 100, cycles = 40000, x = 12.0, y = 0.0,
-                    every = 2000, save_to = "", muck = true, on = false, by_contact = 0 }
+                    every = 2000, save_to = "", muck = true, on = false, by_contact = 0, nearest = 0 }
 if s.file == "" then error("give --set file=CHECKPOINT.h5", 0) end
 restore(s.file)
 if s.damping == "local" then
@@ -37,6 +40,7 @@ local function moved()  -- towards the axis, x = 0 [m] (a mucked-out point keeps
   end
 end
 if s.by_contact > 0 then energy{ by_contact = true } end
+if s.nearest > 0 then judge{ at = "equilibrium", criterion = function() return nil end } end
 local start = energy()
 local peak = 0
 print(("following gridpoint %d at (%.2f, %.2f); damping %s"):format(point.id, point.x, point.y, s.damping))
@@ -86,6 +90,25 @@ if s.by_contact > 0 then
     print(("  contact %d, %s, %s, gridpoint of block %d at (%.2f, %.2f) on block %d: made %.4g J/m; fn %.4g N/m over "
            .. "%.4g m, overlap %.4g m, shear displacement %.4g m, slip %.4g m"):format(c.id, c.kind, c.state, c.block,
            c.x, c.y, c.other, c.energy_made, c.fn, c.length, c.overlap, c.us, c.slip))
+  end
+end
+if s.nearest > 0 then
+  local broken, near = {}, {}
+  for k in cracks() do broken[k.section] = true end
+  for sec in sections() do
+    if not sec.gone and not broken[sec.id] then
+      local phi = math.rad(sec.friction)
+      local centre, radius = (sec.s1 + sec.s3) / 2, (sec.s3 - sec.s1) / 2
+      local share = math.max(radius / (sec.cohesion * math.cos(phi) - centre * math.sin(phi)), sec.s3 / sec.tension)
+      near[#near + 1] = { id = sec.id, x = sec.x, y = sec.y, share = share, s1 = sec.s1, s3 = sec.s3 }
+    end
+  end
+  table.sort(near, function(a, b) return a.share > b.share end)
+  print("the intact sections nearest their strength (none was let break):")
+  for i = 1, math.min(s.nearest, #near) do
+    local n = near[i]
+    print(("  section %d at (%.2f, %.2f): %.3f of its strength; s1 %.3g, s3 %.3g MPa"):format(n.id, n.x, n.y, n.share,
+                                                                                           n.s1 / 1e6, n.s3 / 1e6))
   end
 end
 if s.save_to ~= "" then save(s.save_to) end
