@@ -11,7 +11,7 @@
 # And, judged at equilibrium under local damping released over 100 cycles (case.lua's defaults),
 # with 1 and 2 m zones at the opening (1.5 m above), for the charts of speed against accuracy that
 # it draws at its end (tests/bench/judging_chart.lua: OUT/judging_cracks.png, OUT/judging_crown.png).
-# One thread a run and two runs at a time on two cores take about 55 minutes (tests/bench/RESULTS.md).
+# One thread a run and two runs at a time on two cores take about 40 minutes (tests/bench/RESULTS.md).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 edem=$root/build/interp/edem out=judging-independence jobs=2 threads=1 keep=0
