@@ -253,6 +253,7 @@ void set_section_fields(lua_State* L, const SectionView& s) {
   set_field(L, "cohesion", s.strength.cohesion);
   set_field(L, "friction", s.strength.friction);
   set_field(L, "tension", s.strength.tension);
+  set_field(L, "overstress", s.overstress);
   lua_pushboolean(L, s.gone);
   lua_setfield(L, -2, "gone");
 }
@@ -366,7 +367,8 @@ const Command& judge_command() {
               {"criterion", Type::function, "", any_value, kOptional,
                "fn(section) returning nil, \"shear\" or \"tension\"; the section is read-only: "
                "id, x, y, angle, length, sxx, syy, sxy, s1, s3, sn, tau, cohesion, friction, "
-               "tension",
+               "tension, overstress (the larger of s3 / tension and the Mohr circle's radius over "
+               "the shear strength at its centre: 1 breaks it)",
                "the built-in criteria"},
           },
       .run = run_judge,
@@ -399,8 +401,8 @@ const Command& sections_command() {
       .form = Form::call,
       .run = run_sections,
       .returns = "an iterator; each section is a read-only table as judge{ criterion } gets it, "
-                 "and gone (true: its rock dug or mucked out on both sides; its stress and "
-                 "strength are then zero, and it is never judged)",
+                 "and gone (true: its rock dug or mucked out on both sides; its stress, "
+                 "strength and overstress are then zero, and it is never judged)",
       .usage = "for s in sections() do worst = math.max(worst, s.s3) end",
   };
   return command;

@@ -344,8 +344,11 @@ struct SectionView {
   double sn = 0;          // normal stress on the section, compression negative [Pa]
   double tau = 0;         // shear stress on it (along the direction `angle`) [Pa]
   RockStrength strength;  // cohesion [Pa], friction [deg], tension [Pa]
-  // Its rock dug or mucked out on both sides: no stress to fit (its stress and strength are
-  // zero), and never judged.
+  // How far the stress is towards the built-in criteria: the larger of s3 / tension and the Mohr
+  // circle's radius over the shear strength at its centre (1 breaks it; judge{ most } ranks by it).
+  double overstress = 0;
+  // Its rock dug or mucked out on both sides: no stress to fit (its stress, strength and
+  // overstress are zero), and never judged.
   bool gone = false;
 };
 

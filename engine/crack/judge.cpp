@@ -135,6 +135,7 @@ SectionView view_of(const Mechanics& m, int section, const Stress& s) {
   v.sn = dot(sn, n);
   v.tau = dot(sn, t);
   v.strength = m.fits.strength[static_cast<size_t>(section)];
+  v.overstress = overstress(p, v.strength);
   return v;
 }
 

@@ -44,6 +44,7 @@ SectionView Model::section(int id) const {
   prepare(m, mesh_);  // the fits
   SectionView v = section_view(m, id);
   v.gone = section_gone(m, mesh_, m.sections[static_cast<size_t>(id)]);
+  if (v.gone) v.overstress = 0.0;  // no rock: nothing to judge
   return v;
 }
 

@@ -33,12 +33,6 @@ local function band_name(b)
   local from, to = BANDS[b][1], BANDS[b][2]
   return to < math.huge and ("%g to %g m"):format(from, to) or ("beyond %g m"):format(from)
 end
--- The share of its strength a section's fitted stress reaches (1 breaks it).
-local function share_of_strength(s)
-  local phi = math.rad(s.friction)
-  local centre, radius = (s.s1 + s.s3) / 2, (s.s3 - s.s1) / 2
-  return math.max(radius / (s.cohesion * math.cos(phi) - centre * math.sin(phi)), s.s3 / s.tension)
-end
 
 local broken = {}
 for k in cracks() do broken[k.section] = true end
@@ -65,7 +59,7 @@ for s in sections() do
     elseif s.gone then
       r.gone = r.gone + 1
     else
-      r.shares[#r.shares + 1] = share_of_strength(s)
+      r.shares[#r.shares + 1] = s.overstress
       r.pressure = r.pressure - (s.s1 + s.s3) / 2
     end
   end

@@ -16,9 +16,8 @@
 -- rock of steps not yet dug, which one step from a checkpoint cannot tell apart), by_contact (N > 0:
 -- each contact keeps its own energy balance, energy{ by_contact }, and the N that made or lost the
 -- most are listed at the end: where an energy error arises), nearest (N > 0: no section breaks,
--- and the N intact ones nearest their strength at the end are listed, each with the larger of
--- s3 / tension and the Mohr circle's radius over the shear strength at its centre, as judge{ most }
--- ranks them: 1 breaks it). The trace gives the
+-- and the N intact ones nearest their strength at the end are listed, each with its overstress,
+-- as judge{ most } ranks them: 1 breaks it). The trace gives the
 -- energies from the start (slip and damping: what they took), the point's movement and adaptive
 -- damping's rate c = 2 omega (info().damping_rate).
 local s = settings{ file = "", step = "", damping = "local", release = 100, cycles = 40000, x = 12.0, y = 0.0,
@@ -97,10 +96,7 @@ if s.nearest > 0 then
   for k in cracks() do broken[k.section] = true end
   for sec in sections() do
     if not sec.gone and not broken[sec.id] then
-      local phi = math.rad(sec.friction)
-      local centre, radius = (sec.s1 + sec.s3) / 2, (sec.s3 - sec.s1) / 2
-      local share = math.max(radius / (sec.cohesion * math.cos(phi) - centre * math.sin(phi)), sec.s3 / sec.tension)
-      near[#near + 1] = { id = sec.id, x = sec.x, y = sec.y, share = share, s1 = sec.s1, s3 = sec.s3 }
+      near[#near + 1] = { id = sec.id, x = sec.x, y = sec.y, share = sec.overstress, s1 = sec.s1, s3 = sec.s3 }
     end
   end
   table.sort(near, function(a, b) return a.share > b.share end)

@@ -2,7 +2,7 @@
 // criteria first; the rest wait for the next judgment. judge{ radius = r }: a section's stress is
 // fitted to its two blocks' zones within r of its point as well. judge{ at = "equilibrium" }:
 // sections judged only on the states a solve brings to its ratio, in rounds until none breaks.
-// sections(): those whose rock is dug out are gone.
+// sections(): those whose rock is dug out are gone; each section's overstress.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -343,7 +343,7 @@ TEST(Sections, ThoseInRockDugOutAreGone) {
       assert(s.gone == (s.x < 0), ("section %d at x = %g: gone is %s"):format(s.id, s.x, tostring(s.gone)))
       if s.gone then
         gone = gone + 1
-        assert(s.sxx == 0 and s.cohesion == 0, "a gone section has a stress or a strength")
+        assert(s.sxx == 0 and s.cohesion == 0 and s.overstress == 0, "a gone section has a stress or a strength")
       else
         left = left + 1
       end
@@ -351,6 +351,28 @@ TEST(Sections, ThoseInRockDugOutAreGone) {
     assert(gone > 0 and left > 0, ("%d gone, %d left"):format(gone, left))
     assert(info().intact_sections == left, ("info() counts %d intact, %d are left"):format(info().intact_sections, left))
     assert(info().sections == gone + left, "info().sections changed")
+  )");
+}
+
+// Each section tells how far its stress is towards the built-in criteria, as judge{ most } ranks
+// them: in the bar's uniform vertical tension of 0.06 MPa a horizontal section stands at
+// 0.06 / 0.0546 of its tensile strength (its shear is further off: a Mohr circle of radius 0.03
+// MPa against 0.102 MPa of shear strength at its centre).
+TEST(Sections, OverstressIsTheBuiltInCriteriasMeasure) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, bar() + R"(
+    judge{ at = "equilibrium" }
+    local seen = 0
+    for s in sections() do
+      if s.x < -0.05 then
+        seen = seen + 1
+        local expected = 0.06e6 / 0.0546e6
+        assert(math.abs(s.overstress - expected) < 1e-3 * expected,
+               ("section %d: overstress %.6f, expected %.6f"):format(s.id, s.overstress, expected))
+      end
+    end
+    assert(seen > 0, "no section at x < -0.05")
   )");
 }
 
