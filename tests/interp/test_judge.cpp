@@ -320,7 +320,7 @@ TEST(JudgeAtEquilibrium, ACheckpointKeepsIt) {
 }
 
 // Sections whose rock is dug out are gone: sections() says so (their stress and strength are
-// zero, nothing to fit them from) and info() no longer counts them as intact; those in the rock
+// zero, nothing to fit them from) and info() does not count them as intact; those in the rock
 // left are not.
 TEST(Sections, ThoseInRockDugOutAreGone) {
   Interpreter interpreter;
