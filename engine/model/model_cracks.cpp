@@ -26,12 +26,12 @@ namespace {
 // Whether the rock on both sides of section `s` is gone: its blocks have no zone of rock left,
 // each dug or mucked out.
 bool section_gone(const Mechanics& m, const Mesh& mesh, const Section& s) {
-  if (m.zone_material.size() != static_cast<size_t>(mesh.zone_count())) return false;  // not zoned as laid
+  if (m.zone_excavated.size() != static_cast<size_t>(mesh.zone_count())) return false;  // not zoned as laid
   for (const int block : s.block) {
     if (block < 0) continue;
     const size_t b = static_cast<size_t>(block);
     for (int z = mesh.block_first_zone[b]; z < mesh.block_first_zone[b + 1]; ++z)
-      if (m.zone_material[static_cast<size_t>(z)] >= 0 && m.zone_excavated[static_cast<size_t>(z)] == 0) return false;
+      if (zone_in_rock(m, static_cast<size_t>(z))) return false;
   }
   return true;
 }

@@ -497,11 +497,6 @@ std::function<double()> point_sampler(const Mechanics* m, const std::string& q, 
   return [m, z] { return in_plane_principal(m->stress[z]).s3; };
 }
 
-// Whether a zone is rock in place: it has a material that is not void and was not excavated.
-bool zone_in_rock(const Mechanics& m, size_t z) {
-  const int material = m.zone_material.empty() ? -1 : m.zone_material[z];
-  return material >= 0 && m.zone_excavated[z] == 0 && !zone_law(m.params[static_cast<size_t>(material)].model).is_void;
-}
 
 }  // namespace
 
