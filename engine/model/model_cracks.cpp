@@ -4,6 +4,7 @@
 #include "core/error.hpp"
 #include "crack/judge.hpp"
 #include "model/model.hpp"
+#include "model/zone_in_rock.hpp"
 #include "state/mechanics.hpp"
 #include "solver/prepare.hpp"
 

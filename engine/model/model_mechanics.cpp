@@ -19,6 +19,7 @@
 #include "core/union_find.hpp"
 #include "io/temp_file.hpp"
 #include "model/model.hpp"
+#include "model/zone_in_rock.hpp"
 #include "solver/loads.hpp"
 #include "solver/prepare.hpp"
 #include "solver/run.hpp"
@@ -627,6 +628,11 @@ void Model::write_histories(const std::string& path) const {
 }
 
 // ---- views ----------------------------------------------------------------------------------
+
+bool zone_in_rock(const Mechanics& m, size_t z) {
+  const int material = m.zone_material.empty() ? -1 : m.zone_material[z];
+  return material >= 0 && m.zone_excavated[z] == 0 && !zone_law(m.params[static_cast<size_t>(material)].model).is_void;
+}
 
 int Model::gridpoint_near(Vec2 point) const {
   // Of gridpoints at one place (both sides of a joint, or of a wall excavate{} freed), the one

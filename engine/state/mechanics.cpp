@@ -4,8 +4,6 @@
 
 #include <algorithm>
 
-#include "constitutive/zone_law.hpp"
-
 namespace edem {
 
 namespace {
@@ -33,11 +31,6 @@ int wanted_threads(const Mechanics& m) {
 int thread_count(const Mechanics& m) {
   const int wanted = wanted_threads(m);
   return m.thread_watch.cap > 0 ? std::min(wanted, m.thread_watch.cap) : wanted;
-}
-
-bool zone_in_rock(const Mechanics& m, size_t z) {
-  const int material = m.zone_material.empty() ? -1 : m.zone_material[z];
-  return material >= 0 && m.zone_excavated[z] == 0 && !zone_law(m.params[static_cast<size_t>(material)].model).is_void;
 }
 
 }  // namespace edem

@@ -268,7 +268,4 @@ int wanted_threads(const Mechanics& m);
 // that a smaller team is faster (solver/thread_watch.hpp).
 int thread_count(const Mechanics& m);
 
-// Whether mesh zone z is rock in place: it has a material that is not void and was not excavated.
-bool zone_in_rock(const Mechanics& m, size_t z);
-
 }  // namespace edem
