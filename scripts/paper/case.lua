@@ -48,8 +48,8 @@
 --             run's result{}, which edem sweep gathers [case_results.csv]
 --   threads   recorded in the table [OMP_NUM_THREADS, else default]
 --   strict    true: a step stopped by an error fails the script [false]
---   save_after  a checkpoint CASE_stepN.h5 after step N (for restore(), sections_left.lua)
---             [0: none]
+--   save_after  a checkpoint CASE_stepN.h5 after step N (for restore(), sections_left.lua); 0:
+--             the in-situ state, before step 1 (tests/bench/release_paths.lua) [-1: none]
 -- Steps: the region with the case's joints and the cavern's steps cut as regions; the prepass
 -- (jointed: over the steps the run digs; continuum: over all 16); potential cracks where it
 -- yielded (crackseed{ auto }, 4.8 m apart, a tenth of the cavern's height, with the set's intact
@@ -75,7 +75,7 @@ local given = settings{
   similar = 45, min_angle = 30, origin_x = "centroid", origin_y = "centroid",
   by_mode = false, muck = "loose", first = "left", mirror = false, judge_most = 0, judge_radius = 0,
   tolerance = 7e-4, fracture_energy = 0, shear_fracture_energy = 0, table = "case_results.csv",
-  threads = os.getenv("OMP_NUM_THREADS") or "default", strict = false, save_after = 0,
+  threads = os.getenv("OMP_NUM_THREADS") or "default", strict = false, save_after = -1,
 }
 -- One of `choices`, or an error naming the setting.
 local function one_of(key, choices)
@@ -98,8 +98,8 @@ end
 if not (math.type(given.stall) == "integer" and given.stall >= 0) then
   error(("stall must be a whole number of cycles >= 0, got %s"):format(given.stall), 0)
 end
-if not (math.type(given.save_after) == "integer" and given.save_after >= 0) then
-  error(("save_after must be a step number >= 0, got %s"):format(given.save_after), 0)
+if not (math.type(given.save_after) == "integer" and given.save_after >= -1) then
+  error(("save_after must be a step number (0: the in-situ state, -1: none), got %s"):format(given.save_after), 0)
 end
 local SIMILAR, TOLERANCE, MIN_ANGLE = given.similar, given.tolerance, given.min_angle
 local JUDGE_MOST, JUDGE_RADIUS = given.judge_most, given.judge_radius
@@ -274,6 +274,7 @@ energy{ reset = true }  -- the energy balance of the excavation, from the in-sit
 -- adaptive damping, c = 2 omega, is critical for one frequency, the whole opening's slow
 -- convergence, and leaves quicker motion (a breaking section's ring, a sliding block) damped less.
 if DAMPING == "local" then set{ damping = "local", local_damping = 0.8 } end
+if given.save_after == 0 then save(("%s_step0.h5"):format(tag)) end
 
 -- Measuring points, in the rock left in place: the gridpoint nearest to the crown, and those
 -- nearest to the side walls at y = 0.
