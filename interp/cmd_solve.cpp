@@ -132,6 +132,7 @@ int run_solve(lua_State* L, Context& context, const Args& args) {
   def.ratio = args.number("ratio");
   def.max_cycles = static_cast<long>(args.integer("max_cycles"));
   def.stall = static_cast<long>(args.integer("stall"));
+  def.settle = args.number("settle");
   const SolveResult result = [&] {
     const ProgressLineCloser closer{context};
     return context.model().solve(def);
@@ -159,8 +160,9 @@ int run_solve(lua_State* L, Context& context, const Args& args) {
     if (result.converged)
       fmt::print("solve: {} cycles, ratio {:.3g}{}\n", result.cycles, result.ratio, rounds);
     else
-      fmt::print("solve: stopped after {} cycles at ratio {:.3g} (not converged to {:.3g}){}{}\n",
-                 result.cycles, result.ratio, def.ratio, rounds, why);
+      fmt::print("solve: stopped after {} cycles at ratio {:.3g} (not converged to {:.3g}{}){}{}\n",
+                 result.cycles, result.ratio, def.ratio,
+                 def.settle > 0.0 ? fmt::format(" and settled to {:.3g}", def.settle) : "", rounds, why);
     std::fflush(stdout);
   }
   lua_createtable(L, 0, 6);
@@ -299,6 +301,14 @@ const Command& solve_command() {
                "stop after this many cycles in which the ratio has not fallen a tenth below its lowest "
                "since the load came off or sections last broke: rock that keeps sliding or creeping, "
                "with no equilibrium near, ends its solve there instead of at max_cycles; 0: never"},
+              {"settle", Type::number, "-", between(0, 1), "0",
+               "below ratio: a state at the ratio is solved on to this one under adaptive damping "
+               "before it counts or, judged at equilibrium, is judged; after a judgment that broke "
+               "sections the next state is approached under the set damping again, which the solve "
+               "gives back at its end. Local damping brings rock that can slide to an equilibrium "
+               "safely, but on soft joints it can take tens of thousands of cycles over the last "
+               "decades, which adaptive damping may take in a few thousand (tests/bench/RESULTS.md, "
+               "\"One step from the in-situ state\"). 0: not"},
           },
       .run = run_solve,
       .returns = "a table: cycles (run by this call), ratio (reached), converged (true or false), stalled "

@@ -217,6 +217,7 @@ struct SolveDef {
   double ratio = 1e-5;        // stop when the unbalanced-force ratio is at most this [-]
   long max_cycles = 100000;   // and stop after this many cycles whatever the ratio
   long stall = 0;             // and after this many without the ratio falling a tenth (0: never)
+  double settle = 0.0;        // a state at the ratio then solved on to this under adaptive damping (0: not)
 };
 
 struct SolveResult {

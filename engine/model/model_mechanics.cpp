@@ -305,8 +305,8 @@ std::string Model::unheld() const {
          "boundary{ side = \"bottom\", fix = \"y\" })";
 }
 
-SolveResult Model::run(long max_cycles, double target_ratio, long stall) {
-  return run_solver(*mechanics_, mesh_, max_cycles, target_ratio, stall);
+SolveResult Model::run(long max_cycles, double target_ratio, long stall, double settle) {
+  return run_solver(*mechanics_, mesh_, max_cycles, target_ratio, stall, settle);
 }
 
 SolveResult Model::cycle(long count) {
@@ -318,7 +318,9 @@ SolveResult Model::solve(const SolveDef& def) {
   if (!(def.ratio > 0.0 && def.ratio < 1.0)) fail("ratio must be in (0, 1), got {}", def.ratio);
   if (def.max_cycles < 1) fail("max_cycles must be >= 1, got {}", def.max_cycles);
   if (def.stall < 0) fail("stall must be >= 0, got {}", def.stall);
-  return run(def.max_cycles, def.ratio, def.stall);
+  if (!(def.settle >= 0.0 && def.settle < def.ratio))
+    fail("settle must be 0 or below ratio ({}), got {}", def.ratio, def.settle);
+  return run(def.max_cycles, def.ratio, def.stall, def.settle);
 }
 
 int Model::add_callback(long every, std::function<void(long)> fn) {

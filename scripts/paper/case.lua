@@ -30,6 +30,8 @@
 --             its ratio [40000]
 --   stall     cycles without the ratio falling a tenth after which a step's solve ends short of
 --             its ratio, the rock moving on with no equilibrium near (solve{ stall }) [0: never]
+--   settle    a step's state at its ratio (1e-5) solved on to this one under adaptive damping
+--             before it is judged (solve{ settle }) [0: not]
 --   similar   deg: crackseed{ auto }'s grouping angle [45]
 --   min_angle deg: crackseed{ auto }'s sharpest corner of a cut with a joint [30; 0: every cut]
 --   origin_x, origin_y  m: a point every group's cuts pass through (a group none of them
@@ -71,7 +73,7 @@ local loose = require "edem.loose"
 local given = settings{
   case = 3, depth = 158, bolts = "none", bolt_at = "solved", set = "P", prepass = "jointed",
   judge = "equilibrium", release = 0, release_offset = 0, damping = "local", prepass_damping = "local",
-  edge = 1.5, far = 10, stages = 16, step_cycles = 40000, stall = 0, rock = "elastic",
+  edge = 1.5, far = 10, stages = 16, step_cycles = 40000, stall = 0, settle = 0, rock = "elastic",
   similar = 45, min_angle = 30, origin_x = "centroid", origin_y = "centroid",
   by_mode = false, muck = "loose", first = "left", mirror = false, judge_most = 0, judge_radius = 0,
   tolerance = 7e-4, fracture_energy = 0, shear_fracture_energy = 0, table = "case_results.csv",
@@ -97,6 +99,9 @@ if not (math.type(given.step_cycles) == "integer" and given.step_cycles >= 1) th
 end
 if not (math.type(given.stall) == "integer" and given.stall >= 0) then
   error(("stall must be a whole number of cycles >= 0, got %s"):format(given.stall), 0)
+end
+if not (type(given.settle) == "number" and given.settle >= 0 and given.settle < 1e-5) then
+  error(("settle must be 0 or a ratio below 1e-5, got %s"):format(given.settle), 0)
 end
 if not (math.type(given.save_after) == "integer" and given.save_after >= -1) then
   error(("save_after must be a step number (0: the in-situ state, -1: none), got %s"):format(given.save_after), 0)
@@ -557,7 +562,8 @@ for i, s in ipairs(c.stages) do
   if not ok_excavate and not tostring(why):find("was excavated already", 1, true) then error(why, 0) end
   if BOLTS ~= "none" and BOLT_AT == "dug" then bolt_step(s) end
   -- The ratio is judged once the load is off: step_cycles from there.
-  local ok, result = pcall(solve, { ratio = 1e-5, max_cycles = RELEASE + given.step_cycles, stall = given.stall })
+  local ok, result = pcall(solve, { ratio = 1e-5, max_cycles = RELEASE + given.step_cycles, stall = given.stall,
+                                    settle = given.settle })
   -- Judged at equilibrium, a step short of its ratio has not been judged: rock creeping on soft
   -- joints settles no further, so its state is judged at ten times the ratio (in rounds as any).
   if ok and not result.converged and JUDGE_AT == "equilibrium" then

@@ -180,6 +180,78 @@ TEST(Mechanics, AStallLimitDoesNotCutShortTheRoundsOfJudgingAtEquilibrium) {
   )lua");
 }
 
+// solve{ settle }: local damping brings the column to 1e-5, adaptive damping takes it on to 1e-9,
+// to the state local damping alone reaches at 1e-9 (elastic: there is one); the solve then gives
+// local damping back. (What it saves depends on the model: RESULTS, "One step from the in-situ
+// state".)
+TEST(Mechanics, ASettledSolveEndsAtTheTighterRatioAndGivesItsDampingBack) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, column(R"lua(
+    set{ damping = "local" }
+    local alone = solve{ ratio = 1e-9, max_cycles = 1000000 }
+    local top = gp_near(5, 10).uy
+    model{}
+  )lua") + column(R"lua(
+    set{ damping = "local" }
+    local settled = solve{ ratio = 1e-5, settle = 1e-9, max_cycles = 1000000 }
+    assert(alone.converged and settled.converged and settled.ratio <= 1e-9, "ratio " .. settled.ratio)
+    local uy = gp_near(5, 10).uy
+    assert(math.abs(uy / top - 1) < 1e-6, ("the top settles %.9g m, under local damping alone %.9g"):format(uy, top))
+    assert(info().damping_rate == 0, "local damping is given back: " .. info().damping_rate)
+  )lua"));
+}
+
+// Judged at equilibrium, each state judged is the settled one, and the rounds after a break go on:
+// the hole's ring of potential cracks (as above) breaks in several rounds and ends settled.
+TEST(Mechanics, ASettledSolveJudgesTheSettledStatesInRounds) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, R"lua(
+    local points = {}
+    for k = 0, 31 do
+      local a = 2 * math.pi * k / 32
+      points[#points + 1] = { 20 + 3 * math.cos(a), 15 + 3 * math.sin(a) }
+    end
+    local ring = {}
+    for k = 0, 31 do
+      local a = 2 * math.pi * k / 32
+      ring[#ring + 1] = { 20 + 7 * math.cos(a), 15 + 7 * math.sin(a) }
+    end
+    block{ x = { 0, 40 }, y = { 0, 30 } }
+    region{ name = "hole", polygon = points }
+    region{ name = "ring", polygon = ring }
+    crackseed{ region = "ring", angles = { 30, 120 }, spacing = 1, material = "strength", after = "crack" }
+    zone{ edge = 0.5, far = 2, near = { "ring" } }
+    material{ "rock", density = 2500, young = 2e9, poisson = 0.25 }
+    material{ "strength", model = "mohr", young = 2e9, poisson = 0.25, cohesion = 1e6, friction = 30,
+              tension = 0.3e6 }
+    assign{ material = "rock" }
+    joint_material{ "crack", kn = 2e10, ks = 1e10, friction = 30 }
+    insitu{ sxx = -3e6, syy = -5e6, szz = -4e6 }
+    for _, side in ipairs{ "left", "right", "top", "bottom" } do boundary{ side = side, fix = "xy" } end
+    set{ damping = "local" }
+    judge{ at = "equilibrium", criterion = function(s)
+      assert(info().ratio <= 1e-8, ("a state judged at ratio %g"):format(info().ratio))
+      if s.s3 > s.tension then return "tension" end
+      local phi = math.rad(s.friction)
+      if (1 - math.sin(phi)) * s.s1 - (1 + math.sin(phi)) * s.s3 + 2 * s.cohesion * math.cos(phi) < 0 then
+        return "shear"
+      end
+    end }
+    excavate{ region = "hole" }
+    local r = solve{ ratio = 1e-5, settle = 1e-8, max_cycles = 200000 }
+    assert(r.converged and r.ratio <= 1e-8 and r.judgments >= 3 and r.broke > 100,
+           ("%d cycles to ratio %g: %d judgments, %d broke"):format(r.cycles, r.ratio, r.judgments, r.broke))
+    assert(info().damping_rate == 0, "local damping is given back")
+  )lua");
+}
+
+TEST(Mechanics, SettleMustBeBelowTheRatio) {
+  EXPECT_TRUE(contains(error_of(column("solve{ ratio = 1e-5, settle = 1e-5 }")),
+                       "settle must be 0 or below ratio (1e-05), got 1e-05"));
+}
+
 TEST(Mechanics, QuietSolvePrintsNothing) {
   Interpreter interpreter({.quiet = true, .stdlib_dirs = {}});
   testing::internal::CaptureStdout();
