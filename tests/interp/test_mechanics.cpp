@@ -135,32 +135,40 @@ TEST(Mechanics, AStallLimitEndsTheSolveOfABlockThatKeepsSliding) {
 // each) run as without the limit even when it is shorter than a round. Were the count kept
 // across a judgment, the ratio at the equilibrium just judged would be the lowest to beat and a
 // limit of 2,000 cycles would already cut the rounds short.
+// hole_in_a_ring(): a new model, a 40 m x 30 m block under in-situ stress with a 3 m hole to dig
+// and, in a ring of 7 m about it, potential cracks that break in several rounds once it is dug.
+constexpr const char* kHoleInARing = R"lua(
+local function circle(r)
+  local points = {}
+  for k = 0, 31 do
+    local a = 2 * math.pi * k / 32
+    points[#points + 1] = { 20 + r * math.cos(a), 15 + r * math.sin(a) }
+  end
+  return points
+end
+local function hole_in_a_ring()
+  model{ title = "cracks at equilibrium" }
+  block{ x = { 0, 40 }, y = { 0, 30 } }
+  region{ name = "hole", polygon = circle(3) }
+  region{ name = "ring", polygon = circle(7) }
+  crackseed{ region = "ring", angles = { 30, 120 }, spacing = 1, material = "strength", after = "crack" }
+  zone{ edge = 0.5, far = 2, near = { "ring" } }
+  material{ "rock", density = 2500, young = 2e9, poisson = 0.25 }
+  material{ "strength", model = "mohr", young = 2e9, poisson = 0.25, cohesion = 1e6, friction = 30,
+            tension = 0.3e6 }
+  assign{ material = "rock" }
+  joint_material{ "crack", kn = 2e10, ks = 1e10, friction = 30 }
+  insitu{ sxx = -3e6, syy = -5e6, szz = -4e6 }
+  for _, side in ipairs{ "left", "right", "top", "bottom" } do boundary{ side = side, fix = "xy" } end
+end
+)lua";
+
 TEST(Mechanics, AStallLimitDoesNotCutShortTheRoundsOfJudgingAtEquilibrium) {
   Interpreter interpreter;
   interpreter.context().quiet = true;
-  expect_runs(interpreter, R"lua(
-    local function circle(r)
-      local points = {}
-      for k = 0, 31 do
-        local a = 2 * math.pi * k / 32
-        points[#points + 1] = { 20 + r * math.cos(a), 15 + r * math.sin(a) }
-      end
-      return points
-    end
+  expect_runs(interpreter, std::string(kHoleInARing) + R"lua(
     local function hole_dug_at_once(stall)
-      model{ title = "cracks at equilibrium" }
-      block{ x = { 0, 40 }, y = { 0, 30 } }
-      region{ name = "hole", polygon = circle(3) }
-      region{ name = "ring", polygon = circle(7) }
-      crackseed{ region = "ring", angles = { 30, 120 }, spacing = 1, material = "strength", after = "crack" }
-      zone{ edge = 0.5, far = 2, near = { "ring" } }
-      material{ "rock", density = 2500, young = 2e9, poisson = 0.25 }
-      material{ "strength", model = "mohr", young = 2e9, poisson = 0.25, cohesion = 1e6, friction = 30,
-                tension = 0.3e6 }
-      assign{ material = "rock" }
-      joint_material{ "crack", kn = 2e10, ks = 1e10, friction = 30 }
-      insitu{ sxx = -3e6, syy = -5e6, szz = -4e6 }
-      for _, side in ipairs{ "left", "right", "top", "bottom" } do boundary{ side = side, fix = "xy" } end
+      hole_in_a_ring()
       judge{ at = "equilibrium" }
       excavate{ region = "hole" }
       return solve{ ratio = 1e-5, max_cycles = 20000, stall = stall }
@@ -207,37 +215,12 @@ TEST(Mechanics, ASettledSolveEndsAtTheTighterRatioAndGivesItsDampingBack) {
 TEST(Mechanics, ASettledSolveJudgesTheSettledStatesInRounds) {
   Interpreter interpreter;
   interpreter.context().quiet = true;
-  expect_runs(interpreter, R"lua(
-    local points = {}
-    for k = 0, 31 do
-      local a = 2 * math.pi * k / 32
-      points[#points + 1] = { 20 + 3 * math.cos(a), 15 + 3 * math.sin(a) }
-    end
-    local ring = {}
-    for k = 0, 31 do
-      local a = 2 * math.pi * k / 32
-      ring[#ring + 1] = { 20 + 7 * math.cos(a), 15 + 7 * math.sin(a) }
-    end
-    block{ x = { 0, 40 }, y = { 0, 30 } }
-    region{ name = "hole", polygon = points }
-    region{ name = "ring", polygon = ring }
-    crackseed{ region = "ring", angles = { 30, 120 }, spacing = 1, material = "strength", after = "crack" }
-    zone{ edge = 0.5, far = 2, near = { "ring" } }
-    material{ "rock", density = 2500, young = 2e9, poisson = 0.25 }
-    material{ "strength", model = "mohr", young = 2e9, poisson = 0.25, cohesion = 1e6, friction = 30,
-              tension = 0.3e6 }
-    assign{ material = "rock" }
-    joint_material{ "crack", kn = 2e10, ks = 1e10, friction = 30 }
-    insitu{ sxx = -3e6, syy = -5e6, szz = -4e6 }
-    for _, side in ipairs{ "left", "right", "top", "bottom" } do boundary{ side = side, fix = "xy" } end
+  expect_runs(interpreter, std::string(kHoleInARing) + R"lua(
+    hole_in_a_ring()
     set{ damping = "local" }
     judge{ at = "equilibrium", criterion = function(s)
       assert(info().ratio <= 1e-8, ("a state judged at ratio %g"):format(info().ratio))
-      if s.s3 > s.tension then return "tension" end
-      local phi = math.rad(s.friction)
-      if (1 - math.sin(phi)) * s.s1 - (1 + math.sin(phi)) * s.s3 + 2 * s.cohesion * math.cos(phi) < 0 then
-        return "shear"
-      end
+      if s.overstress > 1 then return s.s3 > s.tension and "tension" or "shear" end
     end }
     excavate{ region = "hole" }
     local r = solve{ ratio = 1e-5, settle = 1e-8, max_cycles = 200000 }
