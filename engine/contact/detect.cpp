@@ -839,6 +839,35 @@ double largest_reach(const Mechanics& m) {
   return largest;
 }
 
+// A contact found pressed in deeper than this share of its reach went in unseen: detection came
+// too late for it (info().late_contacts).
+constexpr double kLateDepth = 0.1;
+
+// Whether point p, pressed behind edge e's line, lies outside the line of the face beside it at a
+// convex corner of e's block near p (within kBesideCorner reaches of the corner): there it is
+// beside the block, past its corner, not in it. A corner slid off a thin tip would otherwise be
+// found anew on the tip's face, whose line runs on past the apex, and be pushed out sideways
+// with the whole overlap it has behind that line. A glued tip is left out: past it the
+// gridpoint is in the block glued beside.
+constexpr double kBesideCorner = 4.0;
+bool beside_a_corner(const Mechanics& m, const ContactEdge& e, Vec2 p, double reach) {
+  const ContactBoundary& cb = m.faces;
+  const auto outside = [&](Vec2 corner, Vec2 from, Vec2 to) {
+    const Vec2 d = to - from;
+    const double out = cross(p - from, d) / norm(d);
+    return out > 1e-3 * reach && norm(p - corner) < kBesideCorner * reach;
+  };
+  if (e.corner_a && !e.glued_tip_a) {
+    const Vec2 a = at(m, e.a);
+    if (outside(a, at(m, cb.edges[static_cast<size_t>(e.prev)].a), a)) return true;
+  }
+  if (e.corner_b && !e.glued_tip_b) {
+    const Vec2 b = at(m, e.b);
+    if (outside(b, b, at(m, cb.edges[static_cast<size_t>(e.next)].b))) return true;
+  }
+  return false;
+}
+
 // Finds again the contacts of the boundary nodes flagged in `redo` (per position in
 // ContactBoundary::nodes; all of them when it is empty) and keeps the others' as they are;
 // rebuilds the force gather and the stiffness rows.
@@ -919,6 +948,18 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
       // they would make energy at the switch.
       const bool found_again = old != set.list.end() && old->node == c.node && old->other == c.other;
       const bool kept = found_again && same_face(m, old->edge, c.edge);
+      // Already pressed in deeper than a contact can get between two detections.
+      const bool pressed_late = !first && f.gap < -kLateDepth * cb.reach[k];
+      // Found so beside a corner, the gridpoint came round the corner: it is past the block, not
+      // in it, and no contact is made. (A gridpoint barely behind the face's line, a block's
+      // corner over a closed joint crossing, is on the face's neighbour across the crossing, whose
+      // face runs on along that line: its half-edge over this face is this face's to carry.) Held
+      // on another face before, what that contact stored goes with it, booked as a restart is.
+      if (!kept && pressed_late && beside_a_corner(m, edge, at(m, c.node), cb.reach[k])) {
+        if (found_again && m.energy.started && !m.energy.last_current)
+          m.energy.restarted -= stored_in(*old, m.joint_params[static_cast<size_t>(old->material)]);
+        continue;
+      }
       // What it stores as a stress given below finds it, for the prestress that stress adds.
       ContactEnergy had = kept ? contact_energy(*old, m.joint_params[static_cast<size_t>(old->material)]) : ContactEnergy{};
       if (kept) {
@@ -941,7 +982,7 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
         // Already pressed in, and nothing held this gridpoint back before: it went into the other
         // block unseen. (At a junction a gridpoint held by one block may turn to its neighbour:
         // not lost.)
-        if (!first && f.gap < -0.1 * cb.reach[k]) {
+        if (pressed_late) {
           const auto held = std::lower_bound(set.list.begin(), set.list.end(), c.node,
                                              [](const Contact& x, int node) { return x.node < node; });
           if (held == set.list.end() || held->node != c.node) ++late;

@@ -118,5 +118,65 @@ TEST(ContactRefresh, ACornerSlidOffALoadedFaceIsNotPushedByTheSideItDropsBeside)
   )lua");
 }
 
+// A square pressed 8 cm into the top face of a fixed 28 deg wedge is slid left off its tip. Past
+// the wedge's lower face its corner is beside the wedge, not in it: the top face, whose line runs
+// on past the apex, must not push it, and no contact of it may be found already pressed in.
+TEST(ContactRefresh, ACornerSlidPastAThinTipIsFreeOnceOutsideIt) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, R"lua(
+    model{ title = "a corner slid past a thin tip" }
+    local slope = math.tan(math.rad(28))
+    block{ {0, 0}, {3, -3 * slope}, {3, 0} }
+    block{ x = {1.5, 2.5}, y = {0, 1} }
+    zone{ edge = 0.5 }
+    material{ "rock", density = 2600, young = 1e12, poisson = 0.25 }
+    assign{ material = "rock" }
+    joint_material{ "j", kn = 1e7, ks = 1e7, friction = 0 }
+    jassign{ material = "j" }
+    local upper = gp_near(2, 0.9).block
+    boundary{ polygon = {{2.9, -0.01}, {3.1, -0.01}, {3.1, -3 * slope - 0.1}, {2.9, -3 * slope - 0.1}},
+              fix = "xy" }
+    cycle(1)
+    -- The square moved as a rigid body by its outer gridpoints above its base.
+    local driven = {}
+    for g in gridpoints() do
+      if g.block == upper and g.y > 0.25 and (g.x < 1.51 or g.x > 2.49 or g.y > 0.99) then
+        driven[#driven + 1] = g
+      end
+    end
+    local function drive(vx, vy)
+      for _, g in ipairs(driven) do
+        local h = 0.01  -- boundary{} selects by the gridpoints' positions as built
+        boundary{ polygon = {{g.x - h, g.y - h}, {g.x + h, g.y - h}, {g.x + h, g.y + h}, {g.x - h, g.y + h}},
+                  xvel = vx, yvel = vy }
+      end
+    end
+    local function corner()
+      local g = gp_near(1.5, 1)
+      return 1.5 + g.ux, g.uy
+    end
+    drive(0, -1e-4)
+    while select(2, corner()) > -0.08 do cycle(1) end
+    drive(-1e-4, 0)
+    local checked = 0
+    while corner() > -0.15 do
+      cycle(10)
+      local x, y = corner()
+      if x < 0 or y < -slope * x - 1e-3 then
+        for c in contacts() do
+          if c.block == upper and math.abs(c.x - x) < 0.02 and math.abs(c.y - y) < 0.02 then
+            assert(c.fn == 0, ("the corner at (%.4f, %.4f), outside the wedge, is pushed with %g N/m"):format(
+                              x, y, c.fn))
+          end
+        end
+        checked = checked + 1
+      end
+    end
+    assert(checked > 200, "the corner was outside the wedge at only " .. checked .. " checks")
+    assert(info().late_contacts == 0, info().late_contacts .. " contacts found late")
+  )lua");
+}
+
 }  // namespace
 }  // namespace edem::test
