@@ -868,6 +868,14 @@ bool beside_a_corner(const Mechanics& m, const ContactEdge& e, Vec2 p, double re
   return false;
 }
 
+// Whether gridpoint `node` had a contact with a block other than `block` (list: sorted by node).
+bool held_by_another(const std::vector<Contact>& list, int node, int block) {
+  auto c = std::lower_bound(list.begin(), list.end(), node, [](const Contact& x, int n) { return x.node < n; });
+  for (; c != list.end() && c->node == node; ++c)
+    if (c->other != block) return true;
+  return false;
+}
+
 // Finds again the contacts of the boundary nodes flagged in `redo` (per position in
 // ContactBoundary::nodes; all of them when it is empty) and keeps the others' as they are;
 // rebuilds the force gather and the stiffness rows.
@@ -950,12 +958,14 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
       const bool kept = found_again && same_face(m, old->edge, c.edge);
       // Already pressed in deeper than a contact can get between two detections.
       const bool pressed_late = !first && f.gap < -kLateDepth * cb.reach[k];
-      // Found so beside a corner, the gridpoint came round the corner: it is past the block, not
-      // in it, and no contact is made. (A gridpoint barely behind the face's line, a block's
-      // corner over a closed joint crossing, is on the face's neighbour across the crossing, whose
-      // face runs on along that line: its half-edge over this face is this face's to carry.) Held
-      // on another face before, what that contact stored goes with it, booked as a restart is.
-      if (!kept && pressed_late && beside_a_corner(m, edge, at(m, c.node), cb.reach[k])) {
+      // Found so beside a corner, and held by no other block, the gridpoint came round the
+      // corner: it is past the block, not in it, and no contact is made. (Held by another block,
+      // it is in that one, whose face runs on along this face's line across a closed joint
+      // crossing: its half-edge over this face is this face's to carry, however deep the joint
+      // is closed.) Held on another face of this block before, what that contact stored goes
+      // with it, booked as a restart is.
+      if (!kept && pressed_late && !held_by_another(set.list, c.node, c.other) &&
+          beside_a_corner(m, edge, at(m, c.node), cb.reach[k])) {
         if (found_again && m.energy.started && !m.energy.last_current)
           m.energy.restarted -= stored_in(*old, m.joint_params[static_cast<size_t>(old->material)]);
         continue;

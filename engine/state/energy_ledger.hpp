@@ -66,8 +66,9 @@ struct EnergyLedger {
   double by_bolts = 0.0;     // grout on the rock's nodes, and segments and grout on the bolts' own
   // Of the contacts' energy made, what detections made (negative: lost) where a contact was found
   // on another face of the block its gridpoint presses into and started anew there: what it
-  // stores then, beyond a stress it was given, less what it held on the old face. A gridpoint
-  // pressed in about as deep as the block is thick is as near to another face.
+  // stores then, beyond a stress it was given, less what it held on the old face; or where one
+  // was dropped because its gridpoint, come round a corner of that block, is beside it (all it
+  // held). A gridpoint pressed in about as deep as the block is thick is as near to another face.
   double restarted = 0.0;
 };
 
