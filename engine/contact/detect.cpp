@@ -847,8 +847,9 @@ constexpr double kLateDepth = 0.1;
 // convex corner of e's block near p (within kBesideCorner reaches of the corner): there it is
 // beside the block, past its corner, not in it. A corner slid off a thin tip would otherwise be
 // found anew on the tip's face, whose line runs on past the apex, and be pushed out sideways
-// with the whole overlap it has behind that line. A glued tip is left out: past it the
-// gridpoint is in the block glued beside.
+// with the whole overlap it has behind that line. A corner whose edge beside is glued is no
+// corner of the body the blocks glued there make: past that edge's line the gridpoint is in the
+// block glued beside (at a glued tip, ContactEdge::glued_tip_a, its own faces carry it).
 constexpr double kBesideCorner = 4.0;
 bool beside_a_corner(const Mechanics& m, const ContactEdge& e, Vec2 p, double reach) {
   const ContactBoundary& cb = m.faces;
@@ -857,14 +858,10 @@ bool beside_a_corner(const Mechanics& m, const ContactEdge& e, Vec2 p, double re
     const double out = cross(p - from, d) / norm(d);
     return out > 1e-3 * reach && norm(p - corner) < kBesideCorner * reach;
   };
-  if (e.corner_a && !e.glued_tip_a) {
-    const Vec2 a = at(m, e.a);
-    if (outside(a, at(m, cb.edges[static_cast<size_t>(e.prev)].a), a)) return true;
-  }
-  if (e.corner_b && !e.glued_tip_b) {
-    const Vec2 b = at(m, e.b);
-    if (outside(b, b, at(m, cb.edges[static_cast<size_t>(e.next)].b))) return true;
-  }
+  const ContactEdge& prev = cb.edges[static_cast<size_t>(e.prev)];
+  const ContactEdge& next = cb.edges[static_cast<size_t>(e.next)];
+  if (e.corner_a && prev.touchable && outside(at(m, e.a), at(m, prev.a), at(m, e.a))) return true;
+  if (e.corner_b && next.touchable && outside(at(m, e.b), at(m, e.b), at(m, next.b))) return true;
   return false;
 }
 
