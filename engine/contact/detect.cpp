@@ -865,8 +865,9 @@ bool beside_a_corner(const Mechanics& m, const ContactEdge& e, Vec2 p, double re
   return false;
 }
 
-// Whether gridpoint `node` had a contact with a block other than `block` (list: sorted by node).
-bool held_by_another(const std::vector<Contact>& list, int node, int block) {
+// Whether gridpoint `node` had a contact with a block other than `block` (list: sorted by node;
+// block -1: with any block).
+bool held_by_another(const std::vector<Contact>& list, int node, int block = -1) {
   auto c = std::lower_bound(list.begin(), list.end(), node, [](const Contact& x, int n) { return x.node < n; });
   for (; c != list.end() && c->node == node; ++c)
     if (c->other != block) return true;
@@ -990,9 +991,7 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
         // block unseen. (At a junction a gridpoint held by one block may turn to its neighbour:
         // not lost.)
         if (pressed_late) {
-          const auto held = std::lower_bound(set.list.begin(), set.list.end(), c.node,
-                                             [](const Contact& x, int node) { return x.node < node; });
-          if (held == set.list.end() || held->node != c.node) ++late;
+          if (!held_by_another(set.list, c.node)) ++late;
         }
         // Joints as built keep their strength until they fail; blocks that touch later do not
         // stick together. A fresh crack whose joint material softens starts bonded: its
