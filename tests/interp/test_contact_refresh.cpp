@@ -65,6 +65,18 @@ TEST(ContactRefresh, TheFallingBlockLandsOnTheBaseWithNoContactFoundLate) {
   )");
 }
 
+// drive(points, vx, vy): each of the gridpoints in points (as gridpoints() gives them) held at that
+// velocity [m a cycle in static mode], so that a block is moved as a rigid body by them.
+constexpr const char* kDrive = R"lua(
+local function drive(points, vx, vy)
+  for _, g in ipairs(points) do
+    local h = 0.01  -- boundary{} selects by the gridpoints' positions as built
+    boundary{ polygon = {{g.x - h, g.y - h}, {g.x + h, g.y - h}, {g.x + h, g.y + h}, {g.x - h, g.y + h}},
+              xvel = vx, yvel = vy }
+  end
+end
+)lua";
+
 // A block on another, their joint given 1 MPa (closed 0.1 m), is slid 6 cm right, its corner past
 // the lower block's, then 20 cm down: its corner lies beside the lower block's side, 6 cm out. Its
 // contact, found again on that side, must not keep the closure it had on the top face: 4 cm of
@@ -72,7 +84,7 @@ TEST(ContactRefresh, TheFallingBlockLandsOnTheBaseWithNoContactFoundLate) {
 TEST(ContactRefresh, ACornerSlidOffALoadedFaceIsNotPushedByTheSideItDropsBeside) {
   Interpreter interpreter;
   interpreter.context().quiet = true;
-  expect_runs(interpreter, R"lua(
+  expect_runs(interpreter, std::string(kDrive) + R"lua(
     model{ title = "a loaded corner slid off a face" }
     block{ x = {-1, 0}, y = {-1, 0} }
     block{ x = {-1, 0}, y = {0, 1} }
@@ -99,16 +111,9 @@ TEST(ContactRefresh, ACornerSlidOffALoadedFaceIsNotPushedByTheSideItDropsBeside)
     -- lie on the lower block's and would be selected with them).
     local driven = {}
     for g in gridpoints() do if g.block == upper and g.y > 0.25 then driven[#driven + 1] = g end end
-    local function drive(vx, vy)
-      for _, g in ipairs(driven) do
-        local h = 0.01  -- boundary{} selects by the gridpoints' positions as built
-        boundary{ polygon = {{g.x - h, g.y - h}, {g.x + h, g.y - h}, {g.x + h, g.y + h}, {g.x - h, g.y + h}},
-                  xvel = vx, yvel = vy }
-      end
-    end
-    while gp_near(0, 1).ux < 0.06 do drive(1e-2, 0); cycle(1) end
-    while gp_near(0, 1).uy > -0.2 do drive(0, -1e-2); cycle(1) end
-    drive(0, 0)
+    while gp_near(0, 1).ux < 0.06 do drive(driven, 1e-2, 0); cycle(1) end
+    while gp_near(0, 1).uy > -0.2 do drive(driven, 0, -1e-2); cycle(1) end
+    drive(driven, 0, 0)
     cycle(20)
     for _, c in ipairs(corner_contacts()) do
       assert(c.x > 0.03 and c.y < -0.1, ("the corner is at (%g, %g), not beside the side"):format(c.x, c.y))
@@ -124,7 +129,7 @@ TEST(ContactRefresh, ACornerSlidOffALoadedFaceIsNotPushedByTheSideItDropsBeside)
 TEST(ContactRefresh, ACornerSlidPastAThinTipIsFreeOnceOutsideIt) {
   Interpreter interpreter;
   interpreter.context().quiet = true;
-  expect_runs(interpreter, R"lua(
+  expect_runs(interpreter, std::string(kDrive) + R"lua(
     model{ title = "a corner slid past a thin tip" }
     local slope = math.tan(math.rad(28))
     block{ {0, 0}, {3, -3 * slope}, {3, 0} }
@@ -145,20 +150,13 @@ TEST(ContactRefresh, ACornerSlidPastAThinTipIsFreeOnceOutsideIt) {
         driven[#driven + 1] = g
       end
     end
-    local function drive(vx, vy)
-      for _, g in ipairs(driven) do
-        local h = 0.01  -- boundary{} selects by the gridpoints' positions as built
-        boundary{ polygon = {{g.x - h, g.y - h}, {g.x + h, g.y - h}, {g.x + h, g.y + h}, {g.x - h, g.y + h}},
-                  xvel = vx, yvel = vy }
-      end
-    end
     local function corner()
       local g = gp_near(1.5, 1)
       return 1.5 + g.ux, g.uy
     end
-    drive(0, -1e-4)
+    drive(driven, 0, -1e-4)
     while select(2, corner()) > -0.08 do cycle(1) end
-    drive(-1e-4, 0)
+    drive(driven, -1e-4, 0)
     local checked = 0
     while corner() > -0.15 do
       cycle(10)

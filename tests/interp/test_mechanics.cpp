@@ -138,14 +138,8 @@ TEST(Mechanics, AStallLimitEndsTheSolveOfABlockThatKeepsSliding) {
 // hole_in_a_ring(): a new model, a 40 m x 30 m block under in-situ stress with a 3 m hole to dig
 // and, in a ring of 7 m about it, potential cracks that break in several rounds once it is dug.
 constexpr const char* kHoleInARing = R"lua(
-local function circle(r)
-  local points = {}
-  for k = 0, 31 do
-    local a = 2 * math.pi * k / 32
-    points[#points + 1] = { 20 + r * math.cos(a), 15 + r * math.sin(a) }
-  end
-  return points
-end
+local shapes = require "edem.shapes"
+local function circle(r) return shapes.circle{ centre = { 20, 15 }, radius = r, segments = 32 } end
 local function hole_in_a_ring()
   model{ title = "cracks at equilibrium" }
   block{ x = { 0, 40 }, y = { 0, 30 } }
