@@ -58,13 +58,15 @@ const Command& excavate_command() {
           "Excavates a region: its zones turn null, as in UDEC 7 (the geometry stays: fill{} "
           "can put material back), the new surface is free and contacts with the excavated "
           "blocks go; the stage count (stage()) goes up by one and cracks and histories carry "
-          "it. With release = n, the pull of the excavated zones (their stress and weight) on "
-          "the new surface is held as a load and taken off linearly over the next n cycles, so "
-          "that the rock unloads gradually instead of ringing; solve{} does not stop before it "
-          "is off. The region must take whole blocks: a name cut earlier with region{}, or a "
-          "polygon along block outlines. assign{} later changes excavated zones' material "
-          "without filling them. excavate{ block = id } takes out one block wherever it is now, as a fallen "
-          "block is mucked out (UDEC's delete); that is no new stage.",
+          "it. With release = n, what the excavation takes off the rock in place is held on it "
+          "as a load and taken off linearly over the next n cycles, so that the rock unloads "
+          "gradually instead of ringing: the excavated zones' pull (their stress and weight) "
+          "and the push of the excavated blocks' contacts, on the new surface and on the rock "
+          "they pressed across joints; solve{} does not stop before it is off. The region must "
+          "take whole blocks: a name cut earlier with region{}, or a polygon along block "
+          "outlines. assign{} later changes excavated zones' material without filling them. "
+          "excavate{ block = id } takes out one block wherever it is now, as a fallen block is "
+          "mucked out (UDEC's delete); that is no new stage.",
       .positional = {kRegionItem},
       .keys =
           {
@@ -72,7 +74,7 @@ const Command& excavate_command() {
               {"block", Type::integer, "", ge(1), kOptional,
                "or a block's id (blocks()): a loose block taken out wherever it has moved to", "a region"},
               {"release", Type::integer, "cycles", ge(0), "0",
-               "cycles over which the excavated zones' forces come off the new surface (0: at once)"},
+               "cycles over which the excavated rock's forces come off the rock in place (0: at once)"},
           },
       .run = run_excavate,
       .usage = "excavate(\"stage1\")\nexcavate{ region = \"stage2\", release = 2000 }",

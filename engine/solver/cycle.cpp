@@ -629,10 +629,10 @@ Measure run_cycles(Mechanics& m, int count) {
   return out;
 }
 
-Measure measure_state(const Mechanics& m) {
-  Measure out;
+std::vector<double> standing_forces(const Mechanics& m, double* applied) {
   std::vector<double> f(m.u.size(), 0.0);
-  out.applied = m.applied_magnitude;
+  double unused = 0.0;
+  double& sum = applied != nullptr ? *applied : unused;
   // The grouped zones' forces see their group's mean stress change, as in the cycle.
   std::vector<double> shift(m.active.size(), 0.0);
   for (size_t k = 0; k < m.mates.size(); ++k) {
@@ -650,7 +650,7 @@ Measure measure_state(const Mechanics& m) {
       const size_t n = static_cast<size_t>(g.node[i]);
       f[2 * n] += zf.fx[i];
       f[2 * n + 1] += zf.fy[i];
-      out.applied += std::sqrt(zf.fx[i] * zf.fx[i] + zf.fy[i] * zf.fy[i]);
+      sum += std::sqrt(zf.fx[i] * zf.fx[i] + zf.fy[i] * zf.fy[i]);
     }
   }
   // Contact forces at the current positions, without a step.
@@ -670,8 +670,15 @@ Measure measure_state(const Mechanics& m) {
       f[2 * node] += p[2 * k];
       f[2 * node + 1] += p[2 * k + 1];
     }
-    out.applied += contact_applied(now);
+    sum += contact_applied(now);
   }
+  return f;
+}
+
+Measure measure_state(const Mechanics& m) {
+  Measure out;
+  out.applied = m.applied_magnitude;
+  std::vector<double> f = standing_forces(m, &out.applied);
   // The bolts as their last cycle left them.
   if (!m.bolt_hosts.gather.empty())
     for (size_t n = 0; n < static_cast<size_t>(m.node_count); ++n) add_bolt_forces(m, n, &f[2 * n]);

@@ -100,11 +100,12 @@ void book_commands(Mechanics& m) {
   e.last_current = true;
 }
 
-void book_excavation(Mechanics& m, const StoredEnergy& before) {
+void book_excavation(Mechanics& m, const StoredEnergy& before, double given) {
   EnergyLedger& e = m.energy;
   if (!e.started) return;
   const StoredEnergy now = stored_energy(m);
   e.excavated = e.excavated + (before - now);
+  e.excavated.normal += given;
   e.last = e.last + (now - before);
 }
 

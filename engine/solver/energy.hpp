@@ -22,11 +22,12 @@ void start_energy(Mechanics& m);
 // Whether each contact keeps its own balance (energy{ by_contact = true }), from nothing now.
 void book_by_contact(Mechanics& m, bool on);
 
-// Books what commands changed since the ledger's last state (energy.last) as theirs, or, with
-// `dug`, what changed since `before` as taken away by excavation; the ledger's last state then
-// follows the state now.
+// Books what commands changed since the ledger's last state (energy.last) as theirs, or
+// (book_excavation) what changed since `before` as taken away by excavation, less `given`, what
+// contacts were given meanwhile and the prestress booked; the ledger's last state then follows the
+// state now.
 void book_commands(Mechanics& m);
-void book_excavation(Mechanics& m, const StoredEnergy& before);
+void book_excavation(Mechanics& m, const StoredEnergy& before, double given);
 
 // The balance now. Between cycling commands (and in their callbacks), what commands changed since
 // the ledger's last state counts as theirs.

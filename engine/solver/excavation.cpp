@@ -1,11 +1,13 @@
 // Excavation and backfill: excavate{} turns the zones of a region null, as UDEC 7 does (the
-// geometry stays, so fill{} can put material back), and can take the excavated zones' pull on
-// the new surface off gradually; stage() counts the excavations.
+// geometry stays, so fill{} can put material back), and can take what the excavated rock bore on
+// the rock in place off gradually; stage() counts the excavations.
 //
-// The rock left in place was in equilibrium with the excavated zones' forces on the nodes they
-// shared. Removing those zones at once is a sudden load that rings; with release = n the same
-// forces (stress and weight) are held as loads on those nodes and taken off linearly over the
-// next n cycles, so the new surface unloads the way a face advancing past it would.
+// The rock left in place was in equilibrium with what is dug out: the excavated zones' forces
+// (stress and weight) on the nodes they shared, and the contacts on the dug blocks' faces, which
+// pressed on the rock around and on the corners it shares with them. Removing those at once is a
+// sudden load that rings; with release = n whatever the excavation takes off a node that stays is
+// held on it as a load and taken off linearly over the next n cycles, so the new surface unloads
+// the way a face advancing past it would.
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -14,6 +16,8 @@
 
 #include "constitutive/zone_law.hpp"
 #include "core/error.hpp"
+#include "contact/detect.hpp"
+#include "solver/cycle.hpp"
 #include "solver/energy.hpp"
 #include "solver/excavation.hpp"
 #include "solver/loads.hpp"
@@ -22,44 +26,6 @@
 
 namespace edem {
 namespace {
-
-// Forces of the zones `gone` (stress and weight) on the nodes that active zones still hold.
-void hold_release(Mechanics& m, const std::vector<int>& gone, long cycles) {
-  std::vector<char> going(m.zone_material.size(), 0);
-  for (const int z : gone) going[static_cast<size_t>(z)] = 1;
-  std::vector<char> kept(static_cast<size_t>(m.node_count), 0);
-  for (const int z : m.active)
-    if (!going[static_cast<size_t>(z)])
-      for (const int n : m.geometry[static_cast<size_t>(z)].node) kept[static_cast<size_t>(n)] = 1;
-  std::vector<double> force(2 * static_cast<size_t>(m.node_count), 0.0);
-  for (const int z : gone) {
-    if (zone_law(m.params[static_cast<size_t>(m.zone_material[static_cast<size_t>(z)])].model).is_void) continue;
-    const ZoneGeometry& g = m.geometry[static_cast<size_t>(z)];
-    const Stress& s = m.stress[static_cast<size_t>(z)];
-    const double weight = m.params[static_cast<size_t>(m.zone_material[static_cast<size_t>(z)])].density *
-                          g.area / 3.0;
-    for (int i = 0; i < 3; ++i) {
-      const size_t n = static_cast<size_t>(g.node[static_cast<size_t>(i)]);
-      force[2 * n] += -g.area * (s.xx * g.b[i] + s.xy * g.c[i]) + weight * m.gravity.x;
-      force[2 * n + 1] += -g.area * (s.xy * g.b[i] + s.yy * g.c[i]) + weight * m.gravity.y;
-    }
-  }
-  ReleaseLoad& r = m.release;
-  // A release still running is merged: its share left over, as it stands now.
-  std::vector<double> previous(force.size(), 0.0);
-  for (size_t i = 0; i < r.dof.size(); ++i)
-    previous[static_cast<size_t>(r.dof[i])] = r.factor * r.force[i];
-  r = ReleaseLoad{};
-  for (size_t dof = 0; dof < force.size(); ++dof) {
-    if (!kept[dof / 2]) continue;
-    const double f = force[dof] + previous[dof];
-    if (f == 0.0) continue;
-    r.dof.push_back(static_cast<int>(dof));
-    r.force.push_back(f);
-  }
-  r.cycles = cycles;
-  r.factor = r.dof.empty() ? 0.0 : 1.0;
-}
 
 // Glued edges (region outlines, intact potential cracks) between blocks with no rock left and
 // blocks still in place: a new surface that other blocks must be able to touch (a wedge sliding
@@ -92,6 +58,46 @@ bool unglue_excavated(Mechanics& m, const Mesh& mesh) {
     changed = true;
   }
   return changed;
+}
+
+// The forces of the zones' stresses, the contacts and the weight on the nodes now [N/m, by dof].
+std::vector<double> forces_held(const Mechanics& m) {
+  std::vector<double> f = standing_forces(m);
+  for (size_t dof = 0; dof < f.size(); ++dof) f[dof] += m.weight[dof];
+  return f;
+}
+
+// The release once the zones are dug and the contacts found again: on each node rock still holds,
+// the forces it had before (`before`, on the nodes as they were numbered then, `old_node`:
+// gridpoint -> node then) less those it has now, and a running release's share left over
+// (`previous`, numbered as `before`). A node split by the excavation (rock glued only through
+// what was dug) gives what it had to its first part, and its other parts hold what they have now.
+void hold_release(Mechanics& m, const std::vector<double>& before,
+                  const std::vector<double>& previous, const std::vector<int>& old_node, long cycles) {
+  const std::vector<double> now = forces_held(m);
+  std::vector<int> origin(static_cast<size_t>(m.node_count), -1);
+  for (size_t gp = 0; gp < m.gp_node.size(); ++gp)
+    origin[static_cast<size_t>(m.gp_node[gp])] = old_node[gp];
+  std::vector<char> rock(static_cast<size_t>(m.node_count), 0);
+  for (const int z : m.active)
+    for (const int n : m.geometry[static_cast<size_t>(z)].node) rock[static_cast<size_t>(n)] = 1;
+  std::vector<char> given(before.size() / 2, 0);
+  ReleaseLoad& r = m.release;
+  r = ReleaseLoad{};
+  for (size_t n = 0; n < rock.size(); ++n) {
+    if (!rock[n]) continue;
+    const size_t o = static_cast<size_t>(origin[n]);
+    const bool first = !given[o];
+    given[o] = 1;
+    for (size_t c = 0; c < 2; ++c) {
+      const double f = (first ? before[2 * o + c] + previous[2 * o + c] : 0.0) - now[2 * n + c];
+      if (f == 0.0) continue;
+      r.dof.push_back(static_cast<int>(2 * n + c));
+      r.force.push_back(f);
+    }
+  }
+  r.cycles = cycles;
+  r.factor = r.dof.empty() ? 0.0 : 1.0;
 }
 
 // After reconnect(): the release's shares move from the old nodes to the new nodes of the rock
@@ -139,11 +145,18 @@ void drop_release_on_dug_nodes(Mechanics& m, const Mesh& mesh) {
 
 void excavate_zones(Mechanics& m, const Mesh& mesh, const std::vector<int>& zones, long release,
                     bool new_stage) {
-  const StoredEnergy before = stored_energy(m);
+  std::vector<double> held, previous;
+  const std::vector<int> old_node = m.gp_node;
   if (release > 0) {
     prepare(m, mesh);  // the zone geometry and the active list of now
-    hold_release(m, zones, release);
+    refresh_contacts(m, 0.0);  // found, if the model has not cycled since it changed
+    held = forces_held(m);
+    previous.assign(held.size(), 0.0);
+    for (size_t i = 0; i < m.release.dof.size(); ++i)
+      previous[static_cast<size_t>(m.release.dof[i])] = m.release.factor * m.release.force[i];
+    m.release = ReleaseLoad{};
   }
+  const StoredEnergy before = stored_energy(m);
   if (new_stage) {
     m.stage += 1;
     m.stage_cycles.push_back(m.info.cycle);
@@ -155,17 +168,26 @@ void excavate_zones(Mechanics& m, const Mesh& mesh, const std::vector<int>& zone
     m.zone_state[static_cast<size_t>(z)] = 0;
     m.zone_history[static_cast<size_t>(z)] = 0.0;
   }
-  lump_boundary_loads(m);  // with the release's share
-  const std::vector<int> old_node = m.gp_node;
   if (unglue_excavated(m, mesh)) {
     reconnect(m, mesh);
     m.keep_fits = false;  // the zones changed, not only the nodes: sections are fitted again
-    follow_release(m, mesh, old_node);
+    if (release == 0) follow_release(m, mesh, old_node);
   }
-  drop_release_on_dug_nodes(m, mesh);
-  lump_boundary_loads(m);
+  if (release == 0) drop_release_on_dug_nodes(m, mesh);
   m.dirty = true;
-  book_excavation(m, before);  // the rock's energy goes with it
+  const double prestress = m.energy.prestress;
+  if (release > 0) {
+    // The contacts the rock has now, as the first cycle would find them: those of the dug blocks
+    // go, and where a node split, its part in place may press where the whole did.
+    prepare(m, mesh);
+    refresh_contacts(m, 0.0);
+    hold_release(m, held, previous, old_node, release);
+    m.dirty = true;
+  }
+  lump_boundary_loads(m);  // with the release's share
+  // The rock's energy goes with it, and so does what its contacts stored; a contact found again
+  // and given a stress stores what the prestress booked.
+  book_excavation(m, before, m.energy.prestress - prestress);
 }
 
 void fill_zones(Mechanics& m, const std::vector<int>& zones, int material) {

@@ -311,5 +311,41 @@ TEST(Excavation, MuckingOutDuringAReleaseTakesTheBlocksShare) {
   )");
 }
 
+// A dug block that pressed on the rock across a joint pushed it as its zones did: released over n
+// cycles, that push comes off over them too, not at once. (The wall's speed ten cycles in is the
+// share of the sudden release's that the load taken off by then gives: 0.7 %.)
+TEST(Excavation, AReleaseTakesTheDugBlocksContactsOffGradually) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, R"(
+    local function wall_speed(release)
+      model{}
+      block{ x = {-2, 2}, y = {-2, 2} }
+      crack{ from = {0, -2}, to = {0, 2} }
+      region{ name = "dig", polygon = {{0, -3}, {3, -3}, {3, 3}, {0, 3}} }
+      zone{ edge = 0.5 }
+      material{ "rock", density = 2500, young = 1e9, poisson = 0.25 }
+      assign{ material = "rock" }
+      joint_material{ "joint", kn = 1e10, ks = 1e10, friction = 30 }
+      jassign{ material = "joint" }
+      boundary{ side = "left", fix = "x" } boundary{ side = "right", fix = "x" }
+      boundary{ side = "bottom", fix = "y" } boundary{ side = "top", fix = "y" }
+      insitu{ sxx = -1e6, syy = -1e6, szz = -1e6 }
+      solve{ ratio = 1e-6 }
+      set{ mode = "dynamic", damping = "none" }
+      excavate{ region = "dig", release = release }
+      cycle(10)
+      local fastest = 0
+      for g in gridpoints() do
+        if g.x < 0.5 then fastest = math.max(fastest, math.abs(g.vx)) end
+      end
+      return fastest
+    end
+    local sudden, gradual = wall_speed(1), wall_speed(1000)
+    assert(sudden > 0, "the wall moves once the block that held it is gone")
+    assert(gradual < 0.02 * sudden, ("over 1000 cycles: %g m/s, at once: %g m/s"):format(gradual, sudden))
+  )");
+}
+
 }  // namespace
 }  // namespace edem::test
