@@ -62,9 +62,10 @@ const Command& excavate_command() {
           "as a load and taken off linearly over the next n cycles, so that the rock unloads "
           "gradually instead of ringing: the excavated zones' pull (their stress and weight) "
           "and the push of the excavated blocks' contacts, on the new surface and on the rock "
-          "they pressed across joints; solve{} does not stop before it is off. The region must "
-          "take whole blocks: a name cut earlier with region{}, or a polygon along block "
-          "outlines. assign{} later changes excavated zones' material without filling them. "
+          "they pressed across joints (the contacts are found again at once for it; bolts cut "
+          "by the excavation let go at once); solve{} does not stop before it is off. The "
+          "region must take whole blocks: a name cut earlier with region{}, or a polygon along "
+          "block outlines. assign{} later changes excavated zones' material without filling them. "
           "excavate{ block = id } takes out one block wherever it is now, as a fallen block is "
           "mucked out (UDEC's delete); that is no new stage.",
       .positional = {kRegionItem},

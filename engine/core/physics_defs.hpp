@@ -101,7 +101,7 @@ struct AssignDef {
 struct ExcavateDef {
   RegionRef region;
   int block = -1;    // or a block (0-based): a loose block taken out (mucked out) wherever it is
-  long release = 0;  // cycles over which the excavated zones' forces are taken off (0: at once)
+  long release = 0;  // cycles over which the excavated rock's forces are taken off (0: at once)
 };
 
 // Backfill of excavated zones in a region with a material, stress-free.

@@ -100,13 +100,12 @@ void book_commands(Mechanics& m) {
   e.last_current = true;
 }
 
-void book_excavation(Mechanics& m, const StoredEnergy& before, double given) {
+void book_excavation(Mechanics& m, const StoredEnergy& before, const StoredEnergy& booked) {
   EnergyLedger& e = m.energy;
   if (!e.started) return;
   const StoredEnergy now = stored_energy(m);
-  e.excavated = e.excavated + (before - now);
-  e.excavated.normal += given;
-  e.last = e.last + (now - before);
+  e.excavated = e.excavated + (before - now) + booked;
+  e.last = e.last + (now - before) - booked;
 }
 
 EnergyReport energy_report(const Mechanics& m) {

@@ -23,11 +23,11 @@ void start_energy(Mechanics& m);
 void book_by_contact(Mechanics& m, bool on);
 
 // Books what commands changed since the ledger's last state (energy.last) as theirs, or
-// (book_excavation) what changed since `before` as taken away by excavation, less `given`, what
-// contacts were given meanwhile and the prestress booked; the ledger's last state then follows the
-// state now.
+// (book_excavation) what changed since `before` as taken away by excavation, but for `booked`,
+// what was booked meanwhile where it arose (a detection's prestress and rock dug out: the ledger's
+// last state moved by it); the ledger's last state then follows the state now.
 void book_commands(Mechanics& m);
-void book_excavation(Mechanics& m, const StoredEnergy& before, double given);
+void book_excavation(Mechanics& m, const StoredEnergy& before, const StoredEnergy& booked);
 
 // The balance now. Between cycling commands (and in their callbacks), what commands changed since
 // the ledger's last state counts as theirs.

@@ -60,20 +60,36 @@ bool unglue_excavated(Mechanics& m, const Mesh& mesh) {
   return changed;
 }
 
-// The forces of the zones' stresses, the contacts and the weight on the nodes now [N/m, by dof].
+// The forces on the nodes now [N/m, by dof]: the zones' stresses, the contacts, the weight and the
+// loads (a running release's share among them).
 std::vector<double> forces_held(const Mechanics& m) {
   std::vector<double> f = standing_forces(m);
-  for (size_t dof = 0; dof < f.size(); ++dof) f[dof] += m.weight[dof];
+  for (size_t dof = 0; dof < f.size(); ++dof) f[dof] += m.weight[dof] + m.load[dof];
+  return f;
+}
+
+// forces_held() with the contacts found as a detection now would find them, the model left as it
+// was: a model not yet cycled keeps its first detection (joints as built, the in-situ stresses
+// given) for the rock that stays.
+std::vector<double> forces_held_found_now(Mechanics& m) {
+  const ContactSet contacts = m.contacts;
+  const EnergyLedger energy = m.energy;
+  const bool fresh_cracks = m.fresh_cracks;
+  refresh_contacts(m, 0.0);
+  std::vector<double> f = forces_held(m);
+  m.contacts = contacts;
+  m.energy = energy;
+  m.fresh_cracks = fresh_cracks;
   return f;
 }
 
 // The release once the zones are dug and the contacts found again: on each node rock still holds,
 // the forces it had before (`before`, on the nodes as they were numbered then, `old_node`:
-// gridpoint -> node then) less those it has now, and a running release's share left over
-// (`previous`, numbered as `before`). A node split by the excavation (rock glued only through
-// what was dug) gives what it had to its first part, and its other parts hold what they have now.
-void hold_release(Mechanics& m, const std::vector<double>& before,
-                  const std::vector<double>& previous, const std::vector<int>& old_node, long cycles) {
+// gridpoint -> node then) less those it has now, loads included, so that the first cycle finds
+// each node as it was. A node split by the excavation (rock glued only through what was dug) gives
+// what it had to its first part, and its other parts hold what they have now.
+void hold_release(Mechanics& m, const std::vector<double>& before, const std::vector<int>& old_node,
+                  long cycles) {
   const std::vector<double> now = forces_held(m);
   std::vector<int> origin(static_cast<size_t>(m.node_count), -1);
   for (size_t gp = 0; gp < m.gp_node.size(); ++gp)
@@ -90,7 +106,7 @@ void hold_release(Mechanics& m, const std::vector<double>& before,
     const bool first = !given[o];
     given[o] = 1;
     for (size_t c = 0; c < 2; ++c) {
-      const double f = (first ? before[2 * o + c] + previous[2 * o + c] : 0.0) - now[2 * n + c];
+      const double f = (first ? before[2 * o + c] : 0.0) - now[2 * n + c];
       if (f == 0.0) continue;
       r.dof.push_back(static_cast<int>(2 * n + c));
       r.force.push_back(f);
@@ -145,16 +161,13 @@ void drop_release_on_dug_nodes(Mechanics& m, const Mesh& mesh) {
 
 void excavate_zones(Mechanics& m, const Mesh& mesh, const std::vector<int>& zones, long release,
                     bool new_stage) {
-  std::vector<double> held, previous;
+  std::vector<double> held;
   const std::vector<int> old_node = m.gp_node;
   if (release > 0) {
     prepare(m, mesh);  // the zone geometry and the active list of now
-    refresh_contacts(m, 0.0);  // found, if the model has not cycled since it changed
-    held = forces_held(m);
-    previous.assign(held.size(), 0.0);
-    for (size_t i = 0; i < m.release.dof.size(); ++i)
-      previous[static_cast<size_t>(m.release.dof[i])] = m.release.factor * m.release.force[i];
-    m.release = ReleaseLoad{};
+    held = forces_held_found_now(m);
+    m.release = ReleaseLoad{};  // its share is in `held`, and goes on in the new release
+    lump_boundary_loads(m);
   }
   const StoredEnergy before = stored_energy(m);
   if (new_stage) {
@@ -175,19 +188,20 @@ void excavate_zones(Mechanics& m, const Mesh& mesh, const std::vector<int>& zone
   }
   if (release == 0) drop_release_on_dug_nodes(m, mesh);
   m.dirty = true;
-  const double prestress = m.energy.prestress;
+  // What a detection books itself (prestress given, energy taken away with dug rock) moves the
+  // ledger's last point with it: not booked again below.
+  const StoredEnergy last = m.energy.last;
   if (release > 0) {
-    // The contacts the rock has now, as the first cycle would find them: those of the dug blocks
-    // go, and where a node split, its part in place may press where the whole did.
+    // The contacts the rock has now, as the next solve finds them: those of the dug blocks go,
+    // and where a node split, its part in place may press where the whole did.
     prepare(m, mesh);
     refresh_contacts(m, 0.0);
-    hold_release(m, held, previous, old_node, release);
+    update_masses(m);  // with the contacts' stiffness, as the next solve has them
+    hold_release(m, held, old_node, release);
     m.dirty = true;
   }
   lump_boundary_loads(m);  // with the release's share
-  // The rock's energy goes with it, and so does what its contacts stored; a contact found again
-  // and given a stress stores what the prestress booked.
-  book_excavation(m, before, m.energy.prestress - prestress);
+  book_excavation(m, before, m.energy.last - last);  // the rock's energy goes with it
 }
 
 void fill_zones(Mechanics& m, const std::vector<int>& zones, int material) {

@@ -64,7 +64,7 @@ void lump_boundary_loads(Mechanics& m) {
     m.load[2 * b] += (tax + 2.0 * tbx) / 6.0;
     m.load[2 * b + 1] += (tay + 2.0 * tby) / 6.0;
   }
-  // What an excavation still holds on the new surface (excavate{ release = n }).
+  // What an excavation still holds on the rock (excavate{ release = n }).
   for (size_t i = 0; i < m.release.dof.size(); ++i)
     m.load[static_cast<size_t>(m.release.dof[i])] += m.release.factor * m.release.force[i];
 }

@@ -94,8 +94,9 @@ struct AdaptiveDamping {
   bool have_r_start = false;
 };
 
-// The forces excavated zones exerted on the nodes they shared with the rock left in place,
-// held as loads and taken off linearly over `cycles` (excavate{ release = n }).
+// What an excavation took off the nodes of the rock left in place (the excavated zones' forces,
+// the dug blocks' contacts), held as loads and taken off linearly over `cycles`
+// (excavate{ release = n }).
 struct ReleaseLoad {
   std::vector<int> dof;        // node components that carry a share
   std::vector<double> force;   // the share at excavation [N/m]

@@ -347,5 +347,37 @@ TEST(Excavation, AReleaseTakesTheDugBlocksContactsOffGradually) {
   )");
 }
 
+// With a release the contacts are found again at the excavation: what the dug blocks' contacts
+// stored goes with them as dug out, and what a detection books itself is not booked again, so
+// the balance is closed before any cycle (a quadrant of a jointed, glued square dug out: one
+// above the joint's crossing, one below it).
+TEST(Excavation, AReleaseBooksWhatTheContactsStoredOnce) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, R"(
+    for _, dig in ipairs{ { 0, 3 }, { -3, 0 } } do
+      model{}
+      block{ x = {-2, 2}, y = {-2, 2} }
+      crack{ from = {0, -2}, to = {0, 2} }
+      region{ name = "dig", polygon = {{0, dig[1]}, {3, dig[1]}, {3, dig[2]}, {0, dig[2]}} }
+      zone{ edge = 0.5 }
+      material{ "rock", density = 2500, young = 1e9, poisson = 0.25 }
+      assign{ material = "rock" }
+      joint_material{ "joint", kn = 1e10, ks = 1e10, friction = 30 }
+      jassign{ material = "joint" }
+      boundary{ side = "left", fix = "x" } boundary{ side = "right", fix = "x" }
+      boundary{ side = "bottom", fix = "y" } boundary{ side = "top", fix = "y" }
+      insitu{ sxx = -1e6, syy = -2e6, szz = -1e6 }
+      solve{ ratio = 1e-6 }
+      excavate{ region = "dig", release = 1000 }
+      local e = energy()
+      local what = ("digging y %g to %g: commands %g, error %g, dug out %g"):format(dig[1], dig[2], e.commands,
+                                                                                  e.error, e.excavated)
+      assert(math.abs(e.commands) < 1e-9 * e.largest and math.abs(e.error) < 1e-9 * e.largest, what)
+      assert(e.excavated > 0, what)
+    end
+  )");
+}
+
 }  // namespace
 }  // namespace edem::test
