@@ -311,27 +311,36 @@ TEST(Excavation, MuckingOutDuringAReleaseTakesTheBlocksShare) {
   )");
 }
 
+// A square cut by a vertical joint at x = 0, held on all four sides, in the in-situ stress (its
+// vertical part `syy`) and solved; the region "dig" is the rock right of the joint between
+// y = `from` and y = `to`.
+const char* kJointedSquare = R"(
+  local function jointed_square(from, to, syy)
+    model{}
+    block{ x = {-2, 2}, y = {-2, 2} }
+    crack{ from = {0, -2}, to = {0, 2} }
+    region{ name = "dig", polygon = {{0, from}, {3, from}, {3, to}, {0, to}} }
+    zone{ edge = 0.5 }
+    material{ "rock", density = 2500, young = 1e9, poisson = 0.25 }
+    assign{ material = "rock" }
+    joint_material{ "joint", kn = 1e10, ks = 1e10, friction = 30 }
+    jassign{ material = "joint" }
+    boundary{ side = "left", fix = "x" } boundary{ side = "right", fix = "x" }
+    boundary{ side = "bottom", fix = "y" } boundary{ side = "top", fix = "y" }
+    insitu{ sxx = -1e6, syy = syy, szz = -1e6 }
+    solve{ ratio = 1e-6 }
+  end
+)";
+
 // A dug block that pressed on the rock across a joint pushed it as its zones did: released over n
 // cycles, that push comes off over them too, not at once. (The wall's speed ten cycles in is the
 // share of the sudden release's that the load taken off by then gives: 0.7 %.)
 TEST(Excavation, AReleaseTakesTheDugBlocksContactsOffGradually) {
   Interpreter interpreter;
   interpreter.context().quiet = true;
-  expect_runs(interpreter, R"(
+  expect_runs(interpreter, std::string(kJointedSquare) + R"(
     local function wall_speed(release)
-      model{}
-      block{ x = {-2, 2}, y = {-2, 2} }
-      crack{ from = {0, -2}, to = {0, 2} }
-      region{ name = "dig", polygon = {{0, -3}, {3, -3}, {3, 3}, {0, 3}} }
-      zone{ edge = 0.5 }
-      material{ "rock", density = 2500, young = 1e9, poisson = 0.25 }
-      assign{ material = "rock" }
-      joint_material{ "joint", kn = 1e10, ks = 1e10, friction = 30 }
-      jassign{ material = "joint" }
-      boundary{ side = "left", fix = "x" } boundary{ side = "right", fix = "x" }
-      boundary{ side = "bottom", fix = "y" } boundary{ side = "top", fix = "y" }
-      insitu{ sxx = -1e6, syy = -1e6, szz = -1e6 }
-      solve{ ratio = 1e-6 }
+      jointed_square(-3, 3, -1e6)
       set{ mode = "dynamic", damping = "none" }
       excavate{ region = "dig", release = release }
       cycle(10)
@@ -354,21 +363,9 @@ TEST(Excavation, AReleaseTakesTheDugBlocksContactsOffGradually) {
 TEST(Excavation, AReleaseBooksWhatTheContactsStoredOnce) {
   Interpreter interpreter;
   interpreter.context().quiet = true;
-  expect_runs(interpreter, R"(
+  expect_runs(interpreter, std::string(kJointedSquare) + R"(
     for _, dig in ipairs{ { 0, 3 }, { -3, 0 } } do
-      model{}
-      block{ x = {-2, 2}, y = {-2, 2} }
-      crack{ from = {0, -2}, to = {0, 2} }
-      region{ name = "dig", polygon = {{0, dig[1]}, {3, dig[1]}, {3, dig[2]}, {0, dig[2]}} }
-      zone{ edge = 0.5 }
-      material{ "rock", density = 2500, young = 1e9, poisson = 0.25 }
-      assign{ material = "rock" }
-      joint_material{ "joint", kn = 1e10, ks = 1e10, friction = 30 }
-      jassign{ material = "joint" }
-      boundary{ side = "left", fix = "x" } boundary{ side = "right", fix = "x" }
-      boundary{ side = "bottom", fix = "y" } boundary{ side = "top", fix = "y" }
-      insitu{ sxx = -1e6, syy = -2e6, szz = -1e6 }
-      solve{ ratio = 1e-6 }
+      jointed_square(dig[1], dig[2], -2e6)
       excavate{ region = "dig", release = 1000 }
       local e = energy()
       local what = ("digging y %g to %g: commands %g, error %g, dug out %g"):format(dig[1], dig[2], e.commands,
