@@ -34,6 +34,9 @@ constexpr double kShareBand = 0.5;
 // none where the cosine between their normals (one turned round) is below this, all of it where
 // it is above twice this (60 and 0 deg).
 constexpr double kShareFacing = 0.5;
+// The nearest face takes all its share from this cosine up (84 deg), none once it is behind the
+// half-edge (90 deg and beyond).
+constexpr double kNearestFacing = 0.1;
 // Edges whose outward normals are within 10 degrees face the same way.
 const double kSameFacing = std::cos(10.0 * M_PI / 180.0);
 
@@ -428,12 +431,18 @@ double distance_to_face(const Mechanics& m, Vec2 q, const Found& f) {
 // the corner of two blocks), the nearer takes more: a block whose face is further from the
 // half-edge's quarter point than the nearest one by kShareBand of the half-edge or more takes
 // none, nearer by less a part that grows as it comes nearer; a face other than the nearest only
-// as far as the half-edge faces it (kShareFacing); together they take no more than the half-edge.
+// as far as the half-edge faces it (kShareFacing), the nearest unless it is behind it
+// (kNearestFacing), and one between by how near it is; together they take no more than the
+// half-edge. A face the half-edge does not face counts as that much further off (by up to the
+// band): behind it, it takes no share, and its nearness takes none from the face it presses on.
 // So the length moves smoothly with the gridpoint: a half-edge sliding past a joint crossing goes
-// from one block to the next as it goes over, and a gridpoint at a corner does not lose a
-// contact at one detection and make it again at the next. All zero when no face is within
-// `search` and a quarter of the edge of the quarter point. `distance` and `part` are the
-// caller's, per found block, so that a gridpoint's half-edges reuse them.
+// from one block to the next as it goes over, a gridpoint at a corner does not lose a contact at
+// one detection and make it again at the next, and a half-edge that runs along one block's face
+// onto another's keeps its length as the two swap as the nearest (the length found again at
+// each detection would jump, and its stress kept, its energy with it: made at every swap). All
+// zero when no face is within `search` and a quarter of the edge of the quarter point.
+// `distance` and `part` are the caller's, per found block, so that a gridpoint's half-edges
+// reuse them.
 void half_edge_parts(const Mechanics& m, Vec2 p, Vec2 far_end, Vec2 n_e, double reach, double search,
                      const std::vector<Found>& found, std::vector<double>& distance, std::vector<double>& part) {
   const double half = 0.5 * norm(far_end - p);
@@ -442,19 +451,25 @@ void half_edge_parts(const Mechanics& m, Vec2 p, Vec2 far_end, Vec2 n_e, double 
   const double within = search + 0.5 * half;
   distance.resize(found.size());
   part.assign(found.size(), 0.0);
-  double nearest = within;
-  size_t first = found.size();
+  const double band = kShareBand * half;
+  // How far each face faces the half-edge, as the nearest (1: squarely enough) [-].
+  const auto as_nearest = [&](size_t j) { return std::clamp(-dot(n_e, found[j].normal) / kNearestFacing, 0.0, 1.0); };
+  const auto apart = [&](size_t j) { return distance[j] + (1.0 - as_nearest(j)) * band; };
+  bool any = false;
+  double nearest = INFINITY;
   for (size_t j = 0; j < found.size(); ++j) {
     distance[j] = distance_to_face(m, quarter, found[j]);
-    if (distance[j] < nearest) nearest = distance[j], first = j;
+    any = any || distance[j] < within;
+    nearest = std::min(nearest, apart(j));
   }
-  if (first == found.size()) return;
+  if (!any) return;
   double total = 0.0;
   for (size_t j = 0; j < found.size(); ++j) {
     if (!(distance[j] < within)) continue;
     // A face met edge on would carry the half-edge's traction over next to no length.
-    const double facing = j == first ? 1.0 : std::clamp((-dot(n_e, found[j].normal) - kShareFacing) / kShareFacing, 0.0, 1.0);
-    const double nearness = std::clamp(1.0 - (distance[j] - nearest) / (kShareBand * half), 0.0, 1.0);
+    const double nearness = std::clamp(1.0 - (apart(j) - nearest) / band, 0.0, 1.0);
+    const double as_other = std::clamp((-dot(n_e, found[j].normal) - kShareFacing) / kShareFacing, 0.0, 1.0);
+    const double facing = as_other + (as_nearest(j) - as_other) * nearness;
     if (!(facing * nearness > 0.0) || continues_outline(m, found[j], p, n_e, reach)) continue;
     part[j] = facing * nearness * covered_length(m, p, middle, found[j].edge);
     total += part[j];
