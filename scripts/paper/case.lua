@@ -59,7 +59,8 @@
 -- solved, displacements reset, and each step dug, solved to a ratio of 1e-5 and bolted. Blocks
 -- that come loose are mucked out every 200 cycles.
 -- Writes: the result row (cracks, crown and walls, the settlement 5 m above the crown, bolts
--- broken or at half their yield, steps short of their ratio, where a step stopped) and pictures:
+-- broken or at half their yield, steps short of their ratio, where a step stopped, the energy
+-- balance's error so far) and pictures:
 -- CASE_prepass_arch.png, CASE_prepass_step9.png, CASE_prepass.png (the seed's Figure 8),
 -- CASE_cracks.png (Figures 9 and 11), CASE_profile.png and .csv (Figure 12: the settlement 10 m
 -- above the crown; figure12.lua draws three runs together).
@@ -143,7 +144,7 @@ local columns = { "case", "set", "depth", "bolts", "release", "steps", "cracks",
                   "cuts_left_out", "threads", "seconds", "prepass_stopped", "unconverged", "stopped",
                   "points_fallen", "edge_m", "far_m", "first", "muck", "damping", "mirror", "crack_length_m",
                   "origin_x_m", "origin_y_m", "judge", "judgments", "prepass", "bolt_at", "prepass_damping",
-                  "unconverged_why", "rock" }
+                  "unconverged_why", "rock", "energy_error_J_m", "energy_error_share" }
 for _, file in ipairs{ TABLE, STEPS_TABLE } do
   local existing = io.open(file, "r")
   if existing then
@@ -499,6 +500,7 @@ local function result_row()
   r.profile_left, r.profile_right = profile_halves()
   r.bolts_broken, r.bolts_loaded = bolt_loads()
   r.seconds = os.time() - started
+  r.energy = energy()  -- the balance since the excavation began: what the method made so far
   local row = { CASE, SET, DEPTH, BOLTS, RELEASE, done, r.tension + r.shear, r.tension, r.shear, r.left, r.right,
                 ("%.3f"):format(r.left_mean_y), ("%.3f"):format(r.right_mean_y), ("%.5f"):format(settlement()),
                 ("%.5f"):format(settlement(above_crown)), ("%.5f"):format(r.left_moves),
@@ -512,7 +514,8 @@ local function result_row()
                 '"' .. table.concat(unconverged, " ") .. '"',
                 '"' .. stopped:gsub('"', "'") .. '"', '"' .. points_fallen() .. '"', EDGE, FAR, FIRST, MUCK,
                 DAMPING, MIRROR, ("%.2f"):format(r.length), ORIGIN_X or "", ORIGIN_Y or "", JUDGE_AT, judgments, PREPASS,
-                BOLT_AT, PREPASS_DAMPING, '"' .. table.concat(unconverged_why, "; "):gsub('"', "'") .. '"', ROCK }
+                BOLT_AT, PREPASS_DAMPING, '"' .. table.concat(unconverged_why, "; "):gsub('"', "'") .. '"', ROCK,
+                ("%.4g"):format(r.energy.error), ("%.3g"):format(r.energy.relative_error) }
   local named = {}  -- for result{}: each column's value, unquoted
   for i, v in ipairs(row) do
     row[i] = tostring(v)
