@@ -28,11 +28,13 @@ constexpr double kRowBound = 1.21;
 // has its contacts found again, with those of the blocks near it (refresh_contacts).
 constexpr double kStaleMotion = 0.125;
 // A half-edge over two blocks' faces whose quarter point is nearer to one than to the other by
-// this fraction of the half-edge or more is the nearer's alone; nearer by less, the two share it.
+// this fraction of the half-edge or more is the nearer's alone; nearer by less, the two share it
+// (a face the half-edge does not face counts as further off: half_edge_parts).
 constexpr double kShareBand = 0.5;
-// A half-edge over a face that is not the nearest takes a share of it only where it faces it:
-// none where the cosine between their normals (one turned round) is below this, all of it where
-// it is above twice this (60 and 0 deg).
+// A half-edge over a face that is not near the nearest takes a share of it only where it faces
+// it: none where the cosine between their normals (one turned round) is below this, all of it
+// where it is above twice this (60 and 0 deg); a face about as near as the nearest, as the
+// nearest does (kNearestFacing).
 constexpr double kShareFacing = 0.5;
 // The nearest face takes all its share from this cosine up (84 deg), none once it is behind the
 // half-edge (90 deg and beyond).
@@ -131,7 +133,9 @@ struct Found {
   bool leads_past_a = false, leads_past_b = false;  // Contact::leads_past_a, leads_past_b
   double t = 0.0, gap = 0.0;
   Vec2 normal;
-  Vec2 insitu_force;   // consistent nodal force of the in-situ traction, this side's half [N/m]
+  // The traction given (the in-situ stress, or a fresh crack's section's) on this side's half of
+  // its half-edges, each over its part that faces the face [N/m].
+  Vec2 insitu_force;
   bool insitu = false;
   bool cracked = false;  // the traction is a fresh crack's (its section broke since the last)
 };
@@ -466,7 +470,6 @@ void half_edge_parts(const Mechanics& m, Vec2 p, Vec2 far_end, Vec2 n_e, double 
   double total = 0.0;
   for (size_t j = 0; j < found.size(); ++j) {
     if (!(distance[j] < within)) continue;
-    // A face met edge on would carry the half-edge's traction over next to no length.
     const double nearness = std::clamp(1.0 - (apart(j) - nearest) / band, 0.0, 1.0);
     const double as_other = std::clamp((-dot(n_e, found[j].normal) - kShareFacing) / kShareFacing, 0.0, 1.0);
     const double facing = as_other + (as_nearest(j) - as_other) * nearness;

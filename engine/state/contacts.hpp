@@ -8,7 +8,8 @@
 // edge, the part that lies over the block's faces, projected on the contact plane (so a
 // gridpoint facing the end of one block and the start of the next shares between them, and the
 // length moves smoothly as it slides past a joint crossing); where two blocks' faces both lie
-// under a half-edge, the one nearer its quarter point takes more (detect.cpp, kShareBand).
+// under a half-edge, the one nearer its quarter point takes more, and one the half-edge does not
+// face takes none (detect.cpp, kShareBand, kNearestFacing).
 // Between detections the length follows where the nodes are: it is held in proportion to the
 // facing length, what the gridpoint's half-edges give over the face's line, clipped at its
 // convex corners (facing_length.hpp), and the slope of the contact's stored energy with that

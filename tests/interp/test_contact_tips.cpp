@@ -285,21 +285,24 @@ TEST(ContactTips, APressedTipWhoseEdgeTurnsIntoTheFaceStaysATip) {
 // one of the two faces and has the other behind it, as near as the wedge is thick (at the quarter
 // point of its 3.6 cm half-edge, 1.9 mm). Both halves face their own face squarely, so by symmetry
 // the apex's length on the upper block is its length on the lower one, a quarter of its edge,
-// whatever the gap: the face behind carries nothing of the half-edge and takes none of it. Were
-// that face, once the nearer, to share the half-edge with the face it presses on, the length
-// would fall with the gap (to 55 % at 1 cm). Where the two swap as the nearest from one detection
-// to the next, the length found again jumps, and with its stress kept the contact's energy jumps
-// with it (in the seed's Case 3, a wedge rocking between two blocks made 4.7e6 J/m so in 24,000
-// cycles of one step).
+// whatever the gap: the face behind carries nothing of the half-edge and takes none of it. The
+// lower block's top runs on past the apex level (DROP 0) or falling 17 degrees (DROP 0.3). Were
+// the face behind, once the nearer, to count as the nearest, the face in front would lose its
+// nearness and with it its length (to 55 % at 1 cm, level); falling, where the lower block's face
+// no longer runs on along the half-edge, it would take half the half-edge at once (the length
+// halves at 2 mm). Where the two swap as the nearest from one detection to the next, the length
+// found again jumps, and with its stress kept the contact's energy jumps with it (in the seed's
+// Case 3, a wedge rocking between two blocks made 4.7e6 J/m so in 24,000 cycles of one step).
 TEST(ContactTips, AHalfEdgeKeepsItsLengthOverItsFaceWhateverLiesBehindIt) {
   Interpreter interpreter;
   interpreter.context().quiet = true;
   expect_runs(interpreter, R"lua(
     local tan = math.tan(math.rad(3))
+    for _, drop in ipairs{0, 0.3} do
     for _, gap in ipairs{0.0005, 0.001, 0.002, 0.003, 0.004, 0.006, 0.01} do
       model{ title = "a thin wedge between two blocks" }
       block{ {0, 0}, {-1, tan}, {-1, -tan} }
-      block{ {-1, -1}, {1, -1}, {1, 0}, {0, 0}, {-1, -tan} }
+      block{ {-1, -1}, {1, -1}, {1, -drop}, {0, 0}, {-1, -tan} }
       local nx, ny = math.sin(math.rad(3)) * gap, math.cos(math.rad(3)) * gap  -- off the upper edge
       block{ {-1 + nx, tan + ny}, {nx, ny}, {1, ny}, {1, 1}, {-1, 1} }
       zone{ edge = 0.16 }
@@ -317,10 +320,12 @@ TEST(ContactTips, AHalfEdgeKeepsItsLengthOverItsFaceWhateverLiesBehindIt) {
       for c in contacts() do
         if c.block == wedge and math.abs(c.x) < 1e-9 and math.abs(c.y) < 1e-9 then length[c.other] = c.length end
       end
-      assert(length[lower] and length[upper], ("gap %g m: the apex has no contact with both blocks"):format(gap))
+      assert(length[lower] and length[upper], ("drop %g, gap %g m: the apex has no contact with both blocks"):format(
+        drop, gap))
       assert(math.abs(length[upper] / length[lower] - 1) < 1e-3,
-             ("gap %g m: the apex carries %.5f m on the upper block, %.5f m on the lower"):format(
-               gap, length[upper], length[lower]))
+             ("drop %g, gap %g m: the apex carries %.5f m on the upper block, %.5f m on the lower"):format(
+               drop, gap, length[upper], length[lower]))
+    end
     end
   )lua");
 }
