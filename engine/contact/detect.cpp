@@ -502,8 +502,8 @@ void give_half_edges(const Mechanics& m, size_t k, double search, bool with_insi
       Found& to = found[j];
       // This side's share, half; of the half edge, the part that lies over the other block, as
       // far as it faces it.
-      const double facing = 0.5 * parts[j] * std::max(0.0, -dot(n_e, to.normal));
-      to.length += facing;
+      const double facing_part = 0.5 * parts[j] * std::max(0.0, -dot(n_e, to.normal));
+      to.length += facing_part;
       if (!with_traction) continue;
       if (const auto s = traction_source(m, own, p + (1.0 / 3.0) * (far_end - p), with_insitu)) {
         // This side's share of the edge's consistent nodal force, half * sigma . n, for the
@@ -511,7 +511,7 @@ void give_half_edges(const Mechanics& m, size_t k, double search, bool with_insi
         // (The whole part's force over the facing part's length would give a half-edge that meets
         // the face near edge on the traction's shear as a normal stress, without bound: 70 MPa on
         // a tip of 1e-6 m in Case 3, where the section broke at 21 MPa.)
-        to.insitu_force = to.insitu_force + facing * Vec2{s->xx * n_e.x + s->xy * n_e.y, s->xy * n_e.x + s->yy * n_e.y};
+        to.insitu_force = to.insitu_force + facing_part * Vec2{s->xx * n_e.x + s->xy * n_e.y, s->xy * n_e.x + s->yy * n_e.y};
         to.insitu = true;
         to.cracked = to.cracked || section_of(m, own) >= 0;
       }
