@@ -36,9 +36,12 @@ constexpr double kShareBand = 0.5;
 // where it is above twice this (60 and 0 deg); a face about as near as the nearest, as the
 // nearest does (kNearestFacing).
 constexpr double kShareFacing = 0.5;
-// The nearest face takes all its share from this cosine up (84 deg), none once it is behind the
-// half-edge (90 deg and beyond).
-constexpr double kNearestFacing = 0.1;
+// The nearest face takes all its share from this cosine up (89.4 deg), none once it is behind the
+// half-edge (90 deg and beyond). Narrow: a half-edge's length over a face already falls with the
+// cosine (its projection, as far as it faces it), so the ramp is there only to keep the change
+// of nearest continuous; wider, it would cut the length of a corner that runs into a face near
+// edge on, and the stress on it would grow without need.
+constexpr double kNearestFacing = 0.01;
 // Edges whose outward normals are within 10 degrees face the same way.
 const double kSameFacing = std::cos(10.0 * M_PI / 180.0);
 
