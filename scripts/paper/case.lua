@@ -403,19 +403,20 @@ local function muck_out()
   end
 end
 local mucking = every(200, muck_out)
--- The measuring points whose block has fallen: mucked out, or lying in the opening dug so far
--- (fallen onto the floor, held there). A gridpoint of rock that is gone keeps the displacement it
--- had, and one on a block in the opening rides down with the floor it lies on as the benches
--- below are dug, so what the row gives for it is not a measurement of the rock mass; the row
--- names them (column points_fallen), and trends.lua does not judge on them but for the walls,
--- where it takes such a value as the least the wall moved.
+-- The measuring points whose block has fallen: mucked out, or moved more than 1 m into the
+-- opening dug so far (fallen onto the floor and held there, as muck = "opening" would take it;
+-- a face block that bulged in by half its thickness has not). A gridpoint of rock that is gone
+-- keeps the displacement it had, and one on a block on the floor rides down with it as the
+-- benches below are dug, so what the row gives for it is not a measurement of the rock mass;
+-- the row names them (column points_fallen), and trends.lua does not judge on them but for the
+-- walls, where it takes such a value as the least the wall moved.
 local function points_fallen()
   local names = {}
-  local in_place = {}  -- block id -> the block, for those not dug or mucked out
-  for b in blocks() do if not b.excavated then in_place[b.id] = b end end
-  local function fell(block)
-    return mucked[block] or (in_place[block] ~= nil and #in_the_opening({ in_place[block] }) > 0)
-  end
+  local moved = {}
+  for b in moved_blocks(1.0) do moved[#moved + 1] = b end
+  local on_the_floor = {}  -- block id -> true
+  for _, b in ipairs(in_the_opening(moved)) do on_the_floor[b.id] = true end
+  local function fell(block) return mucked[block] or on_the_floor[block] end
   local function check(name, points)
     for _, g in ipairs(points) do
       if fell(g.block) then names[#names + 1] = name; return end
