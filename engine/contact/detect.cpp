@@ -37,10 +37,10 @@ constexpr double kShareBand = 0.5;
 // nearest does (kNearestFacing).
 constexpr double kShareFacing = 0.5;
 // The nearest face takes all its share from this cosine up (89.4 deg), none once it is behind the
-// half-edge (90 deg and beyond). Narrow: a half-edge's length over a face already falls with the
-// cosine (its projection, as far as it faces it), so the ramp is there only to keep the change
-// of nearest continuous; wider, it would cut the length of a corner that runs into a face near
-// edge on, and the stress on it would grow without need.
+// half-edge (90 deg and beyond). Narrow: a half-edge's length over a face already falls as the
+// square of the cosine (its projection, as far as it faces it), so the ramp is there only to keep
+// the change of nearest continuous; wider, it would cut the length of a corner that runs into a
+// face near edge on, and the stress on it would grow without need.
 constexpr double kNearestFacing = 0.01;
 // Edges whose outward normals are within 10 degrees face the same way.
 const double kSameFacing = std::cos(10.0 * M_PI / 180.0);

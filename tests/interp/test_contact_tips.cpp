@@ -364,8 +364,8 @@ TEST(ContactTips, ACornerRunningIntoAFaceNearEdgeOnCarriesItsHalfEdgesOverIt) {
         expected = expected + 0.5 * (0.5 * next_gp * s) * s  -- one side's half, projected, faced
       end
       local found
-      for c in contacts() do
-        if math.abs(c.x) < 1e-9 and math.abs(c.y - gap) < 1e-9 then found = c end
+      for contact in contacts() do
+        if math.abs(contact.x) < 1e-9 and math.abs(contact.y - gap) < 1e-9 then found = contact end
       end
       assert(found, ("lean %g: no contact at the corner"):format(lean))
       assert(math.abs(found.length / expected - 1) < 1e-9,
