@@ -612,6 +612,7 @@ cancel(mucking)
 local r, line, named = result_row()
 append_row(TABLE, line)
 result(named)
+local fell = points_fallen()
 print(("%s: %d steps, %d cracks (%d tension, %d shear; %d left, %d right), crown %.4f m, walls in %.4f (left) "
        .. "and %.4f m (right), 5 m behind their faces %.4f and %.4f m, 15 m behind %.4f and %.4f m, "
        .. "10 m above the crown left / right half %.4f / %.4f m, %d contacts slipping, %d fallen, "
@@ -620,8 +621,7 @@ print(("%s: %d steps, %d cracks (%d tension, %d shear; %d left, %d right), crown
   r.left_moves_5m, r.right_moves_5m, r.left_moves_15m, r.right_moves_15m, r.profile_left, r.profile_right,
   r.slipping, fallen, laid, skipped, r.bolts_broken, r.seconds, stopped ~= "" and ("; stopped at " .. stopped) or "")
   .. (#unconverged > 0 and ("; short of equilibrium after step " .. table.concat(unconverged, ", ")) or "")
-  .. (points_fallen() ~= "" and ("; measuring points mucked out with their blocks (their last values kept): "
-                                 .. points_fallen()) or ""))
+  .. (fell ~= "" and ("; measuring points whose blocks fell (mucked out, or onto the floor): " .. fell) or ""))
 
 -- Where the cracks came from: the potential crack by distance from the outline, the length broken
 -- against the length placed.
