@@ -5,10 +5,14 @@
 // gridpoint at, or pressed a little into, the corner of the other block belongs to the face it
 // lies against, not to the side edge that happens to be a micrometre nearer.
 //
-// The edge the contact had before (`held`) is kept while it is offered, the gridpoint still
-// projects onto it (not past its ends: a gridpoint sliding along a face goes on to the next
-// edge), and it faces the boundary within kHeldFacing of the best, or the best is an edge the
-// gridpoint lies past the end of. A corner pressed into the corner of the block diagonally
+// The edge the contact had before (`held`) is kept while it is offered, and it faces the boundary
+// within kHeldFacing of the best, or the best is an edge the gridpoint lies past the end of. Past
+// the held edge's end itself, it is left for a best the gridpoint projects onto (sliding along a
+// face, it goes on to the next edge), and kept otherwise: beyond a convex corner of the other
+// block the gridpoint is past the ends of both edges that meet there. The matching gridpoint of
+// that corner across a broken crack sits there, facing the two edges equally; chosen afresh at
+// each search, as the blocks rock by a hair one way and the other, its contact would leave the
+// face it presses on for the open one and come back, its load dropped and given again. A corner pressed into the corner of the block diagonally
 // across a crossing of two joints faces that block's two edges equally (they are its own edges'
 // continuations); choosing afresh at each search would swing its force between their normals,
 // some 100 degrees apart, as the blocks' small rotations reorder them: a limit cycle that keeps
@@ -37,10 +41,14 @@ struct EdgeChoice {
   double best_opposition = std::numeric_limits<double>::infinity();   // [-]
   bool best_over = false;  // the gridpoint projects onto the best edge
   double held_opposition = std::numeric_limits<double>::infinity();   // [-], infinite: not offered
+  bool held_over = false;  // the gridpoint projects onto the held edge
 
   // `over`: the gridpoint projects onto the edge, between its ends.
   void offer(int edge, double distance, double opposition, bool over) {
-    if (edge == held && over) held_opposition = opposition;
+    if (edge == held) {
+      held_opposition = opposition;
+      held_over = over;
+    }
     const bool squarer = opposition < best_opposition - 1e-9;
     const bool as_square = opposition <= best_opposition + 1e-9;
     if (squarer || (as_square && distance < best_distance)) {
@@ -56,6 +64,7 @@ struct EdgeChoice {
     const bool offered = held_opposition < std::numeric_limits<double>::infinity();
     if (held < 0 || held == best || !offered) return best;
     if (!best_over) return held;
+    if (!held_over) return best;
     return angle(held_opposition) <= angle(best_opposition) + kHeldFacing ? held : best;
   }
 

@@ -1,6 +1,6 @@
 // Which edge a contact goes to: the squarest facing, the nearest among equals, and the edge it
 // had kept while no other faces the gridpoint more than 10 degrees more squarely, or while the
-// squarer one is an edge the gridpoint lies past the end of. The corner
+// squarer one is an edge the gridpoint lies past the end of (beyond a corner, past both). The corner
 // case is the seed cavern's: the tip of a 55 degree wedge pressed into the tip of the wedge
 // across a crossing of two joints, whose two edges it faces equally.
 #include <gtest/gtest.h>
@@ -96,6 +96,28 @@ TEST(EdgeChoice, AHeldEdgeIsNotLeftForOneTheGridpointIsPastTheEndOf) {
   }
   EXPECT_EQ(held.chosen(), 2);
   EXPECT_EQ(fresh.chosen(), 1);
+}
+
+TEST(EdgeChoice, BeyondACornerTheHeldFaceIsKeptWhicheverFacesSquarer) {
+  // The matching gridpoint of a block's convex corner across a broken crack, just outside that
+  // corner: past the ends of both edges that meet there, as near to each (the corner is the
+  // nearest point of both), and facing them equally but for a hair that changes sign as the
+  // blocks rock. Held on either, it stays; with nothing held the squarer one wins.
+  const Vec2 own = 2.0 * at_angle(-19.5);  // facing both squarely as much
+  const Vec2 pressed = at_angle(175.5), open = at_angle(145.5);  // 30 deg apart
+  for (const double hair : {-1e-5, 1e-5}) {
+    const double o_pressed = dot(pressed, own) + hair, o_open = dot(open, own) - hair;
+    for (const int held : {1, 2}) {
+      EdgeChoice choice{.held = held, .own_size = norm(own)};
+      choice.offer(1, 0.0006, o_pressed, false);
+      choice.offer(2, 0.0006, o_open, false);
+      EXPECT_EQ(choice.chosen(), held) << "hair " << hair;
+    }
+    EdgeChoice fresh{.own_size = norm(own)};
+    fresh.offer(1, 0.0006, o_pressed, false);
+    fresh.offer(2, 0.0006, o_open, false);
+    EXPECT_EQ(fresh.chosen(), hair < 0.0 ? 1 : 2);
+  }
 }
 
 TEST(EdgeChoice, AHeldEdgeNoLongerAmongTheNearOnesIsDropped) {
