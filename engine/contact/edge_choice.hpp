@@ -12,14 +12,15 @@
 // block the gridpoint is past the ends of both edges that meet there. The matching gridpoint of
 // that corner across a broken crack sits there, facing the two edges equally; chosen afresh at
 // each search, as the blocks rock by a hair one way and the other, its contact would leave the
-// face it presses on for the open one and come back, its load dropped and given again. A corner pressed into the corner of the block diagonally
-// across a crossing of two joints faces that block's two edges equally (they are its own edges'
-// continuations); choosing afresh at each search would swing its force between their normals,
-// some 100 degrees apart, as the blocks' small rotations reorder them: a limit cycle that keeps
-// the walls of the seed cavern from settling. A tip that has slid past the corner of a face onto
-// the block's side faces that face more squarely than the side, yet is not over it: taken back
-// to the face at one search and handed to the side at the next, as the search's distances
-// reorder, it would swing between them the same way.
+// face it presses on for the open one and come back, its load dropped and given again. A corner
+// pressed into the corner of the block diagonally across a crossing of two joints faces that
+// block's two edges equally (they are its own edges' continuations); choosing afresh at each
+// search would swing its force between their normals, some 100 degrees apart, as the blocks'
+// small rotations reorder them: a limit cycle that keeps the walls of the seed cavern from
+// settling. A tip that has slid past the corner of a face onto the block's side faces that face
+// more squarely than the side, yet is not over it: taken back to the face at one search and
+// handed to the side at the next, as the search's distances reorder, it would swing between them
+// the same way.
 #pragma once
 
 #include <algorithm>

@@ -1,8 +1,8 @@
 // Which edge a contact goes to: the squarest facing, the nearest among equals, and the edge it
 // had kept while no other faces the gridpoint more than 10 degrees more squarely, or while the
-// squarer one is an edge the gridpoint lies past the end of (beyond a corner, past both). The corner
-// case is the seed cavern's: the tip of a 55 degree wedge pressed into the tip of the wedge
-// across a crossing of two joints, whose two edges it faces equally.
+// squarer one is an edge the gridpoint lies past the end of (beyond a corner, past both). The
+// corner case is the seed cavern's: the tip of a 55 degree wedge pressed into the tip of the
+// wedge across a crossing of two joints, whose two edges it faces equally.
 #include <gtest/gtest.h>
 
 #include <cmath>
