@@ -146,10 +146,10 @@ struct Found {
 // The nearest touchable edge of `block` within `search` of node k's gridpoint, or nothing:
 // among the edges about as near as the nearest (within a tenth of the reach), the one that
 // EdgeChoice picks (edge_choice.hpp), given `held`, the edge the gridpoint's contact with this
-// block had (-1: none). Matching gridpoints on the two faces of a joint (zoning.hpp) sit
+// block had (-1: none), and whether that contact presses. Matching gridpoints on the two faces of a joint (zoning.hpp) sit
 // exactly at each other's corners.
 std::optional<Found> nearest_edge(const Mechanics& m, int node, Vec2 p, Vec2 own_normal, int block,
-                                  double reach, double search, int held) {
+                                  double reach, double search, int held, bool held_presses) {
   const ContactBoundary& cb = m.faces;
   const int first = cb.block_first_edge[static_cast<size_t>(block)];
   const int last = cb.block_first_edge[static_cast<size_t>(block) + 1];
@@ -165,7 +165,7 @@ std::optional<Found> nearest_edge(const Mechanics& m, int node, Vec2 p, Vec2 own
   // next, and its contact would swing between them (with its stress, made for one face, pressed
   // on the other), making energy at every swing.
   const double held_about = std::min(search, nearest + 0.2 * reach);
-  EdgeChoice choice{.held = held, .own_size = norm(own_normal)};
+  EdgeChoice choice{.held = held, .own_size = norm(own_normal), .held_presses = held_presses};
   for (int e = first; e < last; ++e) {
     const ContactEdge& edge = cb.edges[static_cast<size_t>(e)];
     if (!edge.touchable || edge.a == node || edge.b == node) continue;
@@ -553,8 +553,9 @@ std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t
     if (std::find(own_first, own_last, block) != own_last) continue;
     if (!grid.boxes[static_cast<size_t>(block)].contains(p, follow)) continue;
     const int held = held_edge(m.contacts, node, block);
-    const double radius = held < 0 ? reach : pressed_contact(m.contacts, node, block) ? 2.0 * follow : follow;
-    if (auto f = nearest_edge(m, node, p, own_normal, block, reach, radius, held)) {
+    const bool presses = pressed_contact(m.contacts, node, block) != nullptr;
+    const double radius = held < 0 ? reach : presses ? 2.0 * follow : follow;
+    if (auto f = nearest_edge(m, node, p, own_normal, block, reach, radius, held, presses)) {
       found.push_back(*f);
       search = std::max(search, std::min(radius, follow));
     }

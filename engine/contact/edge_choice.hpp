@@ -8,11 +8,13 @@
 // The edge the contact had before (`held`) is kept while it is offered, and it faces the boundary
 // within kHeldFacing of the best, or the best is an edge the gridpoint lies past the end of. Past
 // the held edge's end itself, it is left for a best the gridpoint projects onto (sliding along a
-// face, it goes on to the next edge), and kept otherwise: beyond a convex corner of the other
-// block the gridpoint is past the ends of both edges that meet there. The matching gridpoint of
-// that corner across a broken crack sits there, facing the two edges equally; chosen afresh at
-// each search, as the blocks rock by a hair one way and the other, its contact would leave the
-// face it presses on for the open one and come back, its load dropped and given again. A corner
+// face, it goes on to the next edge), and kept otherwise while its contact presses: beyond a
+// convex corner of the other block the gridpoint is past the ends of both edges that meet there.
+// The matching gridpoint of that corner across a broken crack sits there, facing the two edges
+// equally; chosen afresh at each search, as the blocks rock by a hair one way and the other, its
+// contact would leave the face it presses on for the open one and come back, its load dropped and
+// given again. An open one goes to the squarer edge: on a face that opened, the gridpoint would
+// otherwise stay off the one that presses. A corner
 // pressed into the corner of the block diagonally across a crossing of two joints faces that
 // block's two edges equally (they are its own edges' continuations); choosing afresh at each
 // search would swing its force between their normals, some 100 degrees apart, as the blocks'
@@ -36,6 +38,7 @@ inline constexpr double kHeldFacing = 10.0 * std::numbers::pi / 180.0;
 struct EdgeChoice {
   int held = -1;            // the edge the contact had, -1: none
   double own_size = 0.0;    // length of the gridpoint's summed outward normal [-]
+  bool held_presses = false;  // the contact on the held edge is closed, in compression
 
   int best = -1;
   double best_distance = std::numeric_limits<double>::infinity();     // [m]
@@ -64,7 +67,7 @@ struct EdgeChoice {
   int chosen() const {
     const bool offered = held_opposition < std::numeric_limits<double>::infinity();
     if (held < 0 || held == best || !offered) return best;
-    if (!best_over) return held;
+    if (!best_over) return held_over || held_presses ? held : best;
     if (!held_over) return best;
     return angle(held_opposition) <= angle(best_opposition) + kHeldFacing ? held : best;
   }

@@ -98,20 +98,25 @@ TEST(EdgeChoice, AHeldEdgeIsNotLeftForOneTheGridpointIsPastTheEndOf) {
   EXPECT_EQ(fresh.chosen(), 1);
 }
 
-TEST(EdgeChoice, BeyondACornerTheHeldFaceIsKeptWhicheverFacesSquarer) {
+TEST(EdgeChoice, BeyondACornerAPressedContactKeepsItsFaceWhicheverFacesSquarer) {
   // The matching gridpoint of a block's convex corner across a broken crack, just outside that
   // corner: past the ends of both edges that meet there, as near to each (the corner is the
   // nearest point of both), and facing them equally but for a hair that changes sign as the
-  // blocks rock. Held on either, it stays; with nothing held the squarer one wins.
+  // blocks rock. Held on either while its contact presses, it stays; held open, or with nothing
+  // held, the squarer one wins.
   const Vec2 own = 2.0 * at_angle(-19.5);  // facing both squarely as much
   const Vec2 pressed = at_angle(175.5), open = at_angle(145.5);  // 30 deg apart
   for (const double hair : {-1e-5, 1e-5}) {
     const double o_pressed = dot(pressed, own) + hair, o_open = dot(open, own) - hair;
     for (const int held : {1, 2}) {
-      EdgeChoice choice{.held = held, .own_size = norm(own)};
+      EdgeChoice choice{.held = held, .own_size = norm(own), .held_presses = true};
       choice.offer(1, 0.0006, o_pressed, false);
       choice.offer(2, 0.0006, o_open, false);
       EXPECT_EQ(choice.chosen(), held) << "hair " << hair;
+      EdgeChoice opened{.held = held, .own_size = norm(own)};
+      opened.offer(1, 0.0006, o_pressed, false);
+      opened.offer(2, 0.0006, o_open, false);
+      EXPECT_EQ(opened.chosen(), hair < 0.0 ? 1 : 2) << "hair " << hair;
     }
     EdgeChoice fresh{.own_size = norm(own)};
     fresh.offer(1, 0.0006, o_pressed, false);
