@@ -143,11 +143,11 @@ struct Found {
   bool cracked = false;  // the traction is a fresh crack's (its section broke since the last)
 };
 
-// The nearest touchable edge of `block` within `search` of node k's gridpoint, or nothing:
-// among the edges about as near as the nearest (within a tenth of the reach), the one that
-// EdgeChoice picks (edge_choice.hpp), given `held`, the edge the gridpoint's contact with this
-// block had (-1: none), and whether that contact presses. Matching gridpoints on the two faces of a joint (zoning.hpp) sit
-// exactly at each other's corners.
+// The nearest touchable edge of `block` within `search` of node k's gridpoint, or nothing: among
+// the edges about as near as the nearest (within a tenth of the reach), the one that EdgeChoice
+// picks (edge_choice.hpp), given `held`, the edge the gridpoint's contact with this block had (-1:
+// none), and whether that contact presses. Matching gridpoints on the two faces of a joint
+// (zoning.hpp) sit exactly at each other's corners.
 std::optional<Found> nearest_edge(const Mechanics& m, int node, Vec2 p, Vec2 own_normal, int block,
                                   double reach, double search, int held, bool held_presses) {
   const ContactBoundary& cb = m.faces;

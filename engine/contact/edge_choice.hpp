@@ -8,21 +8,20 @@
 // The edge the contact had before (`held`) is kept while it is offered, and it faces the boundary
 // within kHeldFacing of the best, or the best is an edge the gridpoint lies past the end of. Past
 // the held edge's end itself, it is left for a best the gridpoint projects onto (sliding along a
-// face, it goes on to the next edge), and kept otherwise while its contact presses: beyond a
-// convex corner of the other block the gridpoint is past the ends of both edges that meet there.
-// The matching gridpoint of that corner across a broken crack sits there, facing the two edges
-// equally; chosen afresh at each search, as the blocks rock by a hair one way and the other, its
-// contact would leave the face it presses on for the open one and come back, its load dropped and
-// given again. An open one goes to the squarer edge: on a face that opened, the gridpoint would
-// otherwise stay off the one that presses. A corner
-// pressed into the corner of the block diagonally across a crossing of two joints faces that
-// block's two edges equally (they are its own edges' continuations); choosing afresh at each
-// search would swing its force between their normals, some 100 degrees apart, as the blocks'
-// small rotations reorder them: a limit cycle that keeps the walls of the seed cavern from
-// settling. A tip that has slid past the corner of a face onto the block's side faces that face
-// more squarely than the side, yet is not over it: taken back to the face at one search and
-// handed to the side at the next, as the search's distances reorder, it would swing between them
-// the same way.
+// face, it goes on to the next edge), and kept otherwise while its contact presses: beyond a convex
+// corner of the other block the gridpoint is past the ends of both edges that meet there. The
+// matching gridpoint of that corner across a broken crack sits there, facing the two edges equally;
+// chosen afresh at each search, as the blocks rock by a hair one way and the other, its contact
+// would leave the face it presses on for the open one and come back, its load dropped and given
+// again. An open one goes to the squarer edge: on a face that opened, the gridpoint would otherwise
+// stay off the one that presses. A corner pressed into the corner of the block diagonally across a
+// crossing of two joints faces that block's two edges equally (they are its own edges'
+// continuations); choosing afresh at each search would swing its force between their normals, some
+// 100 degrees apart, as the blocks' small rotations reorder them: a limit cycle that keeps the
+// walls of the seed cavern from settling. A tip that has slid past the corner of a face onto the
+// block's side faces that face more squarely than the side, yet is not over it: taken back to the
+// face at one search and handed to the side at the next, as the search's distances reorder, it
+// would swing between them the same way.
 #pragma once
 
 #include <algorithm>
