@@ -372,17 +372,13 @@ const Contact* held_contact(const ContactSet& set, int node, int block) {
   return c != set.list.end() && c->node == node && c->other == block ? &*c : nullptr;
 }
 
-// The edge of the contact of `node` with `block` in the list as it stands, or -1.
-int held_edge(const ContactSet& set, int node, int block) {
-  const Contact* c = held_contact(set, node, block);
-  return c ? c->edge : -1;
-}
+// Whether a contact presses: closed, in compression.
+bool presses(const Contact& c) { return c.state != ContactState::open && c.sn > 0.0; }
 
-// The contact of `node` with `block` in the list as it stands if it presses (closed, in
-// compression), or null.
+// The contact of `node` with `block` in the list as it stands if it presses, or null.
 const Contact* pressed_contact(const ContactSet& set, int node, int block) {
   const Contact* c = held_contact(set, node, block);
-  return c && c->state != ContactState::open && c->sn > 0.0 ? c : nullptr;
+  return c && presses(*c) ? c : nullptr;
 }
 
 // `f` takes the tip `c` had: its wedge and the sharp corners its edges lead past.
@@ -552,10 +548,11 @@ std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t
   for (const int block : grid.near(p)) {
     if (std::find(own_first, own_last, block) != own_last) continue;
     if (!grid.boxes[static_cast<size_t>(block)].contains(p, follow)) continue;
-    const int held = held_edge(m.contacts, node, block);
-    const bool presses = pressed_contact(m.contacts, node, block) != nullptr;
-    const double radius = held < 0 ? reach : presses ? 2.0 * follow : follow;
-    if (auto f = nearest_edge(m, node, p, own_normal, block, reach, radius, held, presses)) {
+    const Contact* had = held_contact(m.contacts, node, block);
+    const int held = had ? had->edge : -1;
+    const bool pressing = had && presses(*had);
+    const double radius = !had ? reach : pressing ? 2.0 * follow : follow;
+    if (auto f = nearest_edge(m, node, p, own_normal, block, reach, radius, held, pressing)) {
       found.push_back(*f);
       search = std::max(search, std::min(radius, follow));
     }
