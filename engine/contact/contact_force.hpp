@@ -232,12 +232,16 @@ struct LengthPush {
   // the block: its share is that part of the overlap's area, 1 that far from the corner, 0 at the
   // corner and beyond. The fade above would have the face's line, run on past the corner, push
   // the corner of a block that stands beside, on the block next to this one (a slipped crossing).
+  // Short of the corner a length of its own (half-edges along the face) carries in full: only the
+  // tip's part beyond it is cut.
   if (c.leads_past_a || c.leads_past_b) [[unlikely]] {
     const double from_corner = std::min(c.leads_past_a ? t_line * len : INFINITY,
                                         c.leads_past_b ? (1.0 - t_line) * len : INFINITY);
-    const double chord = 2.0 * c.wedge * std::clamp(-gap, 0.0, c.limit);
-    const double beyond_corner = chord > from_corner ? 1.0 - from_corner / chord : 0.0;
-    share = std::min(share, from_corner > 0.0 ? 1.0 - beyond_corner * beyond_corner : 0.0);
+    const double tip = c.wedge * std::clamp(-gap, 0.0, c.limit);
+    const double beyond_corner = 2.0 * tip > from_corner ? 1.0 - from_corner / (2.0 * tip) : 0.0;
+    const double tip_share = from_corner > 0.0 ? 1.0 - beyond_corner * beyond_corner : 0.0;
+    const double own_share = !(from_corner > 0.0) ? 0.0 : tip > c.length ? share * c.length / tip : share;
+    share = std::max(own_share, std::min(share, tip_share));
   }
   const double rvx = v[2 * n] - ((1.0 - t) * v[2 * a] + t * v[2 * b]);
   const double rvy = v[2 * n + 1] - ((1.0 - t) * v[2 * a + 1] + t * v[2 * b + 1]);

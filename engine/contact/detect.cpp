@@ -333,11 +333,15 @@ constexpr double kLeansBack = 0.17364817766693033;
 // corner (contact_force.hpp) stays.
 constexpr double kSharpTurn = 0.5;
 
-// For a tip (no half-edge over the block, only its wedge), whether its edges all lead out past
-// end a, and past end b, of the edge it is pressed into, where that end is a sharp convex corner:
-// none of them leans back towards the rest of the edge by more than kLeansBack. Beyond such an end
-// the tip is beside the block, not in it: at a slipped joint crossing, the corner of the block
-// beyond the diagonal block's corner, standing on the block beside it.
+// For a tip, whether its edges all lead out past end a, and past end b, of the edge it is pressed
+// into, where that end is a sharp convex corner: none of them leans back towards the rest of the
+// edge by more than kLeansBack. Beyond such an end the tip is beside the block, not in it: at a
+// slipped joint crossing, the corner of the block beyond the diagonal block's corner, standing on
+// the block beside it. Judged for every tip, whatever length its half-edges give it: an edge
+// running out of the face near its normal projects a sliver onto the face beyond the corner
+// (covered_length), there at one detection and not at the next as the blocks rock, and a tip
+// judged only without one would be pushed by the face's line run on past the corner at every
+// other detection, its load taken off and put back deeper, energy made at each round.
 void mark_leading_past(const Mechanics& m, size_t k, Vec2 p, Found& to) {
   const ContactBoundary& cb = m.faces;
   const int node = cb.nodes[k];
@@ -561,7 +565,7 @@ std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t
   give_half_edges(m, k, search, with_insitu, found);
   for (Found& f : found) {
     f.wedge = tip_wedge(m, k, p, own_normal, f, reach);
-    if (f.wedge > 0.0 && !(f.length > 1e-12 * reach)) mark_leading_past(m, k, p, f);
+    if (f.wedge > 0.0) mark_leading_past(m, k, p, f);
     if (!(f.length > 1e-12 * reach) && !(f.wedge > 0.0)) keep_pressed(m.contacts, node, f);
     else if (!(f.wedge > 0.0)) keep_tip(m.contacts, node, f);
   }

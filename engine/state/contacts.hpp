@@ -137,7 +137,7 @@ struct Contact {
   bool intact = false;    // still has its cohesion and tensile strength
   // A tip whose edges all lead out past end a (b) of the edge, a sharp corner of its block, none
   // back over the block: beyond that corner nothing of it lies over the block, and short of it
-  // only part (contact_force.hpp).
+  // only its own length and part of the tip's (contact_force.hpp).
   bool leads_past_a = false, leads_past_b = false;
 };
 

@@ -146,6 +146,41 @@ TEST(ContactForce, ATipPressedInBelowTheRoundOffOfItsClosureMakesNoEnergy) {
   EXPECT_LT(contact_energy(c.contact, c.joint).shear, 1e-9);
 }
 
+// A tip whose edges lead out past the sharp corner b (Contact::leads_past_b), pressed 0.04 m in:
+// its tip carries over wedge x depth = 0.01 m, its overlap a chord of 0.02 m from its apex towards
+// the corner. Beyond the corner it is beside the block and carries nothing, whatever sliver of
+// length its half-edges give it; short of the corner its own length carries in full and only the
+// tip's part beyond it is cut, by the part of the overlap's area past the corner.
+TEST(ContactForce, PastASharpCornerItsEdgesLeadPastATipCarriesNothing) {
+  Corner c;
+  c.contact.wedge = 0.25;
+  c.contact.limit = 0.1;
+  c.contact.leads_past_b = true;
+  for (const double own : {0.0, 1e-6, 0.005}) {
+    c.contact.length = own;
+    EXPECT_EQ(c.force_at(-0.05, -0.04), 0.0) << "own length " << own;
+    EXPECT_EQ(c.contact.state, ContactState::open);
+  }
+}
+
+TEST(ContactForce, ShortOfASharpCornerATipKeepsItsOwnLengthAndLosesOnlyTheTipsPartPastIt) {
+  Corner c;
+  c.contact.wedge = 0.25;
+  c.contact.limit = 0.1;
+  c.contact.leads_past_b = true;
+  const double stress = 1e9 * 0.04, tip = 0.25 * 0.04;
+  // 0.01 m short of the corner: half the chord lies past it, a quarter of the overlap's area.
+  const double tip_share = 1.0 - 0.5 * 0.5;
+  c.contact.length = 0.0;
+  EXPECT_NEAR(c.force_at(0.01, -0.04), stress * tip * tip_share, 1e-6);
+  c.contact.length = 0.009;  // less than the tip's, more than its part short of the corner
+  EXPECT_NEAR(c.force_at(0.01, -0.04), stress * 0.009, 1e-6);
+  c.contact.length = 0.02;  // more than the tip's: its own
+  EXPECT_NEAR(c.force_at(0.01, -0.04), stress * 0.02, 1e-6);
+  c.contact.length = 0.0;  // far enough from the corner, the whole tip
+  EXPECT_NEAR(c.force_at(0.5, -0.04), stress * tip, 1e-6);
+}
+
 // A tip's energy is the work of pressing it in slowly (its force growing as its depth squared
 // past its own length, and only linearly again past the limit); with a prestress (closure at
 // zero gap) the work starts from the prestress's energy.
