@@ -107,12 +107,12 @@ TEST(ContactTips, ACornerBesideTheDiagonalBlockIsNotPushedByThatBlocksFaceRunOnP
 
 // A block's corner beside the acute corner (55 degrees) of the block diagonally across, past it
 // by 8 cm along its top and 5.6 cm below that top's line, straight out from its far face: the
-// crossing slipped along and down. It stands on the block beside, pressed by 2 MPa, and rocks by
-// 1 mrad each way. The edge running up from the corner projects a sliver onto the acute corner's
-// far face at one rock and none at the next; a tip whose edges lead past the corner was judged
-// beside the block only with no such sliver, so the top's line, run on past the corner, pushed
-// it at every other rock with 0.38 MN/m, its load taken off and put back, and the balance made
-// 26 % of its largest term.
+// crossing slipped along and down. It stands on the block beside, pressed by 2 MPa, and turns by
+// 1 mrad and back, twice. The edge running up from the corner projects a sliver onto the acute
+// corner's far face at one rock and none at the next; a tip whose edges lead past the corner was
+// judged beside the block only with no such sliver, so the top's line, run on past the corner,
+// pushed it at every other rock with 0.38 MN/m, its load taken off and put back, and the balance
+// made 26 % of its largest term.
 TEST(ContactTips, ACornerBesideAnAcuteCornerIsNotPushedByItsFaceRunOnAsTheBlocksRock) {
   Interpreter interpreter;
   interpreter.context().quiet = true;
