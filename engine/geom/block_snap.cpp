@@ -43,7 +43,8 @@ bool snap_corner(Vec2& p, const Polygon& other, double tolerance) {
 }
 
 // Puts the corners of `other` that lie within the tolerance of an edge of `block` (but not on
-// it) into that edge.
+// it) into that edge. A corner that lies on the edge's line only to round-off (no distance in
+// doubles, off the line exactly) goes in too: the mesh would refine towards it without end.
 int take_corners_into_edges(Polygon& block, const Polygon& other, double tolerance) {
   int taken = 0;
   for (const Vec2& q : other) {
@@ -52,7 +53,7 @@ int take_corners_into_edges(Polygon& block, const Polygon& other, double toleran
       if ((q.x == a.x && q.y == a.y) || (q.x == b.x && q.y == b.y)) break;
       if (norm(q - a) <= tolerance || norm(q - b) <= tolerance) continue;  // a corner's own business
       const double d = segment_distance(q, a, b);
-      if (d > 0.0 && d <= tolerance) {
+      if (d <= tolerance && (d > 0.0 || !on_line_exactly(q, a, b))) {
         block.insert(block.begin() + static_cast<std::ptrdiff_t>(i) + 1, q);
         ++taken;
         break;
@@ -77,6 +78,11 @@ std::vector<Polygon> snap_blocks_together(const std::vector<Polygon>& blocks, do
       for (Vec2& p : block)
         if (near_box(p, other, tolerance) && snap_corner(p, out[k], tolerance)) ++*snapped;
       *snapped += take_corners_into_edges(block, out[k], tolerance);
+      // The block's corners on an earlier block's edge go into that edge as well.
+      if (const int taken = take_corners_into_edges(out[k], block, tolerance); taken > 0) {
+        *snapped += taken;
+        boxes[k] = bounding_box(out[k]);
+      }
     }
     // Corners snapped onto the same point are one.
     Polygon kept;

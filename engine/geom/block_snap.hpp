@@ -1,7 +1,8 @@
 // Blocks that meet within the tolerance meet exactly: one block's corner a hair from another's
-// corner, or from another's edge, is moved onto it, and a corner a hair from one's own edge is
-// put into that edge. Blocks are zoned together where they touch, and two corners 1e-300 m apart
-// made the mesh refine towards the gap without end.
+// corner, or from another's edge, is moved onto it, and a corner a hair from one's own edge, or
+// on it only to round-off, is put into that edge, whichever block came first. Blocks are zoned
+// together where they touch, and two corners 1e-300 m apart, or a corner off an edge's line by
+// round-off, made the mesh refine towards the gap without end.
 #pragma once
 
 #include <vector>

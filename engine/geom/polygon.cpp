@@ -33,6 +33,10 @@ double segment_distance(Vec2 p, Vec2 a, Vec2 b) {
   return norm(p - (a + t * ab));
 }
 
+bool on_line_exactly(Vec2 p, Vec2 a, Vec2 b) {
+  return CGAL::collinear(Point(a.x, a.y), Point(b.x, b.y), Point(p.x, p.y));
+}
+
 double signed_area(const Polygon& polygon) {
   // Relative to the first vertex, so that a small polygon far from the origin keeps its digits.
   double twice = 0.0;

@@ -25,6 +25,9 @@ double distance(const Polygon& polygon, Vec2 point);
 // Distance from p to the segment a-b [m].
 double segment_distance(Vec2 p, Vec2 a, Vec2 b);
 
+// True when p lies on the line through a and b, tested exactly.
+bool on_line_exactly(Vec2 p, Vec2 a, Vec2 b);
+
 struct Box {
   double x0, x1, y0, y1;  // [m]
   double diagonal() const;
