@@ -144,7 +144,8 @@ local columns = { "case", "set", "depth", "bolts", "release", "steps", "cracks",
                   "cuts_left_out", "threads", "seconds", "prepass_stopped", "unconverged", "stopped",
                   "points_fallen", "edge_m", "far_m", "first", "muck", "damping", "mirror", "crack_length_m",
                   "origin_x_m", "origin_y_m", "judge", "judgments", "prepass", "bolt_at", "prepass_damping",
-                  "unconverged_why", "rock", "energy_error_J_m", "energy_error_share" }
+                  "unconverged_why", "rock", "energy_error_J_m", "energy_error_share",
+                  "left_wall_5m_settlement_m", "right_wall_5m_settlement_m" }
 for _, file in ipairs{ TABLE, STEPS_TABLE } do
   local existing = io.open(file, "r")
   if existing then
@@ -322,15 +323,19 @@ for _, w in ipairs(walls) do
   w.left = { rock_gridpoint_near(-x, 0), rock_gridpoint_near(-x, -12) }
   w.right = { rock_gridpoint_near(x, 0), rock_gridpoint_near(x, -12) }
 end
-local function ux_of(points)
+-- The mean of a displacement component (key: "ux" or "uy") over some gridpoints [m].
+local function mean_of(points, key)
   local want, sum = {}, 0
   for _, p in ipairs(points) do want[p.id] = true end
-  for g in gridpoints() do if want[g.id] then sum = sum + g.ux end end
+  for g in gridpoints() do if want[g.id] then sum = sum + g[key] end end
   return sum / #points
 end
 -- How far the left and the right wall have moved into the opening at one of `walls`' depths, the
 -- mean of each wall's two points [m].
-local function wall_moves(w) return ux_of(w.left), -ux_of(w.right) end
+local function wall_moves(w) return mean_of(w.left, "ux"), -mean_of(w.right, "ux") end
+-- How far they have come down there [m]: a wall that slides on steep joints moves more down than
+-- across.
+local function wall_settlements(w) return -mean_of(w.left, "uy"), -mean_of(w.right, "uy") end
 -- The seed's Figure 12: the vertical displacement along a line 10 m above the crown. Its two
 -- halves' mean settlements, left and right of the axis (the point on it left out), say which side
 -- comes down more, which is what the seed reads off its Figure 12 [m].
@@ -505,6 +510,7 @@ local function result_row()
   r.left_moves, r.right_moves = wall_moves(walls[1])
   r.left_moves_5m, r.right_moves_5m = wall_moves(walls[2])
   r.left_moves_15m, r.right_moves_15m = wall_moves(walls[3])
+  r.left_settles_5m, r.right_settles_5m = wall_settlements(walls[2])
   r.profile_left, r.profile_right = profile_halves()
   r.bolts_broken, r.bolts_loaded = bolt_loads()
   r.seconds = os.time() - started
@@ -523,7 +529,8 @@ local function result_row()
                 '"' .. stopped:gsub('"', "'") .. '"', '"' .. points_fallen() .. '"', EDGE, FAR, FIRST, MUCK,
                 DAMPING, MIRROR, ("%.2f"):format(r.length), ORIGIN_X or "", ORIGIN_Y or "", JUDGE_AT, judgments, PREPASS,
                 BOLT_AT, PREPASS_DAMPING, '"' .. table.concat(unconverged_why, "; "):gsub('"', "'") .. '"', ROCK,
-                ("%.4g"):format(r.energy.error), ("%.3g"):format(r.energy.relative_error) }
+                ("%.4g"):format(r.energy.error), ("%.3g"):format(r.energy.relative_error),
+                ("%.5f"):format(r.left_settles_5m), ("%.5f"):format(r.right_settles_5m) }
   local named = {}  -- for result{}: each column's value, unquoted
   for i, v in ipairs(row) do
     row[i] = tostring(v)
@@ -614,12 +621,13 @@ append_row(TABLE, line)
 result(named)
 local fell = points_fallen()
 print(("%s: %d steps, %d cracks (%d tension, %d shear; %d left, %d right), crown %.4f m, walls in %.4f (left) "
-       .. "and %.4f m (right), 5 m behind their faces %.4f and %.4f m, 15 m behind %.4f and %.4f m, "
+       .. "and %.4f m (right), 5 m behind their faces %.4f and %.4f m (down %.4f and %.4f m), 15 m behind %.4f "
+       .. "and %.4f m, "
        .. "10 m above the crown left / right half %.4f / %.4f m, %d contacts slipping, %d fallen, "
        .. "%d bolts (%d skipped, %d broken), %d s%s"):format(
   tag, done, r.tension + r.shear, r.tension, r.shear, r.left, r.right, settlement(), r.left_moves, r.right_moves,
-  r.left_moves_5m, r.right_moves_5m, r.left_moves_15m, r.right_moves_15m, r.profile_left, r.profile_right,
-  r.slipping, fallen, laid, skipped, r.bolts_broken, r.seconds, stopped ~= "" and ("; stopped at " .. stopped) or "")
+  r.left_moves_5m, r.right_moves_5m, r.left_settles_5m, r.right_settles_5m, r.left_moves_15m, r.right_moves_15m,
+  r.profile_left, r.profile_right, r.slipping, fallen, laid, skipped, r.bolts_broken, r.seconds, stopped ~= "" and ("; stopped at " .. stopped) or "")
   .. (#unconverged > 0 and ("; short of equilibrium after step " .. table.concat(unconverged, ", ")) or "")
   .. (fell ~= "" and ("; measuring points whose blocks fell (mucked out, or onto the floor): " .. fell) or ""))
 
