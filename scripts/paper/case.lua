@@ -333,8 +333,8 @@ end
 -- How far the left and the right wall have moved into the opening at one of `walls`' depths, the
 -- mean of each wall's two points [m].
 local function wall_moves(w) return mean_of(w.left, "ux"), -mean_of(w.right, "ux") end
--- How far they have come down there [m]: a wall that slides on steep joints moves more down than
--- across.
+-- How far they have come down there [m]: a wall that slides down its joints comes down as it
+-- moves in, one pushed out across them does not.
 local function wall_settlements(w) return -mean_of(w.left, "uy"), -mean_of(w.right, "uy") end
 -- The seed's Figure 12: the vertical displacement along a line 10 m above the crown. Its two
 -- halves' mean settlements, left and right of the axis (the point on it left out), say which side
