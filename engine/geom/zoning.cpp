@@ -456,10 +456,7 @@ std::vector<RingEdge> ring_edges(const BlockSet& blocks) {
 // positive length: one boundary seen from its two sides but split at a vertex only one side
 // has. Exact for the collinearity.
 bool overlap_opposite(const RingEdge& e, const RingEdge& f) {
-  const Point a(e.a.x, e.a.y), b(e.b.x, e.b.y);
-  if (CGAL::orientation(a, b, Point(f.a.x, f.a.y)) != CGAL::COLLINEAR ||
-      CGAL::orientation(a, b, Point(f.b.x, f.b.y)) != CGAL::COLLINEAR)
-    return false;
+  if (!on_line_exactly(f.a, e.a, e.b) || !on_line_exactly(f.b, e.a, e.b)) return false;
   if (!(dot(e.b - e.a, f.b - f.a) < 0.0)) return false;
   // Collinear points keep their order along the edge's dominant axis.
   const bool along_x = std::abs(e.b.x - e.a.x) >= std::abs(e.b.y - e.a.y);

@@ -627,7 +627,8 @@ print(("%s: %d steps, %d cracks (%d tension, %d shear; %d left, %d right), crown
        .. "%d bolts (%d skipped, %d broken), %d s%s"):format(
   tag, done, r.tension + r.shear, r.tension, r.shear, r.left, r.right, settlement(), r.left_moves, r.right_moves,
   r.left_moves_5m, r.right_moves_5m, r.left_settles_5m, r.right_settles_5m, r.left_moves_15m, r.right_moves_15m,
-  r.profile_left, r.profile_right, r.slipping, fallen, laid, skipped, r.bolts_broken, r.seconds, stopped ~= "" and ("; stopped at " .. stopped) or "")
+  r.profile_left, r.profile_right, r.slipping, fallen, laid, skipped, r.bolts_broken, r.seconds,
+  stopped ~= "" and ("; stopped at " .. stopped) or "")
   .. (#unconverged > 0 and ("; short of equilibrium after step " .. table.concat(unconverged, ", ")) or "")
   .. (fell ~= "" and ("; measuring points whose blocks fell (mucked out, or onto the floor): " .. fell) or ""))
 

@@ -52,16 +52,16 @@ TEST(BlockSnap, ANewCornerOnAnEarlierEdgeOnlyToRoundOffIsPutIntoThatEdge) {
   ASSERT_EQ(segment_distance(corner, {0, 0}, {1, -0.01}), 0.0);
   ASSERT_FALSE(on_line_exactly(corner, {0, 0}, {1, -0.01}));
   int snapped = 0;
-  const auto out = snap_blocks_together({{{0, 0}, {1, -0.01}, {1, 1}, {0, 1}}, {{0, -1}, {0.05, -1}, corner, {0, 0}}},
-                                        1e-6, &snapped);
+  const auto out = snap_blocks_together(
+      {{{0, 0}, {1, -0.01}, {1, 1}, {0, 1}}, {{0, -1}, {0.05, -1}, corner, {0, 0}}}, 1e-6, &snapped);
   EXPECT_EQ(snapped, 1);
   EXPECT_EQ(out[0], (Polygon{{0, 0}, corner, {1, -0.01}, {1, 1}, {0, 1}}));
 }
 
 TEST(BlockSnap, ACornerExactlyOnAnEarlierEdgeLeavesThatEdgeWhole) {
   int snapped = 0;
-  const auto out = snap_blocks_together({{{-3, -1}, {8, -1}, {8, 0}, {-3, 0}}, {{-1, 0}, {1, 0}, {1, 1}, {-1, 1}}}, 1e-6,
-                                        &snapped);
+  const auto out = snap_blocks_together(
+      {{{-3, -1}, {8, -1}, {8, 0}, {-3, 0}}, {{-1, 0}, {1, 0}, {1, 1}, {-1, 1}}}, 1e-6, &snapped);
   EXPECT_EQ(snapped, 0);
   EXPECT_EQ(out[0], (Polygon{{-3, -1}, {8, -1}, {8, 0}, {-3, 0}}));
 }
