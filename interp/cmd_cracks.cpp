@@ -175,6 +175,11 @@ const std::vector<std::string>& judging_times() {
   return names;
 }
 
+const std::vector<std::string>& neighbour_rules() {
+  static const std::vector<std::string> names = {"wait", "break"};
+  return names;
+}
+
 int run_judge(lua_State* L, Context& context, const Args& args) {
   JudgeDef def;
   def.at = args.string("at") == "equilibrium" ? JudgeAt::equilibrium : JudgeAt::cycles;
@@ -183,6 +188,9 @@ int run_judge(lua_State* L, Context& context, const Args& args) {
          "judges each state a solve{{}} brings to its ratio");
   if (args.has("every")) def.every = static_cast<long>(args.integer("every"));
   def.most = static_cast<long>(args.integer("most"));
+  const std::string neighbours =
+      args.has("neighbours") ? args.string("neighbours") : def.at == JudgeAt::equilibrium ? "wait" : "break";
+  def.neighbours_wait = neighbours == "wait";
   def.radius = args.number("radius");
   if (args.has("criterion")) def.criterion = lua_criterion(L, args.get<FunctionArg>("criterion").index);
   context.model().judge(def);
@@ -344,8 +352,9 @@ const Command& judge_command() {
           "at = \"cycles\" judges every n cycles while the model moves (the seed's way: what "
           "breaks depends on how fast loads come on or off); at = \"equilibrium\" judges only "
           "states a solve{} has brought to its ratio: all sections on one state, those that fail "
-          "break, the model is solved again, and so on until a round breaks none; cycle() judges "
-          "nothing then.",
+          "break (of those that touch, the one furthest past its strength: neighbours), the "
+          "model is solved again, and so on until a round breaks none; cycle() judges nothing "
+          "then.",
       .keys =
           {
               {"at", Type::string, "", any_value, "\"cycles\"",
@@ -359,6 +368,12 @@ const Command& judge_command() {
                "those furthest past the built-in criteria first (larger of s3 / tension and the "
                "Mohr circle's radius over the shear strength at its centre); the rest are judged "
                "again next time; 0: all that fail"},
+              {"neighbours", Type::string, "", any_value, kOptional,
+               "wait: of failing sections that touch, only the one furthest past its strength "
+               "breaks, and the others are judged again on the state that leaves (so that a "
+               "coarse load step breaks what a fine one would); break: all that fail break "
+               "together (the seed's way)",
+               "wait at equilibrium, break at cycles", neighbour_rules},
               {"radius", Type::number, "m", ge(0), "0",
                "the stress is also fitted to every zone of the section's two blocks whose "
                "centroid lies within this distance of its point: a length of the rock's, so that "

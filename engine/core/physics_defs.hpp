@@ -379,6 +379,10 @@ struct JudgeDef {
   // At most this many sections break at one judgment, those furthest past the built-in criteria
   // first (crack/criteria.hpp, overstress); the rest wait for the next. 0: every one that fails.
   long most = 0;
+  // A failing section waits while a failing section it touches is further past its strength
+  // (crack/judge.cpp): of a row of neighbours, the worst breaks and the rest are judged again on
+  // the state its breaking leaves. True by default at equilibrium; the seed breaks all at once.
+  bool neighbours_wait = false;
   // The stress at a section is fitted to the zones of its two blocks whose centroids lie within
   // this distance of its point [m], besides the four nearest each side that the seed uses: a
   // length of the rock's, not of the mesh's, so that finer zones judge the same averaged stress

@@ -10,6 +10,7 @@
 #include "core/names.hpp"
 #include "crack/criteria.hpp"
 #include "crack/section_stress.hpp"
+#include "geom/polygon.hpp"
 
 namespace edem {
 namespace {
@@ -204,13 +205,58 @@ SectionView section_view(const Mechanics& m, int section) {
   return view_of(m, section, fitted_stress(m, section));
 }
 
-int judge_sections(Mechanics& m) {
-  struct Failed {
-    int section;
-    CrackMode mode;
-    Stress stress;
-    double overstress;
+namespace {
+
+struct Failed {
+  int section;
+  CrackMode mode;
+  Stress stress;
+  double overstress;
+};
+
+// Whether two sections touch: an end of one on the other (a row's next section, or one of a
+// crossing cut's at the crossing).
+bool touching(const Section& a, const Section& b) {
+  const auto ends = [](const Section& s) {
+    const double t = s.angle * std::numbers::pi / 180.0;
+    const Vec2 half{0.5 * s.length * std::cos(t), 0.5 * s.length * std::sin(t)};
+    return std::array<Vec2, 2>{s.point - half, s.point + half};
   };
+  const auto ea = ends(a), eb = ends(b);
+  const double tolerance = 1e-6 * std::max(a.length, b.length);
+  for (const Vec2 p : ea)
+    if (segment_distance(p, eb[0], eb[1]) <= tolerance) return true;
+  for (const Vec2 p : eb)
+    if (segment_distance(p, ea[0], ea[1]) <= tolerance) return true;
+  return false;
+}
+
+// Keeps the failed sections that no touching failed section is further past its strength than
+// (equal: the lower index), so that neighbours do not break together on one state: the worst
+// breaks, and the others are judged again on the state its breaking leaves, as on a path of
+// small load steps. Sections apart from each other still break in the same round. The choice
+// reads only the state judged: the same on any thread count and in any order.
+void keep_worst_of_neighbours(const Mechanics& m, std::vector<Failed>& failed) {
+  const auto worse = [](const Failed& a, const Failed& b) {
+    return a.overstress > b.overstress || (a.overstress == b.overstress && a.section < b.section);
+  };
+  std::vector<Failed> kept;
+  for (const Failed& f : failed) {
+    bool worst = true;
+    for (const Failed& g : failed)
+      if (g.section != f.section && worse(g, f) &&
+          touching(m.sections[static_cast<size_t>(g.section)], m.sections[static_cast<size_t>(f.section)])) {
+        worst = false;
+        break;
+      }
+    if (worst) kept.push_back(f);
+  }
+  failed = std::move(kept);
+}
+
+}  // namespace
+
+int judge_sections(Mechanics& m) {
   std::vector<Failed> failed;
   if (m.fits.first.size() != m.sections.size() + 1) return 0;  // not prepared
   const auto judged = [&](size_t i) {
@@ -241,6 +287,7 @@ int judge_sections(Mechanics& m) {
     failed.push_back({static_cast<int>(i), modes[i], s, over});
   }
   if (failed.empty()) return 0;
+  if (m.judge.neighbours_wait) keep_worst_of_neighbours(m, failed);
   if (m.judge.most > 0 && failed.size() > static_cast<size_t>(m.judge.most)) {
     // Furthest past first; equal ones in section order, so that the choice is repeatable.
     std::stable_sort(failed.begin(), failed.end(),

@@ -1,11 +1,13 @@
 // judge{ most = n }: at most n sections break at a judgment, those furthest past the built-in
 // criteria first; the rest wait for the next judgment. judge{ radius = r }: a section's stress is
 // fitted to its two blocks' zones within r of its point as well. judge{ at = "equilibrium" }:
-// sections judged only on the states a solve brings to its ratio, in rounds until none breaks.
+// sections judged only on the states a solve brings to its ratio, in rounds until none breaks;
+// judge{ neighbours }: of touching sections that fail, the worst breaks and the others wait.
 // sections(): those whose rock is dug out are gone; each section's overstress.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <string>
@@ -263,13 +265,77 @@ TEST(JudgeAtEquilibrium, CyclingJudgesNothing) {
 TEST(JudgeAtEquilibrium, ASolveJudgesTheStateAtItsRatioUntilNoneBreaks) {
   Interpreter interpreter;
   interpreter.context().quiet = true;
-  expect_runs(interpreter, held_bar("judge{ at = \"equilibrium\" }"));
+  expect_runs(interpreter, held_bar("judge{ at = \"equilibrium\", neighbours = \"break\" }"));
   const SolveResult r = last_solve(interpreter);
   const int sections = interpreter.context().model().info().sections;
   EXPECT_TRUE(r.converged);
   EXPECT_EQ(r.broke, sections);  // all past their strength on the first state judged
   EXPECT_EQ(broken(interpreter).count, sections);
   EXPECT_EQ(r.judgments, 1);  // none left intact to judge again
+}
+
+// The cracks the first round broke: how many, how many of the bar's cuts have one on the
+// 0.08 MPa side, and how many pairs of them touch (on one cut, end to end).
+struct FirstRound {
+  int count = 0, cuts_right = 0, touching = 0;
+};
+
+FirstRound first_round(const Model& model) {
+  FirstRound f;
+  std::vector<CrackView> round;
+  for (int id = 0; id < model.crack_count() && model.crack(id).cycle == model.crack(0).cycle; ++id)
+    round.push_back(model.crack(id));
+  f.count = static_cast<int>(round.size());
+  for (const double y : {0.25, 0.5, 0.75})
+    f.cuts_right += std::any_of(round.begin(), round.end(), [&](const CrackView& c) {
+      return std::fabs(c.position.y - y) < 1e-9 && c.position.x > 0.0;
+    });
+  for (size_t i = 0; i < round.size(); ++i)
+    for (size_t j = i + 1; j < round.size(); ++j)
+      f.touching += std::fabs(round[i].position.y - round[j].position.y) < 1e-9 &&
+                    std::fabs(round[i].position.x - round[j].position.x) <
+                        0.5 * (round[i].length + round[j].length) + 1e-9;
+  return f;
+}
+
+// By default at equilibrium, of the failing sections that touch only the one furthest past its
+// strength breaks; the others are judged again on the state that leaves. Along each of the bar's
+// three cuts the sections touch end to end: the first round breaks no two neighbours, and on
+// every cut the worst, on the 0.08 MPa side; the cuts that open relieve some of the rest.
+TEST(JudgeAtEquilibrium, OfTouchingSectionsTheWorstBreaksAndTheOthersWait) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, held_bar("judge{ at = \"equilibrium\" }"));
+  const SolveResult r = last_solve(interpreter);
+  const Model& model = interpreter.context().model();
+  EXPECT_TRUE(r.converged);
+  const FirstRound f = first_round(model);
+  EXPECT_EQ(f.touching, 0);
+  EXPECT_EQ(f.cuts_right, 3);
+  EXPECT_LT(f.count, model.info().sections / 2);
+  EXPECT_GT(r.judgments, 2);
+  EXPECT_LT(r.broke, model.info().sections);
+}
+
+// Judged every n cycles, all that fail break together unless told otherwise (the seed's way).
+TEST(JudgeAtEquilibrium, NeighboursWaitIsTheEquilibriumModesDefaultOnly) {
+  Interpreter cycles;
+  cycles.context().quiet = true;
+  expect_runs(cycles, bar() + "judge{ every = 10 }\ncycle(10)");
+  EXPECT_EQ(broken(cycles).count, cycles.context().model().info().sections);
+  Interpreter waiting;
+  waiting.context().quiet = true;
+  expect_runs(waiting, bar() + "judge{ every = 10, neighbours = \"wait\" }\ncycle(10)");
+  const FirstRound f = first_round(waiting.context().model());
+  EXPECT_EQ(f.touching, 0);
+  EXPECT_EQ(f.cuts_right, 3);
+  EXPECT_LT(f.count, waiting.context().model().info().sections / 2);
+}
+
+TEST(JudgeAtEquilibrium, AnUnknownNeighbourRuleIsAnErrorNamingIt) {
+  const std::string error = test::error_of("judge{ at = \"equilibrium\", neighbours = \"later\" }");
+  EXPECT_TRUE(test::contains(error, "neighbours")) << error;
+  EXPECT_TRUE(test::contains(error, "later")) << error;
 }
 
 // Two a round (most = 2), the furthest past first: the crack that opens across the bar first
@@ -317,6 +383,7 @@ TEST(JudgeAtEquilibrium, ACheckpointKeepsIt) {
   std::filesystem::remove(file);
   EXPECT_EQ(broken(second).count, 0);
   EXPECT_GT(last_solve(second).broke, 0);
+  EXPECT_EQ(first_round(second.context().model()).touching, 0);  // and that neighbours wait
 }
 
 // Sections whose rock is dug out are gone: sections() says so (their stress and strength are
