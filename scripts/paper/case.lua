@@ -42,6 +42,8 @@
 --   first     left or right: the half of the arch dug first [left]
 --   mirror    true: the joints mirrored about x = 0 (with first = right, the mirror image) [false]
 --   judge_most  at most this many sections break at a judgment [0: all that fail]
+--   neighbours  wait (of failing sections that touch, the worst breaks and the others are judged
+--             again on the state that leaves) or break (all that fail, the study's setting) [break]
 --   judge_radius  m: a section's stress also from its blocks' zones within this distance [0]
 --   tolerance model{}'s geometric tolerance [7e-4]
 --   fracture_energy, shear_fracture_energy  J/m^2: broken sections soften as cohesive cracks
@@ -77,6 +79,7 @@ local given = settings{
   edge = 1.5, far = 10, stages = 16, step_cycles = 40000, stall = 0, settle = 0, rock = "elastic",
   similar = 45, min_angle = 30, origin_x = "centroid", origin_y = "centroid",
   by_mode = false, muck = "loose", first = "left", mirror = false, judge_most = 0, judge_radius = 0,
+  neighbours = "break",
   tolerance = 7e-4, fracture_energy = 0, shear_fracture_energy = 0, table = "case_results.csv",
   threads = os.getenv("OMP_NUM_THREADS") or "default", strict = false, save_after = -1,
 }
@@ -109,6 +112,7 @@ if not (math.type(given.save_after) == "integer" and given.save_after >= -1) the
 end
 local SIMILAR, TOLERANCE, MIN_ANGLE = given.similar, given.tolerance, given.min_angle
 local JUDGE_MOST, JUDGE_RADIUS = given.judge_most, given.judge_radius
+local NEIGHBOURS = one_of("neighbours", { "wait", "break" })
 local FRACTURE_ENERGY, SHEAR_FRACTURE_ENERGY = given.fracture_energy, given.shear_fracture_energy
 for _, key in ipairs{ "fracture_energy", "shear_fracture_energy" } do
   if given[key] < 0 then error(("%s must be a number >= 0 (J/m^2), got %s"):format(key, given[key]), 0) end
@@ -226,7 +230,7 @@ local yielded = 0
 for _, z in ipairs(pre.zones) do if z.state ~= "none" then yielded = yielded + 1 end end
 
 -- 2. Potential cracks there, then the discontinuum.
-judge{ at = JUDGE_AT, most = JUDGE_MOST, radius = JUDGE_RADIUS }
+judge{ at = JUDGE_AT, most = JUDGE_MOST, radius = JUDGE_RADIUS, neighbours = NEIGHBOURS }
 if COHESIVE then
   local joint = seed[SET].joint
   joint_material{ "cohesive", kn = joint.kn, kn_law = joint.kn_law, stress_scale = joint.stress_scale,

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Does what breaks depend on how fast a step's load comes off? The seed's Case 3 at 158 m with Set P,
-# no bolts (scripts/paper/case.lua), judged at equilibrium and judged every 10 cycles, each with the
+# no bolts (scripts/paper/case.lua), judged at equilibrium (touching sections that fail: the worst
+# first, judge{ neighbours = "wait" }) and judged every 10 cycles, each with the
 # load released over 1, 100 and 10,000 cycles under local and under adaptive damping; and the
 # every-10-cycles mode with case.lua's 20,000-cycle release, the speed baseline. Prints, for each
 # judging mode, the crack counts and crown settlements with their spread ((max - min) / mean), and
@@ -43,11 +44,14 @@ run_one() {
   local judge=$1 damping=$2 release=$3 edge=${4:-}
   local name=${judge}_${damping}_${release}${edge:+_edge$edge}
   local dir=$out/$name
+  # The engine's rule for each mode: touching sections wait at equilibrium, all break otherwise.
+  local neighbours=break
+  [[ $judge == equilibrium ]] && neighbours=wait
   [[ $keep == 1 && -f $dir/row.csv ]] && return 0
   mkdir -p "$dir"
   (cd "$dir" && "$edem" --threads "$threads" --out "$dir" --set set=P --set case=3 --set depth=158 \
      --set judge="$judge" --set damping="$damping" --set release="$release" --set threads="$threads" \
-     ${edge:+--set edge=$edge} --set table="$dir/row.csv" run "$root/scripts/paper/case.lua" > "$dir/log" 2>&1) ||
+     --set neighbours="$neighbours" ${edge:+--set edge=$edge} --set table="$dir/row.csv" run "$root/scripts/paper/case.lua" > "$dir/log" 2>&1) ||
     echo "judging_independence.sh: $name failed (its log: $dir/log)" >&2
 }
 export -f run_one

@@ -17,13 +17,16 @@
 -- each contact keeps its own energy balance, energy{ by_contact }, and the N that made or lost the
 -- most are listed at the end: where an energy error arises), nearest (N > 0: no section breaks,
 -- and the N intact ones nearest their strength at the end are listed, each with its overstress,
--- as judge{ most } ranks them: 1 breaks it). The trace gives the
+-- as judge{ most } ranks them: 1 breaks it), neighbours (wait or break: judge{ neighbours } for
+-- the steps; "": as the checkpoint has it). The trace gives the
 -- energies from the start (slip and damping: what they took), the point's movement and adaptive
 -- damping's rate c = 2 omega (info().damping_rate).
 local s = settings{ file = "", step = "", damping = "local", release = 100, cycles = 40000, x = 12.0, y = 0.0,
-                    every = 2000, save_to = "", muck = true, on = false, by_contact = 0, nearest = 0 }
+                    every = 2000, save_to = "", muck = true, on = false, by_contact = 0,
+                    nearest = 0, neighbours = "" }
 if s.file == "" then error("give --set file=CHECKPOINT.h5", 0) end
 restore(s.file)
+if s.neighbours ~= "" then judge{ at = "equilibrium", neighbours = s.neighbours } end
 if s.damping == "local" then
   set{ damping = "local", local_damping = 0.8 }
 elseif s.damping == "adaptive" then
