@@ -288,7 +288,8 @@ template <class Ar> void fields(Ar& ar, Mechanics& m) {
   optional_member(ar, "judge_most", m.judge.most, 0L);  // files older than judge{ most } have none
   optional_member(ar, "judge_radius", m.judge.radius, 0.0);  // nor older than judge{ radius }
   optional_member(ar, "judge_at", m.judge.at, JudgeAt::cycles);  // nor older than judge{ at }
-  optional_member(ar, "judge_neighbours_wait", m.judge.neighbours_wait, false);  // nor than neighbours
+  // Nor older than judge{ neighbours }: those broke all that failed.
+  optional_member(ar, "judge_neighbours_wait", m.judge.neighbours_wait, false);
   // Nor older than the energy balance: theirs starts again at the next cycle.
   optional_member(ar, "energy", m.energy, EnergyLedger{});
 }

@@ -12,7 +12,7 @@
 # And, judged at equilibrium under local damping released over 100 cycles (case.lua's defaults),
 # with 1 and 2 m zones at the opening (1.5 m above), for the charts of speed against accuracy that
 # it draws at its end (tests/bench/judging_chart.lua: OUT/judging_cracks.png, OUT/judging_crown.png).
-# One thread a run and two runs at a time on two cores take about 40 minutes (tests/bench/RESULTS.md).
+# One thread a run and two runs at a time on two cores take about 50 minutes (tests/bench/RESULTS.md).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 edem=$root/build/interp/edem out=judging-independence jobs=2 threads=1 keep=0
@@ -51,7 +51,8 @@ run_one() {
   mkdir -p "$dir"
   (cd "$dir" && "$edem" --threads "$threads" --out "$dir" --set set=P --set case=3 --set depth=158 \
      --set judge="$judge" --set damping="$damping" --set release="$release" --set threads="$threads" \
-     --set neighbours="$neighbours" ${edge:+--set edge=$edge} --set table="$dir/row.csv" run "$root/scripts/paper/case.lua" > "$dir/log" 2>&1) ||
+     --set neighbours="$neighbours" ${edge:+--set edge=$edge} --set table="$dir/row.csv" \
+     run "$root/scripts/paper/case.lua" > "$dir/log" 2>&1) ||
     echo "judging_independence.sh: $name failed (its log: $dir/log)" >&2
 }
 export -f run_one
