@@ -18,8 +18,8 @@ SectionView section_view(const Mechanics& m, int section);
 
 // Judges every intact section whose zones are active, all against the same state, then breaks
 // those that fail (crack records, ties released): with judge{ neighbours = "wait" } only the
-// worst of those that touch, with judge{ most } at most that many. Returns how many broke: the caller then
-// reconnects the nodes across them (solver/prepare.hpp, reconnect).
+// worst of those that touch, with judge{ most } at most that many. Returns how many broke: the
+// caller then reconnects the nodes across them (solver/prepare.hpp, reconnect).
 // Exceptions from a user's criterion pass through, with nothing broken.
 int judge_sections(Mechanics& m);
 

@@ -18,7 +18,8 @@
 -- most are listed at the end: where an energy error arises), nearest (N > 0: no section breaks,
 -- and the N intact ones nearest their strength at the end are listed, each with its overstress,
 -- as judge{ most } ranks them: 1 breaks it), neighbours (wait or break: judge{ neighbours } for
--- the steps; "": as the checkpoint has it). The trace gives the
+-- the steps, judged at equilibrium with judge{}'s other keys at their defaults; "": as the
+-- checkpoint has it). The trace gives the
 -- energies from the start (slip and damping: what they took), the point's movement and adaptive
 -- damping's rate c = 2 omega (info().damping_rate).
 local s = settings{ file = "", step = "", damping = "local", release = 100, cycles = 40000, x = 12.0, y = 0.0,
