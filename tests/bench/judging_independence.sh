@@ -8,7 +8,9 @@
 # each run's seconds and cycles; exits 1 if the equilibrium mode's spread is over 3 % in cracks or
 # 2 % in crown settlement.
 #   bash tests/bench/judging_independence.sh [--edem PATH] [--out DIR] [--jobs N] [--threads M] [--keep]
+#        [--set KEY=VALUE]...
 # --keep: a run whose row.csv is in DIR already is taken as it is, not run again (a go resumed).
+# --set: a case.lua setting given to every run (e.g. prepass_damping=adaptive), as many as wanted.
 # And, judged at equilibrium under local damping released over 100 cycles (case.lua's defaults),
 # with 1 and 2 m zones at the opening (1.5 m above), for the charts of speed against accuracy that
 # it draws at its end (tests/bench/judging_chart.lua: OUT/judging_cracks.png, OUT/judging_crown.png).
@@ -16,6 +18,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 edem=$root/build/interp/edem out=judging-independence jobs=2 threads=1 keep=0
+extra=""  # --set KEY=VALUE ... for every run
 while [[ $# -gt 0 ]]; do
   case $1 in
     --edem) edem=$2; shift 2 ;;
@@ -23,6 +26,9 @@ while [[ $# -gt 0 ]]; do
     --jobs) jobs=$2; shift 2 ;;
     --threads) threads=$2; shift 2 ;;
     --keep) keep=1; shift ;;
+    --set)
+      [[ $2 =~ ^[a-z_]+=[^[:space:]]+$ ]] || { echo "judging_independence.sh: --set needs KEY=VALUE, got '$2'" >&2; exit 2; }
+      extra+=" --set $2"; shift 2 ;;
     *) echo "judging_independence.sh: unknown option $1" >&2; exit 2 ;;
   esac
 done
@@ -51,12 +57,12 @@ run_one() {
   mkdir -p "$dir"
   (cd "$dir" && "$edem" --threads "$threads" --out "$dir" --set set=P --set case=3 --set depth=158 \
      --set judge="$judge" --set damping="$damping" --set release="$release" --set threads="$threads" \
-     --set neighbours="$neighbours" ${edge:+--set edge=$edge} --set table="$dir/row.csv" \
+     --set neighbours="$neighbours" ${edge:+--set edge=$edge} $extra --set table="$dir/row.csv" \
      run "$root/scripts/paper/case.lua" > "$dir/log" 2>&1) ||
     echo "judging_independence.sh: $name failed (its log: $dir/log)" >&2
 }
 export -f run_one
-export edem out threads root keep
+export edem out threads root keep extra
 printf '%s\n' "${runs[@]}" | xargs -P "$jobs" -I{} bash -c 'run_one {}'
 
 # One line a run: mode, damping, release, cracks, crown settlement, seconds, cycles (from the log).
