@@ -19,11 +19,15 @@ local variants = {}
 for text in tostring(s.variants):gmatch("[^,]+") do
   local damping, release, ratio = text:match("^(%a+):(%d+):?([%d.e+-]*)$")
   if not (damping == "local" or damping == "adaptive") then
-    error(("variants: each is damping:release[:ratio], damping local or adaptive, got %s"):format(text), 0)
+    error(("variants: each is damping:release[:ratio], damping local or adaptive, got %s")
+          :format(text), 0)
   end
   ratio = ratio ~= "" and tonumber(ratio) or 1e-5
-  if not (ratio and ratio > 0 and ratio < 1) then error(("variants: the ratio must be in (0, 1), got %s"):format(text), 0) end
-  variants[#variants + 1] = { name = text, damping = damping, release = math.tointeger(tonumber(release)), ratio = ratio }
+  if not (ratio and ratio > 0 and ratio < 1) then
+    error(("variants: the ratio must be in (0, 1), got %s"):format(text), 0)
+  end
+  variants[#variants + 1] = { name = text, damping = damping, release = math.tointeger(tonumber(release)),
+                              ratio = ratio }
 end
 if #variants == 0 then error("give variants, e.g. local:10000,adaptive:100", 0) end
 
