@@ -27,8 +27,8 @@ while [[ $# -gt 0 ]]; do
     --threads) threads=$2; shift 2 ;;
     --keep) keep=1; shift ;;
     --set)
-      if [[ ! $2 =~ ^[a-z_]+=[^[:space:]]+$ ]]; then
-        echo "judging_independence.sh: --set needs KEY=VALUE, got '$2'" >&2
+      if [[ ! ${2:-} =~ ^[a-z_]+=[^[:space:]]+$ ]]; then
+        echo "judging_independence.sh: --set needs KEY=VALUE, got '${2:-}'" >&2
         exit 2
       fi
       extra+=" --set $2"; shift 2 ;;

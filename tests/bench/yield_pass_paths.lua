@@ -86,9 +86,9 @@ end
 print(("%-22s %8s %6s %5s %8s %8s %6s %8s %9s %9s"):format("damping:release", "cycles", "short", "s", "yielded",
                                                              "shared", "groups", "sections", "length", "alike"))
 local reference
-for k, v in ipairs(variants) do
+for _, v in ipairs(variants) do
   local r = run(v)
-  reference = reference or r
+  reference = reference or r  -- the first variant's
   local both, either = 0, 0
   for id in pairs(r.yielded) do
     either = either + 1
@@ -101,5 +101,4 @@ for k, v in ipairs(variants) do
   print(("%-22s %8d %6d %5.0f %8d %8.2f %6d %8d %9.1f %9.2f%s"):format(v.name, r.cycles, r.short, r.seconds, r.count,
     either > 0 and both / either or 1, r.groups, #r.sections, r.length, alike,
     r.failure and ("  stopped: " .. r.failure) or ""))
-  if k == 1 then reference = r end
 end
