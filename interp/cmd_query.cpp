@@ -230,6 +230,7 @@ void push_zone(lua_State* L, const Model& model, size_t index) {
   if (!view.material.empty()) set_field(L, "material", view.material);
   if (view.excavated > 0) set_field(L, "excavated", view.excavated);
   if (!view.history_name.empty()) set_field(L, view.history_name.c_str(), view.history);
+  set_field(L, "plastic_work", view.plastic_work);
 }
 
 void push_gridpoint(lua_State* L, const Model& model, size_t index) {
@@ -551,8 +552,10 @@ const Command& zones_command() {
           "(its block's id), region (innermost region's name or nil), sxx, syy, sxy, szz "
           "(stresses [Pa], compression negative), s1, s3 (in-plane principal stresses, s1 <= "
           "s3), state (\"elastic\", \"shear\", \"tension\", ... with \"-past\" for failure "
-          "in the past), material (name, nil when none is assigned), excavated (the stage "
-          "that excavated it, nil while in place), and the state variable of its zone law under "
+          "in the past), plastic_work (the plastic work done in it per unit volume [J/m^3] "
+          "since its state was last cleared: how far past its strength it went), material "
+          "(name, nil when none is assigned), excavated (the stage that excavated it, nil "
+          "while in place), and the state variable of its zone law under "
           "the law's name for it, when the law keeps one",
       .usage = "for z in zones() do total = total + z.area end",
   };

@@ -243,7 +243,7 @@ const Command& reset_command() {
       .name = "reset",
       .help =
           "Sets to zero the gridpoint displacements or velocities, clears the zones' "
-          "plastic state flags, or (\"joint\", UDEC's RESET JDISP) zeroes the contacts' shear "
+          "plastic state flags and plastic work, or (\"joint\", UDEC's RESET JDISP) zeroes the contacts' shear "
           "displacement and slip records, of the whole model (stresses and contact forces are "
           "kept).",
       .positional =

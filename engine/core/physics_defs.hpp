@@ -321,6 +321,7 @@ struct ZoneView {
   // ("" when none) and value.
   std::string history_name;
   double history = 0.0;
+  double plastic_work = 0.0;  // done in it per unit volume since its state was cleared [J/m^3]
 };
 
 // How a potential-crack section broke (crack/criteria.hpp).

@@ -263,6 +263,7 @@ template <class Ar> void fields(Ar& ar, Mechanics& m) {
   ar("zone_material", m.zone_material); ar("stress", m.stress); ar("mean_stress_ref", m.mean_stress_ref);
   ar("zone_state", m.zone_state);
   optional_member(ar, "zone_history", m.zone_history, {});  // older files: none; zeros (check_sizes)
+  optional_member(ar, "zone_plastic_work", m.zone_plastic_work, {});  // as zone_history
   ar("node_count", m.node_count); ar("gp_node", m.gp_node);
   ar("position", m.position); ar("u", m.u); ar("v", m.v); ar("origin", m.origin); ar("force", m.force);
   ar("load", m.load); ar("fix", m.fix); ar("node_block", m.node_block); ar("boundary", m.boundary);
@@ -584,6 +585,7 @@ void check_sizes(const Mechanics& m, const Mesh& mesh) {
   expect(m.stress.size(), zones, "stress");
   expect(m.zone_state.size(), zones, "zone_state");
   expect(m.zone_history.size(), zones, "zone_history");
+  expect(m.zone_plastic_work.size(), zones, "zone_plastic_work");
   expect(m.zone_excavated.size(), zones, "zone_excavated");
   expect(m.gp_node.size(), static_cast<size_t>(mesh.gp_count()), "gp_node");
   for (const auto* v : {&m.position, &m.u, &m.v, &m.origin, &m.force, &m.load}) expect(v->size(), 2 * nodes, "node vector");
@@ -753,6 +755,7 @@ struct CheckpointAccess {
       Mechanics& m = *model.mechanics_;
       r("mechanics", m);
       if (m.zone_history.empty()) m.zone_history.assign(m.zone_state.size(), 0.0);
+      if (m.zone_plastic_work.empty()) m.zone_plastic_work.assign(m.zone_state.size(), 0.0);
       check_sizes(m, model.mesh_);
       check_indices(m, model.mesh_);
       if (!(m.faces.median_edge > 0.0)) m.faces.median_edge = median_edge_length(m.faces, m.position);

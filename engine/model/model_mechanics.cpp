@@ -120,6 +120,7 @@ void Model::assign(const AssignDef& def) {
       m.mean_stress_ref[static_cast<size_t>(z)] = 0.0;
       m.zone_state[static_cast<size_t>(z)] = 0;
       m.zone_history[static_cast<size_t>(z)] = 0.0;
+      m.zone_plastic_work[static_cast<size_t>(z)] = 0.0;
     }
   }
   m.dirty = true;
@@ -265,7 +266,10 @@ void Model::reset(const ResetWhat& what) {
       if (!(m.fix[n] & 1)) m.v[2 * n] = 0.0;
       if (!(m.fix[n] & 2)) m.v[2 * n + 1] = 0.0;
     }
-  if (what.state) std::fill(m.zone_state.begin(), m.zone_state.end(), 0);
+  if (what.state) {
+    std::fill(m.zone_state.begin(), m.zone_state.end(), 0);
+    std::fill(m.zone_plastic_work.begin(), m.zone_plastic_work.end(), 0.0);
+  }
   if (what.joint)
     for (Contact& c : m.contacts.list) c.us = c.slip = 0.0;
   m.dirty = true;  // restarts the adaptive damping from here
@@ -711,6 +715,7 @@ ZoneView Model::zone_view(int id) const {
     view.history_name = zone_law(m.params[static_cast<size_t>(material)].model).history;
     if (!view.history_name.empty()) view.history = m.zone_history[static_cast<size_t>(id)];
   }
+  view.plastic_work = m.zone_plastic_work[static_cast<size_t>(id)];
   view.excavated = m.zone_excavated.empty() ? 0 : m.zone_excavated[static_cast<size_t>(id)];
   return view;
 }

@@ -92,6 +92,7 @@ template <bool kIso>
   double work = 0.0;  // [J/m^3]
   const std::uint8_t now = zone_law(p.model).update(p, s, dxx, dyy, r.xy * dt, dzz, m.zone_history[z], &work);
   m.zone_state[z] = static_cast<std::uint8_t>((m.zone_state[z] & (kShearPast | kTensionPast)) | now | (now << 2));
+  m.zone_plastic_work[z] += work;
   return m.geometry[z].area * work;
 }
 

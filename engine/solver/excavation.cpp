@@ -180,6 +180,7 @@ void excavate_zones(Mechanics& m, const Mesh& mesh, const std::vector<int>& zone
     m.mean_stress_ref[static_cast<size_t>(z)] = 0.0;
     m.zone_state[static_cast<size_t>(z)] = 0;
     m.zone_history[static_cast<size_t>(z)] = 0.0;
+    m.zone_plastic_work[static_cast<size_t>(z)] = 0.0;
   }
   if (unglue_excavated(m, mesh)) {
     reconnect(m, mesh);
@@ -212,6 +213,7 @@ void fill_zones(Mechanics& m, const std::vector<int>& zones, int material) {
     m.mean_stress_ref[static_cast<size_t>(z)] = 0.0;
     m.zone_state[static_cast<size_t>(z)] = 0;
     m.zone_history[static_cast<size_t>(z)] = 0.0;
+    m.zone_plastic_work[static_cast<size_t>(z)] = 0.0;
   }
   m.dirty = true;
 }

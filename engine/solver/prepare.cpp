@@ -217,6 +217,7 @@ void reset_for_mesh(Mechanics& m, const Mesh& mesh) {
   m.mean_stress_ref.assign(zones, 0.0);
   m.zone_state.assign(zones, 0);
   m.zone_history.assign(zones, 0.0);
+  m.zone_plastic_work.assign(zones, 0.0);
   m.zone_excavated.assign(zones, 0);
   SectionLayout layout = find_sections(mesh);
   m.sections = std::move(layout.sections);

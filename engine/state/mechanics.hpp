@@ -172,6 +172,10 @@ struct Mechanics {
   // Per zone, the state variable of its zone law (ZoneLaw::history: ss's plastic shear strain);
   // 0 for laws that keep none. A fresh material (assign of null, excavate, fill) starts it at 0.
   std::vector<double> zone_history;
+  // Per zone, the plastic work done in it per unit volume [J/m^3] since it was last cleared
+  // (reset{ "state" }, a fresh material): how far it went past its strength, where the state's
+  // flags say only that it got there.
+  std::vector<double> zone_plastic_work;
 
   // ---- state per node
   int node_count = 0;
