@@ -29,7 +29,8 @@
 -- Returns, in prepass{}'s form for crackseed{ auto }: zones (id, x, y, state: none, shear,
 -- tension or shear+tension, ever yielded; states: the same after each stage, "excavated" once
 -- dug; angle: the most compressive principal stress's direction from +x at the end, in (-90, 90]
--- degrees), stages (name, cycles, ratio, converged), fallen (blocks mucked out), failure (where a
+-- degrees; work: the plastic work done in it per unit volume [J/m^3] up to the last stage it was
+-- in place), stages (name, cycles, ratio, converged), fallen (blocks mucked out), failure (where a
 -- stage stopped on an error: the pass ends there, as prepass{ on_failure = "keep" }), seconds.
 local yield_pass = {}
 
@@ -111,12 +112,13 @@ function yield_pass.run(t)
       if not dug then
         entry.state = entry.states[k] ~= "none" and entry.states[k] or entry.state
         entry.angle = principal_angle(z)
+        entry.work = z.plastic_work
       end
     end
     if t.after_stage then t.after_stage(k, name) end
   end
   if mucking then cancel(mucking) end
-  for _, entry in ipairs(result.zones) do entry.angle = entry.angle or 0 end
+  for _, entry in ipairs(result.zones) do entry.angle, entry.work = entry.angle or 0, entry.work or 0 end
   result.seconds = os.clock() - started
   return result
 end

@@ -8,8 +8,10 @@
 -- Settings: case, set, depth (edem.seed.region's), variants (damping:release[:ratio], separated
 -- by commas; damping local, 0.8, or adaptive; release in cycles; ratio each stage is solved to,
 -- 1e-5 if left out; the first is the reference), stages (how many of the 16 to dig), near (m: a
--- section counts as placed where the reference has one if their midpoints are this close).
-local s = settings{ case = 3, set = "P", depth = 158, stages = 16, near = 1.0,
+-- section counts as placed where the reference has one if their midpoints are this close),
+-- min_work (J/m^3: a zone counts as yielded, for the comparison and for the cracks, only if its
+-- plastic work reached this; 0: every zone that reached its strength).
+local s = settings{ case = 3, set = "P", depth = 158, stages = 16, near = 1.0, min_work = 0,
                     variants = "local:10000,local:1,local:100,adaptive:100,adaptive:10000" }
 local seed = require "edem.seed"
 local cavern = require "edem.cavern"
@@ -55,6 +57,7 @@ local function run(v)
   end
   local yielded, count = {}, 0
   for _, z in ipairs(pre.zones) do
+    if z.work < s.min_work then z.state = "none" end
     if z.state ~= "none" then yielded[z.id], count = true, count + 1 end
   end
   build()
