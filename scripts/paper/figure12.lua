@@ -54,5 +54,5 @@ end
 local file = setting("file", "figure12.png")
 local title = setting("title", "Case 3, 158 m: vertical displacement 10 m above the crown")
 chart{ file = file, series = series, title = title,
-       x_label = "x [m] (the joints dip towards +x)", y_label = "vertical displacement uy [m]" }
+       x_label = "x [m] (right: the side whose joints dip into the opening)", y_label = "vertical displacement uy [m]" }
 print(("figure12: %s written"):format(file))
