@@ -131,11 +131,13 @@ function yield_pass.check(result)
     k = k + 1
     local entry = result.zones[k]
     if not entry or entry.id ~= z.id or math.abs(entry.x - z.x) + math.abs(entry.y - z.y) > 1e-9 then
-      error(("yield_pass.check: zone %d is not where the pass found it: build the model as before the pass"):format(z.id), 2)
+      error(("yield_pass.check: zone %d is not where the pass found it: build the model as before the pass")
+            :format(z.id), 2)
     end
   end
   if k ~= #result.zones then
-    error(("yield_pass.check: %d zones, the pass ran on %d: build the model as before the pass"):format(k, #result.zones), 2)
+    error(("yield_pass.check: %d zones, the pass ran on %d: build the model as before the pass")
+          :format(k, #result.zones), 2)
   end
 end
 
