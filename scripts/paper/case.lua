@@ -24,6 +24,7 @@
 --             quicker, but a sliding block runs on barely damped) in the steps [local]
 --   prepass_damping  the same choice for the jointed prepass, kept apart so that where the
 --             potential cracks go does not change with the steps' damping [local]
+--   prepass_release  cycles over which each of the jointed prepass's steps is released [100]
 --   edge, far m: zone size at the cavern and far from it [1.5, 10]
 --   stages    how many of the 16 steps to dig [16]
 --   step_cycles  cycles a step is solved for once its load is off, before it is left short of
@@ -76,6 +77,7 @@ local loose = require "edem.loose"
 local given = settings{
   case = 3, depth = 158, bolts = "none", bolt_at = "solved", set = "P", prepass = "jointed",
   judge = "equilibrium", release = 0, release_offset = 0, damping = "local", prepass_damping = "local",
+  prepass_release = 100,
   edge = 1.5, far = 10, stages = 16, step_cycles = 40000, stall = 0, settle = 0, rock = "elastic",
   similar = 45, min_angle = 30, origin_x = "centroid", origin_y = "centroid",
   by_mode = false, muck = "loose", first = "left", mirror = false, judge_most = 0, judge_radius = 0,
@@ -106,6 +108,9 @@ if not (math.type(given.stall) == "integer" and given.stall >= 0) then
 end
 if not (type(given.settle) == "number" and given.settle >= 0 and given.settle < 1e-5) then
   error(("settle must be 0 or a ratio below 1e-5, got %s"):format(given.settle), 0)
+end
+if not (math.type(given.prepass_release) == "integer" and given.prepass_release >= 1) then
+  error(("prepass_release must be a whole number of cycles >= 1, got %s"):format(given.prepass_release), 0)
 end
 if not (math.type(given.save_after) == "integer" and given.save_after >= -1) then
   error(("save_after must be a step number (0: the in-situ state, -1: none), got %s"):format(given.save_after), 0)
@@ -149,7 +154,7 @@ local columns = { "case", "set", "depth", "bolts", "release", "steps", "cracks",
                   "points_fallen", "edge_m", "far_m", "first", "muck", "damping", "mirror", "crack_length_m",
                   "origin_x_m", "origin_y_m", "judge", "judgments", "prepass", "bolt_at", "prepass_damping",
                   "unconverged_why", "rock", "energy_error_J_m", "energy_error_share",
-                  "left_wall_5m_settlement_m", "right_wall_5m_settlement_m" }
+                  "left_wall_5m_settlement_m", "right_wall_5m_settlement_m", "prepass_release" }
 for _, file in ipairs{ TABLE, STEPS_TABLE } do
   local existing = io.open(file, "r")
   if existing then
@@ -202,7 +207,8 @@ if PREPASS == "jointed" then
   local dug = {}
   for k = 1, math.min(STAGES, #names) do dug[k] = names[k] end
   local pictures = { [3] = "_prepass_arch.png", [9] = "_prepass_step9.png", [#dug] = "_prepass.png" }
-  pre = yield_pass.run{ stages = dug, release = 100, damping = PREPASS_DAMPING, after_stage = function(k)
+  pre = yield_pass.run{ stages = dug, release = given.prepass_release, damping = PREPASS_DAMPING,
+                       after_stage = function(k)
     if pictures[k] then plot{ file = tag .. pictures[k], show = { "plastic", "blocks" }, window = WINDOW } end
   end }
   prepass_note = pre.failure and ("stopped in " .. pre.failure:sub(1, 160):gsub('"', "'")) or "complete"
@@ -534,7 +540,7 @@ local function result_row()
                 DAMPING, MIRROR, ("%.2f"):format(r.length), ORIGIN_X or "", ORIGIN_Y or "", JUDGE_AT, judgments, PREPASS,
                 BOLT_AT, PREPASS_DAMPING, '"' .. table.concat(unconverged_why, "; "):gsub('"', "'") .. '"', ROCK,
                 ("%.4g"):format(r.energy.error), ("%.3g"):format(r.energy.relative_error),
-                ("%.5f"):format(r.left_settles_5m), ("%.5f"):format(r.right_settles_5m) }
+                ("%.5f"):format(r.left_settles_5m), ("%.5f"):format(r.right_settles_5m), given.prepass_release }
   local named = {}  -- for result{}: each column's value, unquoted
   for i, v in ipairs(row) do
     row[i] = tostring(v)
