@@ -1248,7 +1248,10 @@ double median_edge_length(const ContactBoundary& cb, const std::vector<double>& 
 }
 
 double overlap_limit(const Mechanics& m) {
-  return m.settings.overlap > 0.0 ? m.settings.overlap : 0.5 * m.faces.median_edge;
+  if (m.settings.overlap > 0.0) return m.settings.overlap;
+  double curve = 0.0;
+  for (const JointParams& p : m.joint_params) curve = std::max(curve, p.curve_closure);
+  return 0.5 * m.faces.median_edge + curve;
 }
 
 void detect_contacts(Mechanics& m) {

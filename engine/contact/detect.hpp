@@ -27,7 +27,8 @@ double median_edge_length(const ContactBoundary& cb, const std::vector<double>& 
 // (called by contact_boundary; a restored boundary has them set again the same way).
 void mark_glued_tips(ContactBoundary& cb, const std::vector<double>& position);
 
-// The overlap watchdog's limit [m]: set{ overlap }, or half the median touchable edge.
+// The overlap watchdog's limit [m]: set{ overlap }, or half the median touchable edge plus the
+// largest closure a joint law follows its measured curve over (JointParams::curve_closure).
 // A contact a gridpoint has is followed this deep, so that one pressed in this far is still
 // found (new contacts are made within the gridpoint's reach).
 double overlap_limit(const Mechanics& m);

@@ -150,6 +150,7 @@ JointParams joint_params(const JointMaterialDef& def) {
       p.kn_zero = stiffness * cubic_slope(start_mm()) * kMPa / kMm;
       const double inflection = -2.0 * kB / (6.0 * kA);
       p.kn_max = stiffness * cubic_slope(inflection) * kMPa / kMm;
+      p.curve_closure = p.law_closure_scale * (straight_from_mm() - start_mm()) * kMm;
       break;
     }
   }

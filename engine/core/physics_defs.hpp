@@ -208,8 +208,9 @@ struct SolverSettings {
   // Off by default: with non-associated flow its zones localise more readily (Salencon psi = 0).
   bool mixed = false;
   // The overlap watchdog's limit: a gridpoint deeper than this inside another block stops the run
-  // [m]; 0: half the median length of the blocks' touchable edges (UDEC's rounding is a
-  // length of this kind).
+  // [m]; 0: half the median length of the blocks' touchable edges (UDEC's rounding is a length
+  // of this kind) plus the largest closure a joint law follows its measured curve over (0.41 m
+  // for the seed's curve x 400).
   double overlap = 0.0;
 };
 

@@ -39,6 +39,10 @@ struct JointParams {
   double law_stress_scale = 1.0, law_closure_scale = 1.0;
   double kn_zero = 0.0;  // tangent at zero closure: the stiffness of a bonded joint in tension
   double kn_max = 0.0;   // the largest tangent anywhere: what the time step must allow for
+  // The closure over which the law follows its measured curve (seed-cubic: up to the straight
+  // line that continues it; 0 for a law the user gives whole). A gridpoint sunk that far is the
+  // law at work, not an overlap: the watchdog's default limit allows it (overlap_limit).
+  double curve_closure = 0.0;  // [m]
 };
 
 }  // namespace edem
