@@ -24,7 +24,8 @@
 --             quicker, but a sliding block runs on barely damped) in the steps [local]
 --   prepass_damping  the same choice for the jointed prepass, kept apart so that where the
 --             potential cracks go does not change with the steps' damping [local]
---   prepass_release  cycles over which each of the jointed prepass's steps is released [100]
+--   prepass_release  cycles over which each of the jointed prepass's steps is released: near its slow limit, where
+--             the potential cracks no longer move with it (tests/bench/yield_pass_paths.lua) [3000]
 --   edge, far m: zone size at the cavern and far from it [1.5, 10]
 --   stages    how many of the 16 steps to dig [16]
 --   step_cycles  cycles a step is solved for once its load is off, before it is left short of
@@ -77,7 +78,7 @@ local loose = require "edem.loose"
 local given = settings{
   case = 3, depth = 158, bolts = "none", bolt_at = "solved", set = "P", prepass = "jointed",
   judge = "equilibrium", release = 0, release_offset = 0, damping = "local", prepass_damping = "local",
-  prepass_release = 100,
+  prepass_release = 3000,
   edge = 1.5, far = 10, stages = 16, step_cycles = 40000, stall = 0, settle = 0, rock = "elastic",
   similar = 45, min_angle = 30, origin_x = "centroid", origin_y = "centroid",
   by_mode = false, muck = "loose", first = "left", mirror = false, judge_most = 0, judge_radius = 0,
