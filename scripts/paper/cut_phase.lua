@@ -21,7 +21,7 @@ end
 build()
 local names = {}
 for _, s in ipairs(c.stages) do names[#names + 1] = s.name end
-local pre = yield_pass.run{ stages = names, release = 100, damping = "local" }
+local pre = yield_pass.run{ stages = names, release = 3000, damping = "local" }
 
 print(("%-9s %-14s %7s %9s %11s"):format("spacing", "cuts through", "groups", "sections", "length [m]"))
 for _, spacing in ipairs{ 4.8, 2.4 } do
