@@ -162,6 +162,18 @@ TEST(JointLaw, SeedCubicIsStraightAt1880MPaPerMetrePastItsDescendingPoint) {
   EXPECT_GT(normal_stress(p, 2.0 * kMm), seed_cubic_raw(2.0 * kMm + v0));
 }
 
+// The closure the overlap watchdog allows on top of its rounding: the curve's, from its zero
+// crossing to where it goes straight, times the closure scale; none for laws given whole.
+TEST(JointLaw, CurveClosureIsTheSeedCurvesScaledAndZeroForOtherLaws) {
+  EXPECT_NEAR(joint_params(seed_def()).curve_closure, (seed_v1_mm() - seed_v0_mm()) * kMm, 1e-15);
+  JointMaterialDef prototype = seed_def();
+  prototype.law_stress_scale = 17.86;
+  prototype.law_closure_scale = 400.0;
+  EXPECT_NEAR(joint_params(prototype).curve_closure, 0.4105, 1e-4);
+  EXPECT_EQ(joint_params(linear_def()).curve_closure, 0.0);
+  EXPECT_EQ(joint_params(table_def()).curve_closure, 0.0);
+}
+
 TEST(JointLaw, SeedCubicOnFineClosuresIsPositiveIncreasingAndNeverStifferThanKnMax) {
   const JointParams p = joint_params(seed_def());
   const int n = 30001;
