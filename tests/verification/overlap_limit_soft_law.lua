@@ -16,23 +16,9 @@
 local check = require "edem.check"
 
 local S, L = 17.86, 400  -- the prototype's stress and closure scales
-local function poly(v) return ((-4.302 * v + 7.688) * v - 0.123) * v end  -- MPa, mm
-local v0 = (-7.688 + math.sqrt(7.688 ^ 2 - 4 * -4.302 * -0.123)) / (2 * -4.302)
-local v1 = (-(2 * 7.688) - math.sqrt((2 * 7.688) ^ 2 - 4 * (3 * -4.302) * (-0.123 - 1.880))) / (2 * 3 * -4.302)
-local function law(c)  -- closure [m] -> sn [Pa] at prototype scale
-  local v = c / L * 1e3 + v0
-  if v <= v1 then return S * poly(v) * 1e6 end
-  return S * (poly(v1) * 1e6 + 1880e6 * (v - v1) * 1e-3)
-end
-local function closure_for(sn)
-  local lo, hi = 0, 2
-  for _ = 1, 200 do
-    local mid = 0.5 * (lo + hi)
-    if law(mid) < sn then lo = mid else hi = mid end
-  end
-  return 0.5 * (lo + hi)
-end
-local curve = (v1 - v0) * 1e-3 * L
+local seed_law = require "edem.seed_law"  -- the law from the paper, scaled
+local function closure_for(sn) return seed_law.closure(sn, S, L) end
+local curve = (seed_law.v1 - seed_law.v0) * 1e-3 * L
 print(("  the law follows its curve over %.4f m of closure; with the rounding the limit is %.4f m"):format(
   curve, curve + 0.25))
 

@@ -17,24 +17,11 @@
 --     than 1e-3 of the joint's closure, and no step is refused by the watchdog.
 local check = require "edem.check"
 
--- The law as this script understands it: closure c [m] -> sn [Pa], compression positive.
-local function poly(v) return ((-4.302 * v + 7.688) * v - 0.123) * v end  -- MPa, mm
-local function slope(v) return (3 * -4.302 * v + 2 * 7.688) * v - 0.123 end
-local v0 = (-7.688 + math.sqrt(7.688 ^ 2 - 4 * -4.302 * -0.123)) / (2 * -4.302)
-local v1 = (-(2 * 7.688) - math.sqrt((2 * 7.688) ^ 2 - 4 * (3 * -4.302) * (-0.123 - 1.880))) / (2 * 3 * -4.302)
-local function law(c)
-  local v = c * 1e3 + v0
-  if v <= v1 then return poly(v) * 1e6 end
-  return poly(v1) * 1e6 + 1880e6 * (v - v1) * 1e-3
-end
-local function closure_for(sn)
-  local lo, hi = 0, 0.01
-  for _ = 1, 200 do
-    local mid = 0.5 * (lo + hi)
-    if law(mid) < sn then lo = mid else hi = mid end
-  end
-  return 0.5 * (lo + hi)
-end
+-- The law as this script understands it (edem.seed_law, from the paper): closure c [m] -> sn [Pa],
+-- compression positive.
+local seed_law = require "edem.seed_law"
+local poly, slope, v0, v1 = seed_law.poly, seed_law.slope, seed_law.v0, seed_law.v1
+local closure_for = seed_law.closure
 print(("  law: starts at v0 = %.5f mm, straight past v1 = %.4f mm (%.4f MPa, tangent %.1f MPa/mm)"):format(
   v0, v1, poly(v1), slope(v1)))
 
