@@ -207,28 +207,52 @@ std::optional<Stress> insitu_here(const Mechanics& m, Vec2 point) {
 
 // How much of the segment p-q lies over the touchable edges `edge` and those beside it along
 // its loop, measured along them (their projections, clipped to each edge's ends) [m]. The walk
-// goes on in each direction while the segment still reaches over the next edge: a long half
-// edge (coarse zoning) can lie over many short ones of the other block.
+// goes on in each direction while the segment still reaches past the end of the edge it is on:
+// a long half edge (coarse zoning) can lie over many short ones of the other block. Each edge
+// beyond takes only the piece of the segment past that end: at a corner of the block the segment
+// reaches just past, the whole segment projected on the side edge would count the depth of a
+// gridpoint sunk into the face as length there, and that length would come and go as the
+// segment's end rocks about the corner.
 double covered_length(const Mechanics& m, Vec2 p, Vec2 q, int edge) {
   const ContactBoundary& cb = m.faces;
-  const auto over = [&](int e) {
+  // Of piece p-q: the part over edge e [m] and, past its end a (backward) or b (forward), the
+  // piece of it beyond that end (empty: none).
+  struct Over {
+    double length = 0.0;
+    Vec2 from, to;
+    bool beyond = false;
+  };
+  const auto over = [&](int e, Vec2 from, Vec2 to, bool forward) {
+    Over o;
     const ContactEdge& ce = cb.edges[static_cast<size_t>(e)];
-    if (!ce.touchable) return 0.0;
+    if (!ce.touchable) return o;
     const Vec2 a = at(m, ce.a), d = at(m, ce.b) - a;
     const double len2 = dot(d, d);
-    const double tp = dot(p - a, d) / len2, tq = dot(q - a, d) / len2;
+    const double tp = dot(from - a, d) / len2, tq = dot(to - a, d) / len2;
     const double lo = std::max(0.0, std::min(tp, tq)), hi = std::min(1.0, std::max(tp, tq));
-    return hi > lo ? (hi - lo) * std::sqrt(len2) : 0.0;
+    o.length = hi > lo ? (hi - lo) * std::sqrt(len2) : 0.0;
+    const double end = forward ? 1.0 : 0.0;
+    const auto past = [&](double t) { return forward ? t > end : t < end; };
+    if (!past(tp) && !past(tq)) return o;
+    o.beyond = true;
+    o.from = from, o.to = to;
+    if (past(tp) != past(tq)) {
+      const Vec2 split = from + ((end - tp) / (tq - tp)) * (to - from);
+      (past(tp) ? o.to : o.from) = split;
+    }
+    return o;
   };
   const double limit = norm(q - p);
-  double covered = over(edge);
+  double covered = over(edge, p, q, true).length;
   for (const bool forward : {false, true}) {
+    Over here = over(edge, p, q, forward);
     int e = edge;
-    for (;;) {
+    while (here.beyond && covered < limit) {
       e = forward ? cb.edges[static_cast<size_t>(e)].next : cb.edges[static_cast<size_t>(e)].prev;
-      const double part = e == edge ? 0.0 : over(e);
-      if (!(part > 0.0) || covered >= limit) break;
-      covered += part;
+      if (e == edge) break;
+      here = over(e, here.from, here.to, forward);
+      if (!(here.length > 0.0)) break;
+      covered += here.length;
     }
   }
   return std::min(covered, limit);

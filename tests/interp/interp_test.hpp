@@ -55,4 +55,16 @@ joint_material{ "crack", kn = 1880e6, ks = 1880e6, friction = 31.2 }
 )";
 }
 
+// drive(points, vx, vy): each of the gridpoints in points (as gridpoints() gives them) held at that
+// velocity [m a cycle in static mode], so that a block is moved as a rigid body by them.
+constexpr const char* kDrive = R"lua(
+local function drive(points, vx, vy)
+  for _, g in ipairs(points) do
+    local h = 0.01  -- boundary{} selects by the gridpoints' positions as built
+    boundary{ polygon = {{g.x - h, g.y - h}, {g.x + h, g.y - h}, {g.x + h, g.y + h}, {g.x - h, g.y + h}},
+              xvel = vx, yvel = vy }
+  end
+end
+)lua";
+
 }  // namespace edem::test

@@ -65,18 +65,6 @@ TEST(ContactRefresh, TheFallingBlockLandsOnTheBaseWithNoContactFoundLate) {
   )");
 }
 
-// drive(points, vx, vy): each of the gridpoints in points (as gridpoints() gives them) held at that
-// velocity [m a cycle in static mode], so that a block is moved as a rigid body by them.
-constexpr const char* kDrive = R"lua(
-local function drive(points, vx, vy)
-  for _, g in ipairs(points) do
-    local h = 0.01  -- boundary{} selects by the gridpoints' positions as built
-    boundary{ polygon = {{g.x - h, g.y - h}, {g.x + h, g.y - h}, {g.x + h, g.y + h}, {g.x - h, g.y + h}},
-              xvel = vx, yvel = vy }
-  end
-end
-)lua";
-
 // A block on another, their joint given 1 MPa (closed 0.1 m), is slid 6 cm right, its corner past
 // the lower block's, then 20 cm down: its corner lies beside the lower block's side, 6 cm out. Its
 // contact, found again on that side, must not keep the closure it had on the top face: 4 cm of

@@ -557,5 +557,57 @@ TEST(ContactTips, AGridpointBeyondACornerKeepsTheFaceItPressesAsTheBlocksRock) {
   )lua");
 }
 
+// A triangle's apex pressed 10 cm into the top face of a 1 m square, its edges 0.6 m out and
+// 1.1 m up, slid right towards the square's corner. Each half-edge at the apex lies over the
+// face for its projection, 0.3 m, until its middle passes the corner: from then on for the apex's
+// distance from the corner; and takes that as far as it faces the face (the cosine between their
+// normals, 0.479), this side's half of it. The square's side, 0.6 m off under the face's end, is
+// no face of the apex's: projected on it, each half-edge would add the apex's depth (the length
+// double, 0.30 m), and near the corner that depth would come and go as the half-edge's end rocked
+// past it (in the seed's Case 3 a corner 0.22 m deep swung between 0.11 and 0.18 m, and made
+// 0.25 MJ/m at each swing).
+TEST(ContactTips, ATipNearTheEndOfAFaceCarriesOnlyWhatLiesOverTheFace) {
+  Interpreter interpreter;
+  interpreter.context().quiet = true;
+  expect_runs(interpreter, std::string(kDrive) + R"lua(
+    model{ title = "a tip slid towards the end of a face" }
+    block{ x = {-1, 0}, y = {-1, 0} }
+    block{ {-0.4, 0}, {0.2, 1.1}, {-1.0, 1.1} }
+    zone{ edge = 2 }
+    material{ "rock", density = 2600, young = 1e12, poisson = 0.25 }
+    assign{ material = "rock" }
+    joint_material{ "j", kn = 1e7, ks = 1e7, friction = 0 }
+    jassign{ material = "j" }
+    local upper = gp_near(-0.4, 1).block
+    boundary{ polygon = {{-1.1, -1.1}, {0.1, -1.1}, {0.1, -0.9}, {-1.1, -0.9}}, fix = "xy" }
+    cycle(1)
+    local driven = {}
+    for g in gridpoints() do if g.block == upper and g.y > 0.25 then driven[#driven + 1] = g end end
+    local function apex()
+      local g = gp_near(-0.4, 0)
+      return -0.4 + g.ux, g.uy
+    end
+    drive(driven, 0, -1e-4)
+    while select(2, apex()) > -0.1 do cycle(1) end
+    drive(driven, 1e-4, 0)
+    local facing = 0.6 / math.sqrt(0.6 ^ 2 + 1.1 ^ 2)
+    local checked, past = 0, 0
+    while apex() < -0.15 do
+      cycle(10)
+      local x = apex()
+      local expected = 0.5 * facing * (0.3 + math.min(0.3, -x))
+      for c in contacts() do
+        if c.block == upper and math.abs(c.x - x) < 0.02 then
+          assert(math.abs(c.length / expected - 1) < 1e-3,
+                 ("the apex at x = %.4f m carries %.5f m, expected %.5f m"):format(x, c.length, expected))
+          checked = checked + 1
+          if x > -0.3 then past = past + 1 end
+        end
+      end
+    end
+    assert(checked > 200 and past > 100, ("checked %d times, %d past the corner"):format(checked, past))
+  )lua");
+}
+
 }  // namespace
 }  // namespace edem::test
