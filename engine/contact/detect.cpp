@@ -149,7 +149,7 @@ struct Found {
 // none), and whether that contact presses. Matching gridpoints on the two faces of a joint
 // (zoning.hpp) sit exactly at each other's corners.
 std::optional<Found> nearest_edge(const Mechanics& m, int node, Vec2 p, Vec2 own_normal, int block,
-                                  double reach, double search, int held, bool held_presses) {
+                                  double reach, double search, int held, bool held_presses, double held_closure) {
   const ContactBoundary& cb = m.faces;
   const int first = cb.block_first_edge[static_cast<size_t>(block)];
   const int last = cb.block_first_edge[static_cast<size_t>(block) + 1];
@@ -163,8 +163,13 @@ std::optional<Found> nearest_edge(const Mechanics& m, int node, Vec2 p, Vec2 own
   // The held edge stays on offer a band further: a gridpoint whose nearest edges differ by about
   // the band's width would otherwise be offered the squarer one at one search and not at the
   // next, and its contact would swing between them (with its stress, made for one face, pressed
-  // on the other), making energy at every swing.
-  const double held_about = std::min(search, nearest + 0.2 * reach);
+  // on the other), making energy at every swing. A contact that presses on a joint whose law
+  // follows a measured curve keeps its edge on offer that curve's closure further
+  // (`held_closure`, JointParams::curve_closure), as the overlap watchdog allows it: a block's
+  // corner sunk that far into a soft joint's face lies on the other block's side face, at a
+  // distance of nothing, and offered that face alone its contact would leave the face it presses
+  // on, its load with it.
+  const double held_about = std::min(search, nearest + 0.2 * reach + held_closure);
   EdgeChoice choice{.held = held, .own_size = norm(own_normal), .held_presses = held_presses};
   for (int e = first; e < last; ++e) {
     const ContactEdge& edge = cb.edges[static_cast<size_t>(e)];
@@ -580,7 +585,9 @@ std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t
     const int held = had ? had->edge : -1;
     const bool pressing = had && presses(*had);
     const double radius = !had ? reach : pressing ? 2.0 * follow : follow;
-    if (auto f = nearest_edge(m, node, p, own_normal, block, reach, radius, held, pressing)) {
+    const double closure =
+        pressing && had->material >= 0 ? m.joint_params[static_cast<size_t>(had->material)].curve_closure : 0.0;
+    if (auto f = nearest_edge(m, node, p, own_normal, block, reach, radius, held, pressing, closure)) {
       found.push_back(*f);
       search = std::max(search, std::min(radius, follow));
     }

@@ -48,8 +48,9 @@
 // most an eighth of an edge away. At a
 // rebuild a contact keeps its edge while the gridpoint projects onto it and no other it projects
 // onto faces it much more squarely (edge_choice.hpp), and that edge stays on offer a band further
-// than the others (detect.cpp): a corner pressed into a corner, or a tip past the corner of a
-// face, would otherwise swing between two edges.
+// than the others, and while it presses further by its law's curve closure (detect.cpp): a corner
+// pressed into a corner, or a tip past the corner of a face, would otherwise swing between two
+// edges, and a corner sunk into a soft joint's face would leave it for the side face it lies on.
 #pragma once
 
 #include <algorithm>
