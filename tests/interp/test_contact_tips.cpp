@@ -561,10 +561,10 @@ TEST(ContactTips, AGridpointBeyondACornerKeepsTheFaceItPressesAsTheBlocksRock) {
 // 1.1 m up, slid right towards the square's corner. Each half-edge at the apex lies over the
 // face for its projection, 0.3 m, until its middle passes the corner: from then on for the apex's
 // distance from the corner; and takes that as far as it faces the face (the cosine between their
-// normals, 0.479), this side's half of it. The square's side, 0.6 m off under the face's end, is
-// no face of the apex's: projected on it, each half-edge would add the apex's depth (the length
-// double, 0.30 m), and near the corner that depth would come and go as the half-edge's end rocked
-// past it (in the seed's Case 3 a corner 0.22 m deep swung between 0.11 and 0.18 m, and made
+// normals, 0.479), this side's half of it. The square's side, under the face's end, 0.15 to 0.4 m
+// from the apex, is no face of the apex's: projected on it, each half-edge would add the apex's
+// depth (the length double, 0.30 m), and near the corner that depth would come and go as the
+// half-edge's end rocked past it (in the seed's Case 3 a corner 0.22 m deep swung between 0.11 and 0.18 m, and made
 // 0.25 MJ/m at each swing).
 TEST(ContactTips, ATipNearTheEndOfAFaceCarriesOnlyWhatLiesOverTheFace) {
   Interpreter interpreter;
