@@ -564,8 +564,8 @@ TEST(ContactTips, AGridpointBeyondACornerKeepsTheFaceItPressesAsTheBlocksRock) {
 // normals, 0.479), this side's half of it. The square's side, under the face's end, 0.15 to 0.4 m
 // from the apex, is no face of the apex's: projected on it, each half-edge would add the apex's
 // depth (the length double, 0.30 m), and near the corner that depth would come and go as the
-// half-edge's end rocked past it (in the seed's Case 3 a corner 0.22 m deep swung between 0.11 and 0.18 m, and made
-// 0.25 MJ/m at each swing).
+// half-edge's end rocked past it (in the seed's Case 3 a corner 0.22 m deep swung between 0.11
+// and 0.18 m, and made 0.25 MJ/m at each swing).
 TEST(ContactTips, ATipNearTheEndOfAFaceCarriesOnlyWhatLiesOverTheFace) {
   Interpreter interpreter;
   interpreter.context().quiet = true;
