@@ -163,9 +163,16 @@ int run_solve(lua_State* L, Context& context, const Args& args) {
       fmt::print("solve: stopped after {} cycles at ratio {:.3g} (not converged to {:.3g}{}){}{}\n",
                  result.cycles, result.ratio, def.ratio,
                  def.settle > 0.0 ? fmt::format(" and settled to {:.3g}", def.settle) : "", rounds, why);
+    // The ratio is a sum over the whole model: a block's unbalanced force can hide in it.
+    if (result.converged && result.body_share > kBodyOutOfBalance)
+      fmt::print("solve: the rock of block {} at ({:.6g}, {:.6g}) is out of balance: {:.3g} % of the forces on it "
+                 "are unbalanced, which the ratio over the whole model hides; it has not settled yet (a lower "
+                 "ratio settles it) or has no equilibrium near (under local damping it creeps; adaptive damping "
+                 "lets it move, or support it)\n",
+                 result.body_block + 1, result.body_at.x, result.body_at.y, 100.0 * result.body_share);
     std::fflush(stdout);
   }
-  lua_createtable(L, 0, 6);
+  lua_createtable(L, 0, 10);
   set_field(L, "cycles", static_cast<long long>(result.cycles));
   set_field(L, "ratio", result.ratio);
   lua_pushboolean(L, result.converged);
@@ -174,6 +181,10 @@ int run_solve(lua_State* L, Context& context, const Args& args) {
   lua_setfield(L, -2, "stalled");
   set_field(L, "judgments", static_cast<long long>(result.judgments));
   set_field(L, "broke", static_cast<long long>(result.broke));
+  set_field(L, "body_share", result.body_share);
+  set_field(L, "body_block", static_cast<long long>(result.body_block) + 1);
+  set_field(L, "body_x", result.body_at.x);
+  set_field(L, "body_y", result.body_at.y);
   return 1;
 }
 
@@ -315,7 +326,10 @@ const Command& solve_command() {
       .run = run_solve,
       .returns = "a table: cycles (run by this call), ratio (reached), converged (true or false), stalled "
                  "(true: stopped by stall), judgments (with judge{ at = \"equilibrium\"}: the states judged) and "
-                 "broke (the sections they broke)",
+                 "broke (the sections they broke); body_share, body_block, body_x, body_y: the body (rock its zones "
+                 "and intact sections join) whose net unbalanced force is the largest share of the forces on it "
+                 "(its weight, contacts and loads), one of its blocks and where that block is: above 0.01 in a "
+                 "state the ratio calls converged, solve prints that the rock there is out of balance",
       .usage = "solve{ ratio = 1e-5 }\nsolve()",
       .bare_call = true,
   };

@@ -221,6 +221,11 @@ struct SolveDef {
   double settle = 0.0;        // a state at the ratio then solved on to this under adaptive damping (0: not)
 };
 
+// A body with more than this share of the forces on it unbalanced, in a state the ratio calls
+// converged, is out of balance: a settled body's share falls with the ratio (6e-4 at 1e-7 on
+// tests/verification/unbalanced_body.lua's block), one that slides keeps its own (0.36 there).
+inline constexpr double kBodyOutOfBalance = 0.01;
+
 struct SolveResult {
   long cycles = 0;         // cycles done by this solve
   double ratio = 0.0;      // ratio reached
@@ -236,6 +241,12 @@ struct SolveResult {
   // Stopped because the ratio had not fallen a tenth below its lowest in `stall` cycles: the model
   // keeps moving without coming nearer to an equilibrium.
   bool stalled = false;
+  // At the solve's end: the body (rock its zones and intact sections join) whose net unbalanced
+  // force is the largest share of the forces holding it (solver/body_balance.hpp), one of its
+  // blocks and where that block is.
+  double body_share = 0.0;
+  int body_block = -1;
+  Vec2 body_at{};
 };
 
 // Where a long cycle() or solve{} stands, for a progress line (Model::set_progress).

@@ -13,6 +13,7 @@
 #include "contact/joint_law.hpp"
 #include "crack/judge.hpp"
 #include "bolt/bolt_coupling.hpp"
+#include "solver/body_balance.hpp"
 #include "solver/cycle.hpp"
 #include "solver/energy.hpp"
 #include "solver/excavation.hpp"
@@ -206,6 +207,13 @@ bool stands_judged(Mechanics& m, const Mesh& mesh, SolveResult& result) {
   return broke == 0;
 }
 
+void note_worst_body(const Mechanics& m, SolveResult& result) {
+  const BodyBalance worst = worst_body_balance(m);
+  result.body_share = worst.share;
+  result.body_block = worst.block;
+  result.body_at = worst.at;
+}
+
 long next_due(const Mechanics& m, long cycle) {
   long due = cycle + kMeasureInterval - cycle % kMeasureInterval;
   for (const Callback& c : m.callbacks) due = std::min(due, (cycle / c.every + 1) * c.every);
@@ -383,6 +391,7 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
       if (at_goal()) {
         result.ratio = m.info.ratio;
         result.converged = true;
+        note_worst_body(m, result);
         return result;
       }
       if (!settling) break;  // sections broke: cycles must find the next state
@@ -487,6 +496,7 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
   }
   result.ratio = m.info.ratio;
   result.unjudged = !result.converged && m.judge.at == JudgeAt::equilibrium && any_intact(m);
+  note_worst_body(m, result);
   return result;
 }
 

@@ -1,0 +1,61 @@
+#include "solver/body_balance.hpp"
+
+#include <cmath>
+#include <numeric>
+#include <vector>
+
+#include "bolt/bolt_coupling.hpp"
+#include "core/union_find.hpp"
+#include "solver/cycle.hpp"
+#include "state/mechanics.hpp"
+
+namespace edem {
+
+BodyBalance worst_body_balance(const Mechanics& m) {
+  const size_t nodes = static_cast<size_t>(m.node_count);
+  std::vector<int> parent(nodes);
+  std::iota(parent.begin(), parent.end(), 0);
+  for (const int z : m.active) {
+    const auto& node = m.geometry[static_cast<size_t>(z)].node;
+    const int root = find_root(parent, node[0]);
+    for (size_t i = 1; i < 3; ++i) parent[static_cast<size_t>(find_root(parent, node[i]))] = root;
+  }
+  std::vector<double> f = standing_forces(m);
+  if (!m.bolt_hosts.gather.empty())
+    for (size_t n = 0; n < nodes; ++n) add_bolt_forces(m, n, &f[2 * n]);
+  std::vector<Vec2> net(nodes, Vec2{});
+  std::vector<double> holding(nodes, 0.0);
+  std::vector<char> moving(nodes, 0);  // bodies with a free component (not all held)
+  for (size_t n = 0; n < nodes; ++n) {
+    if (!(m.mass[n] > 0.0)) continue;
+    const size_t root = static_cast<size_t>(find_root(parent, static_cast<int>(n)));
+    for (size_t c = 0; c < 2; ++c) {
+      const size_t dof = 2 * n + c;
+      if ((m.fix[n] >> c) & 1) continue;
+      (c == 0 ? net[root].x : net[root].y) += f[dof] + m.weight[dof] + m.load[dof];
+      moving[root] = 1;
+    }
+    holding[root] += std::hypot(m.weight[2 * n], m.weight[2 * n + 1]) +
+                     std::hypot(m.load[2 * n], m.load[2 * n + 1]);
+  }
+  for (const Contact& c : m.contacts.list) {
+    const double force = std::hypot(c.fx, c.fy);
+    holding[static_cast<size_t>(find_root(parent, c.node))] += force;
+    const int edge_node = m.faces.edges[static_cast<size_t>(c.edge)].a;
+    holding[static_cast<size_t>(find_root(parent, edge_node))] += force;
+  }
+  BodyBalance worst;
+  for (size_t n = 0; n < nodes; ++n) {
+    const bool root = static_cast<size_t>(find_root(parent, static_cast<int>(n))) == n;
+    if (!root || !moving[n] || !(holding[n] > 0.0)) continue;
+    const double share = norm(net[n]) / holding[n];
+    if (share > worst.share) {
+      worst.share = share;
+      worst.block = m.node_block[n];
+      worst.at = {m.origin[2 * n] + m.u[2 * n], m.origin[2 * n + 1] + m.u[2 * n + 1]};
+    }
+  }
+  return worst;
+}
+
+}  // namespace edem
