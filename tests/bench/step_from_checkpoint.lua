@@ -9,7 +9,8 @@
 -- Settings: file (the checkpoint), step (the region to dig, or several separated by commas, dug in
 -- turn; "" digs nothing and solves on), on (true: a step short of its ratio is solved on to ten
 -- times it within 40,000 cycles more, and judged there, as case.lua does judged at equilibrium),
--- damping (local, 0.8, or adaptive), release and cycles (the solve's limit past the release), the
+-- damping (local, 0.8, adaptive, or none), release and cycles (the solve's limit past the release), ratio
+-- (the solve's goal, 1e-5 as case.lua's steps), the
 -- point followed (x, y: the right wall at the springline), every (cycles between the trace's
 -- lines), save_to (a checkpoint of the state the solve ends at; "" none), muck (blocks loose at two
 -- checks 200 cycles apart are dug out, edem.loose, as case.lua's default does; case.lua also keeps
@@ -24,16 +25,16 @@
 -- damping's rate c = 2 omega (info().damping_rate).
 local s = settings{ file = "", step = "", damping = "local", release = 100, cycles = 40000, x = 12.0, y = 0.0,
                     every = 2000, save_to = "", muck = true, on = false, by_contact = 0,
-                    nearest = 0, neighbours = "" }
+                    nearest = 0, neighbours = "", ratio = 1e-5 }
 if s.file == "" then error("give --set file=CHECKPOINT.h5", 0) end
 restore(s.file)
 if s.neighbours ~= "" then judge{ at = "equilibrium", neighbours = s.neighbours } end
 if s.damping == "local" then
   set{ damping = "local", local_damping = 0.8 }
-elseif s.damping == "adaptive" then
-  set{ damping = "adaptive" }
+elseif s.damping == "adaptive" or s.damping == "none" then
+  set{ damping = s.damping }
 else
-  error(("damping must be local or adaptive, got %s"):format(s.damping), 0)
+  error(("damping must be local, adaptive or none, got %s"):format(s.damping), 0)
 end
 
 local point = gp_near(s.x, s.y)
@@ -71,7 +72,7 @@ if #steps == 0 then steps[1] = "" end
 for _, name in ipairs(steps) do
   local clock = os.clock()
   if name ~= "" then excavate{ region = name, release = s.release } end
-  local r = solve{ ratio = 1e-5, max_cycles = s.release + s.cycles }
+  local r = solve{ ratio = s.ratio, max_cycles = s.release + s.cycles }
   if not r.converged and s.on then
     local again = solve{ ratio = 1e-4, max_cycles = 40000 }
     r.cycles, r.converged, r.ratio = r.cycles + again.cycles, again.converged, again.ratio
