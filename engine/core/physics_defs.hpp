@@ -243,7 +243,7 @@ struct SolveResult {
   bool stalled = false;
   // At the solve's end: the body (rock its zones and intact sections join) whose net unbalanced
   // force is the largest share of the forces holding it (solver/body_balance.hpp), one of its
-  // blocks and where that block is.
+  // blocks and where a node of it is.
   double body_share = 0.0;
   int body_block = -1;
   Vec2 body_at{};

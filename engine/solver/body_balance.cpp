@@ -1,5 +1,6 @@
 #include "solver/body_balance.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <vector>
@@ -21,8 +22,11 @@ BodyBalance worst_body_balance(const Mechanics& m) {
     for (size_t i = 1; i < 3; ++i) parent[static_cast<size_t>(find_root(parent, node[i]))] = root;
   }
   std::vector<double> f = standing_forces(m);
+  // The bolts as their last cycle left them, on the nodes they were tied to then (nodes a crack
+  // split off since have none until the bolts are tied again).
   if (!m.bolt_hosts.gather.empty())
-    for (size_t n = 0; n < nodes; ++n) add_bolt_forces(m, n, &f[2 * n]);
+    for (size_t n = 0; n + 1 < std::min(nodes + 1, m.bolt_hosts.gather_first.size()); ++n)
+      add_bolt_forces(m, n, &f[2 * n]);
   std::vector<Vec2> net(nodes, Vec2{});
   std::vector<double> holding(nodes, 0.0);
   std::vector<char> moving(nodes, 0);  // bodies with a free component (not all held)
@@ -38,11 +42,13 @@ BodyBalance worst_body_balance(const Mechanics& m) {
     holding[root] += std::hypot(m.weight[2 * n], m.weight[2 * n + 1]) +
                      std::hypot(m.load[2 * n], m.load[2 * n + 1]);
   }
+  const auto in_range = [&](int node) { return node >= 0 && static_cast<size_t>(node) < nodes; };
   for (const Contact& c : m.contacts.list) {
+    if (c.edge < 0 || static_cast<size_t>(c.edge) >= m.faces.edges.size()) continue;
     const double force = std::hypot(c.fx, c.fy);
-    holding[static_cast<size_t>(find_root(parent, c.node))] += force;
     const int edge_node = m.faces.edges[static_cast<size_t>(c.edge)].a;
-    holding[static_cast<size_t>(find_root(parent, edge_node))] += force;
+    for (const int node : {c.node, edge_node})
+      if (in_range(node)) holding[static_cast<size_t>(find_root(parent, node))] += force;
   }
   BodyBalance worst;
   for (size_t n = 0; n < nodes; ++n) {

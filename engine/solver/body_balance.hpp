@@ -12,7 +12,7 @@ struct Mechanics;
 struct BodyBalance {
   double share = 0.0;  // |net unbalanced force| over the forces on it (weight, contacts, loads)
   int block = -1;      // a block of the body
-  Vec2 at{};           // where that block's first node is now [m]
+  Vec2 at{};           // where a node of the body is now [m]
 };
 
 // The body whose net unbalanced force is the largest share of the forces on it. Local damping

@@ -207,6 +207,7 @@ bool stands_judged(Mechanics& m, const Mesh& mesh, SolveResult& result) {
   return broke == 0;
 }
 
+// A solve's state, not a cycle()'s (run with no ratio to reach).
 void note_worst_body(const Mechanics& m, SolveResult& result) {
   const BodyBalance worst = worst_body_balance(m);
   result.body_share = worst.share;
@@ -496,7 +497,7 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
   }
   result.ratio = m.info.ratio;
   result.unjudged = !result.converged && m.judge.at == JudgeAt::equilibrium && any_intact(m);
-  note_worst_body(m, result);
+  if (target_ratio > 0.0) note_worst_body(m, result);
   return result;
 }
 
