@@ -219,6 +219,7 @@ struct SolveDef {
   long max_cycles = 100000;   // and stop after this many cycles whatever the ratio
   long stall = 0;             // and after this many without the ratio falling a tenth (0: never)
   double settle = 0.0;        // a state at the ratio then solved on to this under adaptive damping (0: not)
+  double balance = 0.0;       // and no body more out of balance than this (solver/body_balance.hpp; 0: not asked)
 };
 
 // A body with more than this share of the forces on it unbalanced, in a state the ratio calls

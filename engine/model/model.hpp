@@ -247,7 +247,8 @@ class Model {
   double tolerance_of(const Inputs& inputs) const;
   void check_geometry_open() const;  // throws once cycling has begun
   // target <= 0: no ratio stop; stall > 0: stop after that many cycles without progress (SolveDef)
-  SolveResult run(long max_cycles, double target_ratio, long stall = 0, double settle = 0.0);
+  SolveResult run(long max_cycles, double target_ratio, long stall = 0, double settle = 0.0,
+                  double balance = 0.0);
   Polygon resolve_in(const Inputs& inputs, const RegionRef& ref) const;
   void add_crack_counts(ModelInfo& info) const;
   void follow_histories_past_excavation();  // model/model_mechanics.cpp

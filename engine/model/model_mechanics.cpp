@@ -309,8 +309,8 @@ std::string Model::unheld() const {
          "boundary{ side = \"bottom\", fix = \"y\" })";
 }
 
-SolveResult Model::run(long max_cycles, double target_ratio, long stall, double settle) {
-  return run_solver(*mechanics_, mesh_, max_cycles, target_ratio, stall, settle);
+SolveResult Model::run(long max_cycles, double target_ratio, long stall, double settle, double balance) {
+  return run_solver(*mechanics_, mesh_, max_cycles, target_ratio, stall, settle, balance);
 }
 
 SolveResult Model::cycle(long count) {
@@ -324,7 +324,8 @@ SolveResult Model::solve(const SolveDef& def) {
   if (def.stall < 0) fail("stall must be >= 0, got {}", def.stall);
   if (!(def.settle >= 0.0 && def.settle < def.ratio))
     fail("settle must be 0 or below ratio ({}), got {}", def.ratio, def.settle);
-  return run(def.max_cycles, def.ratio, def.stall, def.settle);
+  if (!(def.balance >= 0.0 && def.balance < 1.0)) fail("balance must be in [0, 1), got {}", def.balance);
+  return run(def.max_cycles, def.ratio, def.stall, def.settle, def.balance);
 }
 
 int Model::add_callback(long every, std::function<void(long)> fn) {

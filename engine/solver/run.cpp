@@ -332,7 +332,7 @@ struct DampingKept {
 }  // namespace
 
 SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double target_ratio, long stall,
-                       double settle) {
+                       double settle, double balance) {
   if (m.cycling_now) fail("cannot cycle from inside a callback or history while cycling");
   check_functions_given(m);
   prepare(m, mesh);  // a changed model; else the thread count may have changed
@@ -385,10 +385,13 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
     }
     return false;
   };
+  // With `balance`, a state at the ratio counts only once no body is further out of balance: the
+  // ratio, a sum over the whole model, can hide a few blocks with no equilibrium.
+  const auto balanced = [&] { return balance <= 0.0 || worst_body_balance(m).share <= balance; };
   if (target_ratio > 0.0 && m.release.dof.empty()) {
     const Measure now = measure_state(m);
     m.info.ratio = now.applied > 0.0 ? now.unbalanced / now.applied : 0.0;
-    while (m.info.ratio <= goal) {
+    while (m.info.ratio <= goal && balanced()) {
       if (at_goal()) {
         result.ratio = m.info.ratio;
         result.converged = true;
@@ -457,7 +460,7 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
     // Nor is one whose excavation loads are still coming off.
     const int broke_before = result.broke;
     const bool was_settling = settling;
-    if (target_ratio > 0.0 && m.info.ratio <= goal && !cracked && !releasing && at_goal()) {
+    if (target_ratio > 0.0 && m.info.ratio <= goal && !cracked && !releasing && balanced() && at_goal()) {
       result.converged = true;
       break;
     }

@@ -16,6 +16,6 @@ namespace edem {
 // it counts (and, judged at equilibrium, is judged); after a judgment that broke sections the
 // next state is approached under the set damping again, which the solve gives back at its end.
 SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double target_ratio, long stall = 0,
-                       double settle = 0.0);
+                       double settle = 0.0, double balance = 0.0);
 
 }  // namespace edem

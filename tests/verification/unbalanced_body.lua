@@ -9,6 +9,7 @@
 -- its weight down the slope less the friction, over its weight and its contacts' force
 -- W cos theta / cos phi; a block its friction holds (phi = 65 deg) settles, its share falling
 -- with the ratio. Settled first with phi = 89 deg, so that the contacts carry the block's weight.
+-- solve{ balance } asks each body's balance of a converged state as well.
 -- The seed cavern's right wall, held creeping by local damping at a ratio below 1e-5, shows the
 -- same (tests/bench/RESULTS.md, "Rock that local damping holds").
 local check = require "edem.check"
@@ -17,7 +18,7 @@ local g, theta = 9.81, 60
 
 -- The block's share at the end of a solve to `ratio` with friction `phi`, whether that solve
 -- converged, the block it names and how far the block slid in it.
-local function run_case(phi, ratio)
+local function run_case(phi, ratio, balance)
   model{ title = ("a block on a %g deg slope, phi = %g, on a base 3,600 times its area"):format(theta, phi) }
   block{ x = {-30, 30}, y = {-30, 0} }
   block{ x = {-0.5, 0.5}, y = {0, 0.5} }
@@ -32,7 +33,7 @@ local function run_case(phi, ratio)
   solve{ ratio = 1e-7, max_cycles = 50000 }
   joint_material{ "plane", kn = 1e10, ks = 1e10, friction = phi }
   local start = gp_near(0, 0.5).ux
-  local r = solve{ ratio = ratio, max_cycles = 50000 }
+  local r = solve{ ratio = ratio, max_cycles = 50000, balance = balance }
   return r, gp_near(0, 0.5).ux - start
 end
 
@@ -57,4 +58,15 @@ for _, case in ipairs{ { 1e-7, 1e-3 }, { 1e-9, 1e-4 } } do
                r.body_share <= most and 1 or 0, 1, 0, { absolute = true })
   print(("    its share %.3g, %d cycles"):format(r.body_share, r.cycles))
 end
+-- With solve{ balance = 0.01 } a state at the ratio counts only once no body is more than 1 % out
+-- of balance: the sliding block's solve does not converge (it slides until max_cycles), and the
+-- block its friction holds converges once it has settled, whatever the ratio said first.
+r, slid = run_case(31.2, 1e-5, 0.01)
+check.report("balance 0.01, phi = 31.2: not converged while it slides (1 = yes)",
+             (not r.converged and slid > 1e-2) and 1 or 0, 1, 0, { absolute = true })
+print(("    slid %.3g m in %d cycles, share %.3g"):format(slid, r.cycles, r.body_share))
+r = run_case(65, 1e-5, 0.01)
+check.report("balance 0.01, phi = 65: converged once settled, share at most 0.01 (1 = yes)",
+             (r.converged and r.cycles > 0 and r.body_share <= 0.01) and 1 or 0, 1, 0, { absolute = true })
+print(("    its share %.3g, %d cycles"):format(r.body_share, r.cycles))
 check.finish()
