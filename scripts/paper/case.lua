@@ -34,6 +34,8 @@
 --             its ratio, the rock moving on with no equilibrium near (solve{ stall }) [0: never]
 --   settle    a step's state at its ratio (1e-5) solved on to this one under adaptive damping
 --             before it is judged (solve{ settle }) [0: not]
+--   balance   a step's state counts only once no body is more out of balance than this share of
+--             the forces on it (solve{ balance }) [0: not asked]
 --   similar   deg: crackseed{ auto }'s grouping angle [45]
 --   min_angle deg: crackseed{ auto }'s sharpest corner of a cut with a joint [30; 0: every cut]
 --   origin_x, origin_y  m: a point every group's cuts pass through (a group none of them
@@ -79,7 +81,7 @@ local given = settings{
   case = 3, depth = 158, bolts = "none", bolt_at = "solved", set = "P", prepass = "jointed",
   judge = "equilibrium", release = 0, release_offset = 0, damping = "local", prepass_damping = "local",
   prepass_release = 3000,
-  edge = 1.5, far = 10, stages = 16, step_cycles = 40000, stall = 0, settle = 0, rock = "elastic",
+  edge = 1.5, far = 10, stages = 16, step_cycles = 40000, stall = 0, settle = 0, balance = 0, rock = "elastic",
   similar = 45, min_angle = 30, origin_x = "centroid", origin_y = "centroid",
   by_mode = false, muck = "loose", first = "left", mirror = false, judge_most = 0, judge_radius = 0,
   neighbours = "break",
@@ -109,6 +111,9 @@ if not (math.type(given.stall) == "integer" and given.stall >= 0) then
 end
 if not (type(given.settle) == "number" and given.settle >= 0 and given.settle < 1e-5) then
   error(("settle must be 0 or a ratio below 1e-5, got %s"):format(given.settle), 0)
+end
+if not (type(given.balance) == "number" and given.balance >= 0 and given.balance < 1) then
+  error(("balance must be in [0, 1), got %s"):format(given.balance), 0)
 end
 if not (math.type(given.prepass_release) == "integer" and given.prepass_release >= 1) then
   error(("prepass_release must be a whole number of cycles >= 1, got %s"):format(given.prepass_release), 0)
@@ -592,12 +597,12 @@ for i, s in ipairs(c.stages) do
   if BOLTS ~= "none" and BOLT_AT == "dug" then bolt_step(s) end
   -- The ratio is judged once the load is off: step_cycles from there.
   local ok, result = pcall(solve, { ratio = 1e-5, max_cycles = RELEASE + given.step_cycles, stall = given.stall,
-                                    settle = given.settle })
+                                    settle = given.settle, balance = given.balance })
   -- Judged at equilibrium, a step short of its ratio has not been judged: rock creeping on soft
   -- joints settles no further, so its state is judged at ten times the ratio (in rounds as any).
   if ok and not result.converged and JUDGE_AT == "equilibrium" then
     local again
-    ok, again = pcall(solve, { ratio = 1e-4, max_cycles = 40000, stall = given.stall })
+    ok, again = pcall(solve, { ratio = 1e-4, max_cycles = 40000, stall = given.stall, balance = given.balance })
     if ok then
       result.cycles, result.judgments = result.cycles + again.cycles, result.judgments + again.judgments
     else
