@@ -42,6 +42,8 @@ BodyBalance worst_body_balance(const Mechanics& m) {
     holding[root] += std::hypot(m.weight[2 * n], m.weight[2 * n + 1]) +
                      std::hypot(m.load[2 * n], m.load[2 * n + 1]);
   }
+  // After a crack split nodes the contacts still name the faces before it until they are found
+  // again (a solve stopped then): their indices are checked, not trusted.
   const auto in_range = [&](int node) { return node >= 0 && static_cast<size_t>(node) < nodes; };
   for (const Contact& c : m.contacts.list) {
     if (c.edge < 0 || static_cast<size_t>(c.edge) >= m.faces.edges.size()) continue;
