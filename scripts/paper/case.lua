@@ -20,8 +20,8 @@
 --             breaks) or cycles (every 10 cycles while the rock moves, the seed's way) [equilibrium]
 --   release   cycles over which a step's load comes off [0: 100 judged at equilibrium, else 20000]
 --   release_offset  cycles added to release [0]
---   damping   local (Itasca's, 0.8: UDEC's for static problems) or adaptive (viscous, 2 omega,
---             quicker, but a sliding block runs on barely damped) in the steps [local]
+--   damping   adaptive (viscous, 2 omega: rock with no equilibrium slides out and falls, as it does
+--             undamped) or local (Itasca's, 0.8: holds such rock creeping) in the steps [adaptive]
 --   prepass_damping  the same choice for the jointed prepass, kept apart so that where the
 --             potential cracks go does not change with the steps' damping [local]
 --   prepass_release  cycles over which each of the jointed prepass's steps is released: near its slow limit, where
@@ -79,7 +79,7 @@ local loose = require "edem.loose"
 
 local given = settings{
   case = 3, depth = 158, bolts = "none", bolt_at = "solved", set = "P", prepass = "jointed",
-  judge = "equilibrium", release = 0, release_offset = 0, damping = "local", prepass_damping = "local",
+  judge = "equilibrium", release = 0, release_offset = 0, damping = "adaptive", prepass_damping = "local",
   prepass_release = 3000,
   edge = 1.5, far = 10, stages = 16, step_cycles = 40000, stall = 0, settle = 0, balance = 0, rock = "elastic",
   similar = 45, min_angle = 30, origin_x = "centroid", origin_y = "centroid",
