@@ -11,7 +11,7 @@
 #        [--set KEY=VALUE]...
 # --keep: a run whose row.csv is in DIR already is taken as it is, not run again (a go resumed).
 # --set: a case.lua setting given to every run (e.g. prepass_damping=adaptive), as many as wanted.
-# And, judged at equilibrium under local damping released over 100 cycles (case.lua's defaults),
+# And, judged at equilibrium under local damping released over 100 cycles (case.lua's release),
 # with 1 and 2 m zones at the opening (1.5 m above), for the charts of speed against accuracy that
 # it draws at its end (tests/bench/judging_chart.lua: OUT/judging_cracks.png, OUT/judging_crown.png).
 # One thread a run and two runs at a time on two cores take about 50 minutes (tests/bench/RESULTS.md).
