@@ -20,6 +20,8 @@
 --   release     cycles over which a stage's load comes off [100]
 --   ratio       a stage is solved to this ratio [1e-5]
 --   max_cycles  cycles after the release before a stage is left short of its ratio [40000]
+--   stall       a stage's solve ends short of its ratio once it has not fallen a tenth below its
+--               lowest in this many cycles (solve{ stall }) [0: never]
 --   damping     "local" (0.8) or "adaptive": the stages' damping, set after the in-situ solve
 --               [the model's]
 --   muck        true: every 200 cycles, blocks loose at two checks in a row (loose_blocks{}) are
@@ -98,7 +100,7 @@ function yield_pass.run(t)
     local ok, r = pcall(function()
       local dug, why = pcall(excavate, { region = name, release = release })
       if not dug and not tostring(why):find("was excavated already", 1, true) then error(why, 0) end
-      return solve{ ratio = ratio, max_cycles = release + max_cycles }
+      return solve{ ratio = ratio, max_cycles = release + max_cycles, stall = t.stall or 0 }
     end)
     if not ok then
       result.failure = ("%s: %s"):format(name, (tostring(r):gsub("^.-cycle %d+: ", "")))

@@ -5,9 +5,9 @@
 --
 --   edem --threads 1 run tests/bench/yield_pass_paths.lua
 --
--- Settings: case, set, depth (edem.seed.region's), variants (damping:release[:ratio], separated
--- by commas; damping local, 0.8, or adaptive; release in cycles; ratio each stage is solved to,
--- 1e-5 if left out; the first is the reference), stages (how many of the 16 to dig), near (m: a
+-- Settings: case, set, depth (edem.seed.region's), variants (damping:release[:ratio[:stall]],
+-- separated by commas; damping local, 0.8, or adaptive; release in cycles; ratio each stage is
+-- solved to, 1e-5 if left out; stall, yield_pass's, 0 if left out; the first is the reference), stages (how many of the 16 to dig), near (m: a
 -- section counts as placed where the reference has one if their midpoints are this close),
 -- min_work (J/m^3: a zone counts as yielded, for the comparison and for the cracks, only if its
 -- plastic work reached this; 0: every zone that reached its strength).
@@ -19,9 +19,9 @@ local yield_pass = require "edem.yield_pass"
 
 local variants = {}
 for text in tostring(s.variants):gmatch("[^,]+") do
-  local damping, release, ratio = text:match("^(%a+):(%d+):?([%d.e+-]*)$")
+  local damping, release, ratio, stall = text:match("^(%a+):(%d+):?([%d.e+-]*):?(%d*)$")
   if not (damping == "local" or damping == "adaptive") then
-    error(("variants: each is damping:release[:ratio], damping local or adaptive, got %s")
+    error(("variants: each is damping:release[:ratio[:stall]], damping local or adaptive, got %s")
           :format(text), 0)
   end
   ratio = ratio ~= "" and tonumber(ratio) or 1e-5
@@ -29,7 +29,7 @@ for text in tostring(s.variants):gmatch("[^,]+") do
     error(("variants: the ratio must be in (0, 1), got %s"):format(text), 0)
   end
   variants[#variants + 1] = { name = text, damping = damping, release = math.tointeger(tonumber(release)),
-                              ratio = ratio }
+                              ratio = ratio, stall = stall ~= "" and math.tointeger(tonumber(stall)) or 0 }
 end
 if #variants == 0 then error("give variants, e.g. local:10000,adaptive:100", 0) end
 
@@ -48,7 +48,8 @@ end
 local function run(v)
   build()
   local clock = os.clock()
-  local pre = yield_pass.run{ stages = names, release = v.release, damping = v.damping, ratio = v.ratio }
+  local pre = yield_pass.run{ stages = names, release = v.release, damping = v.damping, ratio = v.ratio,
+                              stall = v.stall }
   local seconds = os.clock() - clock
   local cycles, short = 0, 0
   for _, st in ipairs(pre.stages) do
