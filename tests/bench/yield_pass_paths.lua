@@ -7,8 +7,9 @@
 --
 -- Settings: case, set, depth (edem.seed.region's), variants (damping:release[:ratio[:stall]],
 -- separated by commas; damping local, 0.8, or adaptive; release in cycles; ratio each stage is
--- solved to, 1e-5 if left out; stall, yield_pass's, 0 if left out; the first is the reference), stages (how many of the 16 to dig), near (m: a
--- section counts as placed where the reference has one if their midpoints are this close),
+-- solved to, 1e-5 if left out; stall, yield_pass's, 0 if left out; the first is the reference),
+-- stages (how many of the 16 to dig), near (m: a section counts as placed where the reference has
+-- one if their midpoints are this close),
 -- min_work (J/m^3: a zone counts as yielded, for the comparison and for the cracks, only if its
 -- plastic work reached this; 0: every zone that reached its strength).
 local s = settings{ case = 3, set = "P", depth = 158, stages = 16, near = 1.0, min_work = 0,
