@@ -154,8 +154,10 @@ struct LengthPush {
   const double t = std::clamp(t_line, 0.0, 1.0);
   double gap = px * nx + py * ny;  // from the edge's line
   // Past a bent end (no convex corner, no straight run) and the neighbour's end too: the vertex's
-  // distance.
-  if ((t_line < 0.0 && e.bent_a) || (t_line > 1.0 && e.bent_b)) [[unlikely]] {
+  // distance. Not for one of a corner's two contacts in a corner (Contact::split): each keeps to
+  // its own face's line, and at the vertex, where the corner sits, the vertex's direction is
+  // round-off's.
+  if (!c.split && ((t_line < 0.0 && e.bent_a) || (t_line > 1.0 && e.bent_b))) [[unlikely]] {
     const bool at_a = t_line < 0.0;
     const size_t vertex = at_a ? a : b;
     const size_t far = static_cast<size_t>(at_a ? edges[e.prev].a : edges[e.next].b);
@@ -215,7 +217,12 @@ struct LengthPush {
   const bool near_corner = gap < 0.0 && ((e.corner_a && t_line * len < c.limit) ||
                                          (e.corner_b && (1.0 - t_line) * len < c.limit));
   const bool glued_end = t_line < 0.5 ? e.glued_tip_a : e.glued_tip_b;
-  if ((past || near_corner) && !glued_end) from_neighbour(t_line < 0.5, 2.0 * fade, true);
+  if ((past || near_corner) && !glued_end && !c.split) from_neighbour(t_line < 0.5, 2.0 * fade, true);
+  // One of a corner's two contacts in a corner (Contact::split) past the end where its face meets
+  // the other's is over the other face: it is in by at most its depth there. By its own face's
+  // line, run on past that end, a gridpoint sliding along the other face would be in by its
+  // distance from the end times the sine of the turn between the faces.
+  if (c.split && (t_line < 0.0 || t_line > 1.0)) [[unlikely]] from_neighbour(t_line < 0.5, 0.0, false);
   // Behind the edge (over it or past its end) yet out of the line of the glued edge at a glued
   // tip (ContactEdge::glued_tip_a, b) is past the tip into the block glued there, whose own faces
   // carry the gridpoint. Here it is inside by at most its depth inside the glued edge's line, no
@@ -250,6 +257,7 @@ struct LengthPush {
   const double closure_before = c.closure, sn_before = c.sn, fs_before = c.fs;
   const bool open_before = c.state == ContactState::open, intact_before = c.intact;
   c.t = t;
+  const double share_before = c.share;
   c.share = share;
   c.us += dus;
   // Dilation pushes the faces apart: at a given gap the joint is that much more closed.
@@ -321,10 +329,18 @@ struct LengthPush {
   // Past the corner its springs' energy is share x what they would store over the whole length:
   // the fade's force is that energy's slope, a push along the edge away from the corner. Without
   // it the energy a face sliding off a corner under load stores would vanish as its share goes.
-  if (past && share > 0.0 && share == fade_share) [[unlikely]] {
-    const double push = stored_in(c, p) / share * fade_slope * (t_line < 0.0 ? -1.0 : 1.0);
+  // Only what they store beyond the state the contact was given (Contact::given), as with its
+  // length's push below: what the fade takes of the given part is the given stress's. Pushed on
+  // too, a contact with a length of micrometres (a gridpoint whose half-edge reaches a face's end
+  // just past a corner) would push with the whole prestress a metre of it holds, some 1e5 N/m,
+  // whatever its length, as its fade's span is its length.
+  const bool fading = past && share > 0.0 && share == fade_share;
+  if (fading) [[unlikely]] {
+    const double beyond = std::max(0.0, stored_in(c, p) / share - c.length * c.given);
+    const double push = beyond * fade_slope * (t_line < 0.0 ? -1.0 : 1.0);
     c.fx += push * sx;
     c.fy += push * sy;
+    lost.given += c.given * c.length * (share - share_before);
   }
   // Its energy is its length times what it stores per metre, at the closure and shear stress it
   // has (a tip pressed past its own length: up to the overlap where the tip's took over): the
@@ -352,9 +368,9 @@ struct LengthPush {
       const double switch_closure = c.closure0 + c.dilation + c.length / c.wedge;
       const double at_switch = switch_closure > 0.0 ? normal_energy(p, switch_closure) : 0.0;
       w = c.per_facing * share * std::max(0.0, at_switch - c.given);
-    } else if (past && share > 0.0 && share == fade_share) {
+    } else if (fading) {
       w += beyond / share * fade_by_length * c.per_facing;
-      given_by_length += c.given * c.length * fade_by_length;
+      // (Its share's change with the length is booked with the fade's above.)
     }
     lost.given += given_by_length * (c.length - own_length_before);
     const double* slopes[kContactRoles] = {facing_slope.p, facing_slope.a, facing_slope.b, facing_slope.far_a,

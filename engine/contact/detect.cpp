@@ -141,7 +141,37 @@ struct Found {
   Vec2 insitu_force;
   bool insitu = false;
   bool cracked = false;  // the traction is a fresh crack's (its section broke since the last)
+  int face = 0;           // Contact::face
+  bool split = false;     // one of a gridpoint's two contacts with the block (second_face)
 };
+
+// A contact of the gridpoint at `p` with `block` on its edge `edge_index`: the edge's normal,
+// where `p` projects on it and its gap (by the edge's own line: `split`, Contact::split).
+Found found_on(const Mechanics& m, Vec2 p, int block, int edge_index, bool split = false) {
+  const ContactBoundary& cb = m.faces;
+  const ContactEdge& edge = cb.edges[static_cast<size_t>(edge_index)];
+  Found f;
+  f.other = block;
+  f.edge = edge_index;
+  const Vec2 a = at(m, edge.a), b = at(m, edge.b);
+  f.normal = outward(a, b);
+  distance_to_segment(p, a, b, &f.t);
+  f.gap = dot(p - (a + f.t * (b - a)), f.normal);
+  // Past a bent end and past the neighbour's end too: as contact_force sees it.
+  const double along = dot(p - a, b - a);
+  const bool at_a = along < 0.0 && edge.bent_a, at_b = along > dot(b - a, b - a) && edge.bent_b;
+  f.split = split;
+  if (!split && (at_a || at_b)) {
+    const Vec2 vertex = at_a ? a : b, s = (1.0 / norm(b - a)) * (b - a);
+    const Vec2 far = at(m, at_a ? cb.edges[static_cast<size_t>(edge.prev)].a : cb.edges[static_cast<size_t>(edge.next)].b);
+    PastTheEnd end;
+    if (past_the_end(p.x - vertex.x, p.y - vertex.y, far.x - vertex.x, far.y - vertex.y, s.x, s.y, at_a, end)) {
+      f.normal = {end.nx, end.ny};
+      f.gap = end.gap;
+    }
+  }
+  return f;
+}
 
 // The nearest touchable edge of `block` within `search` of node k's gridpoint, or nothing: among
 // the edges about as near as the nearest (within a tenth of the reach), the one that EdgeChoice
@@ -182,27 +212,7 @@ std::optional<Found> nearest_edge(const Mechanics& m, int node, Vec2 p, Vec2 own
   }
   const int best_edge = choice.chosen();
   if (best_edge < 0) return std::nullopt;
-  const ContactEdge& edge = cb.edges[static_cast<size_t>(best_edge)];
-  Found f;
-  f.other = block;
-  f.edge = best_edge;
-  const Vec2 a = at(m, edge.a), b = at(m, edge.b);
-  f.normal = outward(a, b);
-  distance_to_segment(p, a, b, &f.t);
-  f.gap = dot(p - (a + f.t * (b - a)), f.normal);
-  // Past a bent end and past the neighbour's end too: as contact_force sees it.
-  const double along = dot(p - a, b - a);
-  const bool at_a = along < 0.0 && edge.bent_a, at_b = along > dot(b - a, b - a) && edge.bent_b;
-  if (at_a || at_b) {
-    const Vec2 vertex = at_a ? a : b, s = (1.0 / norm(b - a)) * (b - a);
-    const Vec2 far = at(m, at_a ? cb.edges[static_cast<size_t>(edge.prev)].a : cb.edges[static_cast<size_t>(edge.next)].b);
-    PastTheEnd end;
-    if (past_the_end(p.x - vertex.x, p.y - vertex.y, far.x - vertex.x, far.y - vertex.y, s.x, s.y, at_a, end)) {
-      f.normal = {end.nx, end.ny};
-      f.gap = end.gap;
-    }
-  }
-  return f;
+  return found_on(m, p, block, best_edge);
 }
 
 std::optional<Stress> insitu_here(const Mechanics& m, Vec2 point) {
@@ -513,25 +523,104 @@ void half_edge_parts(const Mechanics& m, Vec2 p, Vec2 far_end, Vec2 n_e, double 
     for (double& x : part) x *= half / total;
 }
 
+// A half-edge facing a face within 20 degrees lies along it [-].
+const double kAlongOneFace = std::cos(20.0 * M_PI / 180.0);
+// Two faces of a block meet at an angle where their directions differ by more than a degree (the
+// sine of it) [-]. Less, the edges of one face whose gridpoints were snapped or cut a hair off its
+// line (a potential crack's sections) would each carry half-edges of their own, and the faces'
+// contacts along them would lose what a face's contacts share as the face slides (the lengths
+// that follow their facing length).
+const double kBent = std::sin(M_PI / 180.0);
+// A gridpoint within this share of its reach of where two faces of another block meet is at
+// their corner (second_face) [-]. Further off it lies along one of them: its half-edge reaching
+// past their corner would have its contact with the other face pressed by that face's line run
+// on past the corner, and a face bent by a few degrees would be offered to the gridpoints beside
+// the bend.
+constexpr double kAtTheVertex = 0.1;
+
+// The edge beside the edge `to` found for node k, at the end of `to` where node k is
+// (kAtTheVertex), that node k's half-edges lie along too, or -1: where a corner of one block sits
+// in the corner of the other (a convex corner in the concave corner of a block, or of blocks
+// glued together), or where the other's face bends at the gridpoint, each of the gridpoint's
+// half-edges runs along its own face of the other block. One contact, with one face's normal,
+// would carry the other half-edge's load only as far as its normal faces that one's, and in its
+// direction: at a corner of 110 degrees a third of it, and in a stress field that is in
+// equilibrium the gridpoint would be pushed by the rest (1.3e5 N/m in the seed's cavern model as
+// built; 2e4 N/m where a face bends by 3 degrees). A second contact carries it on its own face.
+int second_face(const Mechanics& m, size_t k, const Found& to) {
+  const ContactBoundary& cb = m.faces;
+  const int node = cb.nodes[k];
+  const Vec2 p = at(m, node);
+  const ContactEdge& target = cb.edges[static_cast<size_t>(to.edge)];
+  const auto normal_of = [&](const ContactEdge& e) { return outward(at(m, e.a), at(m, e.b)); };
+  // Whether one of the gridpoint's half-edges faces `face` squarely and runs along it, away from
+  // its end nearer the gridpoint (not along its line run on past that end: at a joint crossing
+  // the block diagonally across has its faces' lines there, not its faces).
+  const auto lies_along = [&](const ContactEdge& face) {
+    const Vec2 a = at(m, face.a), b = at(m, face.b), n_face = outward(a, b);
+    const Vec2 onward = norm(a - p) < norm(b - p) ? b - a : a - b;
+    for (int i = cb.edge_first[k]; i < cb.edge_first[k + 1]; ++i) {
+      const ContactEdge& e = cb.edges[static_cast<size_t>(cb.node_edges[static_cast<size_t>(i)])];
+      if (!m.block_live[static_cast<size_t>(e.block)]) continue;
+      const Vec2 far_end = at(m, e.a == node ? e.b : e.a);
+      const Vec2 n_e = e.a == node ? outward(p, far_end) : outward(far_end, p);
+      if (-dot(n_e, n_face) > kAlongOneFace && dot(far_end - p, onward) > 0.0) return true;
+    }
+    return false;
+  };
+  if (!lies_along(target)) return -1;
+  const Vec2 n_to = normal_of(target);
+  const double near = kAtTheVertex * cb.reach[k];
+  for (const int beside : {target.prev, target.next}) {
+    const ContactEdge& b = cb.edges[static_cast<size_t>(beside)];
+    if (!b.touchable || b.a == node || b.b == node) continue;
+    const Vec2 w = at(m, beside == target.prev ? target.a : target.b);  // where the two faces meet
+    if (!(norm(p - w) < near)) continue;
+    if (std::fabs(cross(normal_of(b), n_to)) > kBent && lies_along(b)) return beside;
+  }
+  return -1;
+}
+
 // Gives the halves of node k's adjacent edges to the blocks found (half_edge_parts): their
 // lengths, and where a stress acts on them (the in-situ field with with_insitu, or a section that
-// broke since the last detection) its traction.
+// broke since the last detection) its traction. A block's second face (second_face) is a contact
+// of its own, appended to `found`, and takes the half-edges that face it more squarely than the
+// first.
 void give_half_edges(const Mechanics& m, size_t k, double search, bool with_insitu, std::vector<Found>& found) {
   const bool with_traction = with_insitu || m.fresh_cracks;
   const ContactBoundary& cb = m.faces;
   const int node = cb.nodes[k];
   const Vec2 p = at(m, node);
+  // found[second[j]]: the second contact with found[j]'s block, or 0 for none.
+  const size_t firsts = found.size();
+  std::vector<size_t> second(firsts, 0);
+  for (size_t j = 0; j < firsts; ++j) {
+    const int edge = second_face(m, k, found[j]);
+    if (edge < 0) continue;
+    second[j] = found.size();
+    found[j] = found_on(m, p, found[j].other, found[j].edge, true);
+    found.push_back(found_on(m, p, found[j].other, edge, true));
+    found.back().face = 1;
+  }
   std::vector<double> distance, parts;
+  std::vector<Found> offered(firsts);
+  std::vector<size_t> to_face(firsts);
   for (int i = cb.edge_first[k]; i < cb.edge_first[k + 1]; ++i) {
     const int own = cb.node_edges[static_cast<size_t>(i)];
     const ContactEdge& e = cb.edges[static_cast<size_t>(own)];
     if (!m.block_live[static_cast<size_t>(e.block)]) continue;
     const Vec2 far_end = at(m, e.a == node ? e.b : e.a);
     const Vec2 n_e = e.a == node ? outward(p, far_end) : outward(far_end, p);
-    half_edge_parts(m, p, far_end, n_e, cb.reach[k], search, found, distance, parts);
-    for (size_t j = 0; j < found.size(); ++j) {
+    // Of a block's two faces, the half-edge is offered the one it faces the more squarely.
+    for (size_t j = 0; j < firsts; ++j) {
+      const bool squarer = second[j] > 0 && -dot(n_e, found[second[j]].normal) > -dot(n_e, found[j].normal);
+      to_face[j] = squarer ? second[j] : j;
+      offered[j] = found[to_face[j]];
+    }
+    half_edge_parts(m, p, far_end, n_e, cb.reach[k], search, offered, distance, parts);
+    for (size_t j = 0; j < firsts; ++j) {
       if (!(parts[j] > 0.0)) continue;
-      Found& to = found[j];
+      Found& to = found[to_face[j]];
       // This side's share, half; of the half edge, the part that lies over the other block, as
       // far as it faces it.
       const double facing_part = 0.5 * parts[j] * std::max(0.0, -dot(n_e, to.normal));
@@ -549,6 +638,33 @@ void give_half_edges(const Mechanics& m, size_t k, double search, bool with_insi
       }
     }
   }
+  // A second face that got no length is none; one that got it all is the gridpoint's only
+  // contact with the block. Of two, the first is on the edge that comes first: which one the
+  // search found first may change from one detection to the next, and each contact is found again
+  // (keeping its state) by its gridpoint, block and face.
+  std::vector<char> drop(found.size(), 0);
+  for (size_t j = 0; j < firsts; ++j) {
+    if (second[j] == 0) continue;
+    Found& other_face = found[second[j]];
+    if (found[j].length > 0.0 && other_face.length > 0.0) {
+      if (other_face.edge < found[j].edge) {
+        std::swap(found[j], other_face);
+        std::swap(found[j].face, other_face.face);
+      }
+      continue;
+    }
+    if (!(found[j].length > 0.0) && other_face.length > 0.0) std::swap(found[j], other_face);
+    drop[second[j]] = 1;
+    // One contact after all: its gap and normal as any lone contact's, its length as given.
+    Found lone = found_on(m, p, found[j].other, found[j].edge);
+    lone.length = found[j].length;
+    lone.insitu_force = found[j].insitu_force;
+    lone.insitu = found[j].insitu;
+    lone.cracked = found[j].cracked;
+    found[j] = lone;
+  }
+  for (size_t j = found.size(); j-- > firsts;)
+    if (drop[j]) found.erase(found.begin() + static_cast<std::ptrdiff_t>(j));
 }
 
 // Contacts of node position k: the nearest edge of each block in reach, and their lengths.
@@ -595,6 +711,7 @@ std::vector<Found> contacts_of(const Mechanics& m, const BlockGrid& grid, size_t
   if (found.empty()) return found;
   give_half_edges(m, k, search, with_insitu, found);
   for (Found& f : found) {
+    if (f.split) continue;  // a corner in a corner: along the faces, no tip
     f.wedge = tip_wedge(m, k, p, own_normal, f, reach);
     if (f.wedge > 0.0) mark_leading_past(m, k, p, f);
     if (!(f.length > 1e-12 * reach) && !(f.wedge > 0.0)) keep_pressed(m.contacts, node, f);
@@ -815,10 +932,13 @@ void book_prestress(Mechanics& m, const ContactEnergy& now, const ContactEnergy&
   book_at_last_point(m, now, had);
 }
 
-// What a contact stores a metre of the length that carries it [J/m^2].
+// What a contact stores a metre of the length that carries it [J/m^2]; with no length yet (a tip
+// at a joint crossing, pressed in by round-off), what a metre of it would store at its closure.
+// Given nothing there, the prestress its closure holds would be pushed on as its length grows.
 double stored_per_metre(const Contact& c, const JointParams& p) {
   const double length = last_carrying_length(c);
-  return length > 0.0 ? stored_in(c, p) / length : 0.0;
+  if (length > 0.0) return stored_in(c, p) / length;
+  return c.closure > 0.0 ? normal_energy(p, c.closure) : 0.0;
 }
 
 // Books what a contact's energy changed by, from `had` to `now`, as taken away with rock dug out
@@ -975,7 +1095,8 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
       }
       continue;
     }
-    std::sort(found[k].begin(), found[k].end(), [](const Found& a, const Found& b) { return a.other < b.other; });
+    std::sort(found[k].begin(), found[k].end(),
+              [](const Found& a, const Found& b) { return a.other != b.other ? a.other < b.other : a.face < b.face; });
     for (const Found& f : found[k]) {
       const double prestress_before = m.energy.prestress;
       Contact c;
@@ -988,8 +1109,12 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
       c.leads_past_a = f.leads_past_a;
       c.leads_past_b = f.leads_past_b;
       c.t = f.t;
+      c.face = f.face;
+      c.split = f.split;
       c.limit = cb.reach[k];
-      follow_facing(m, k, c);
+      // Split over two faces, each carries its own half-edge's length: the facing length of both
+      // half-edges along one face's line is not its own.
+      if (!f.split) follow_facing(m, k, c);
       const ContactEdge& edge = cb.edges[static_cast<size_t>(f.edge)];
       c.material = edge.material;
       if (c.material < 0)  // the gridpoint's own side may have one
@@ -1004,14 +1129,16 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
       }
       const JointParams& p = m.joint_params[static_cast<size_t>(c.material)];
       const auto old = std::lower_bound(set.list.begin(), set.list.end(), c, [](const Contact& x, const Contact& y) {
-        return x.node != y.node ? x.node < y.node : x.other < y.other;
+        if (x.node != y.node) return x.node < y.node;
+        return x.other != y.other ? x.other < y.other : x.face < y.face;
       });
       // A contact found again keeps its state while its edge lies along the same face; found on
       // another face of the block (a side past a corner), it starts anew as any contact made
       // there: its closure, stress and length were the old face's (its in-situ closure,
       // decimetres under soft joints, pressed on a side it never touched), and carried over
       // they would make energy at the switch.
-      const bool found_again = old != set.list.end() && old->node == c.node && old->other == c.other;
+      const bool found_again =
+          old != set.list.end() && old->node == c.node && old->other == c.other && old->face == c.face;
       const bool kept = found_again && same_face(m, old->edge, c.edge);
       // Already pressed in deeper than a contact can get between two detections.
       const bool pressed_late = !first && f.gap < -kLateDepth * cb.reach[k];

@@ -130,13 +130,17 @@ template <class Ar> void fields(Ar& ar, Contact& c) {
   ar("far_b", c.far_b);
   ar("per_facing", c.per_facing);
   ar("given", c.given);
+  ar("face", c.face);
+  ar("split", c.split);
 }
 // Older schema-1 files may lack these, read then at their defaults: a tip's own length (such
 // files have no tips), the leads_past flags (their tips fade past any corner), a softening
-// bond's opening (they have no softening bonds) and the facing a length follows (theirs hold
-// the length found until the next detection).
+// bond's opening (they have no softening bonds), the facing a length follows (theirs hold
+// the length found until the next detection) and a gridpoint's second contact with a block (they
+// have none).
 std::vector<const char*> later_members(const Contact*) {
-  return {"wedge", "leads_past_a", "leads_past_b", "opened", "far_a", "far_b", "per_facing", "given"};
+  return {"wedge", "leads_past_a", "leads_past_b", "opened", "far_a", "far_b", "per_facing", "given", "face",
+          "split"};
 }
 template <class Ar> void fields(Ar& ar, ContactSet& s) {
   ar("list", s.list); ar("gather_first", s.gather_first); ar("gather", s.gather); ar("rows", s.rows);

@@ -111,6 +111,10 @@ struct Contact {
   int other = -1;      // the block of the edge
   int edge = -1;       // index into ContactBoundary::edges
   int material = -1;   // joint material
+  // 0; 1 for a gridpoint's second contact with the same block, on another face of it: a corner
+  // in a corner, each of the gridpoint's half-edges along its own face (detect.cpp, second_face).
+  int face = 0;
+  bool split = false;  // one of such two: it keeps to its own face's line (contact_force.hpp)
   double length = 0.0; // [m]
   // The ends of the gridpoint's own edges, before it (far_a) and after it (far_b) along its loop,
   // and its length per unit facing length (facing_length.hpp), which it follows between
@@ -168,7 +172,7 @@ inline double half_step_work(const ContactBook& book, const double* v, double dt
 }
 
 struct ContactSet {
-  std::vector<Contact> list;  // ordered by gridpoint, then other block
+  std::vector<Contact> list;  // ordered by gridpoint, then other block, then face
   // Per contact, in list order, while contacts book their own energy (EnergyLedger::by_contact,
   // ContactBook); else empty.
   std::vector<ContactBook> books;
