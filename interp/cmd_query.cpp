@@ -278,6 +278,9 @@ void push_contact(lua_State* L, const Model& model, size_t index) {
   set_field(L, "material", c.material);
   set_field(L, "block", c.block + 1);
   set_field(L, "other", c.other + 1);
+  lua_pushboolean(L, c.corner);
+  lua_setfield(L, -2, "corner");
+  set_field(L, "face", c.face + 1);
   if (std::isfinite(c.energy_made)) set_field(L, "energy_made", c.energy_made);
 }
 
@@ -634,7 +637,10 @@ const Command& contacts_command() {
           "a given prestress's [m]), us (shear displacement since it "
           "formed [m]), slip (plastic shear, accumulated [m]), state (\"bonded\", "
           "\"elastic\", \"slip\", \"open\"), kind (\"joint\", \"crack\"), material, "
-          "block and other (the gridpoint's and the edge's block ids); with energy{ by_contact = "
+          "block and other (the gridpoint's and the edge's block ids), corner (true for each of the "
+          "two contacts a gridpoint in a concave corner of the other block has, one on each face) and "
+          "face (1, or 2 for the second of those two: a contact is the one of its gridpoint, other "
+          "and face); with energy{ by_contact = "
           "true }, energy_made (the energy it made since the balance started: its stored energy's "
           "change and what it dissipated, less the work its nodes did on it, each cycle and at "
           "each detection [J/m]; a contact dropped takes its own with it)",

@@ -311,6 +311,10 @@ struct ContactView {
   std::string kind;       // "joint", "crack"
   std::string material;
   int block = -1, other = -1;  // the gridpoint's block and the edge's block, 0-based
+  // One of a corner's two contacts with the other block, each on its own face (a gridpoint in a
+  // concave corner of that block), and which: face 0 or 1 (0 for a contact on its own).
+  bool corner = false;
+  int face = 0;
   // The energy it made since the balance started, while contacts book their own (energy{
   // by_contact = true }) [J/m]; NaN otherwise.
   double energy_made = std::numeric_limits<double>::quiet_NaN();

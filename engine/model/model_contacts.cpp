@@ -137,6 +137,8 @@ ContactView contact_view(const Mechanics& m, const ContactSet& set, int id) {
   view.material = m.joint_materials[static_cast<size_t>(c.material)].name;
   view.block = c.block;
   view.other = c.other;
+  view.corner = c.split;
+  view.face = c.face;
   if (m.energy.by_contact && id < static_cast<int>(set.books.size())) {
     // With the work of its last force over the half step the nodes have moved since, as the
     // balance has booked it.

@@ -16,8 +16,10 @@
 -- the apex is one for both, with the same two faces to carry.
 -- Checks, for the wedge and the blunt corner, one block or two glued around them: the unbalanced
 -- force ratio after one cycle (round-off, at most 1e-12); the normal and shear stress of every
--- contact at the apex against n . sigma . n and s . sigma . n (1e-9); the largest displacement
--- after 1,000 cycles (at most a nanometre).
+-- contact at the apex against n . sigma . n and s . sigma . n (1e-9); the corner pairs there, as
+-- contacts() shows them (corner, face 1 and 2): the wedge and the rest each have one at their
+-- apex gridpoint, on the other's two faces, but a wedge between two glued blocks, which has one
+-- face of each; the largest displacement after 1,000 cycles (at most a nanometre).
 local check = require "edem.check"
 
 local SXX, SYY, SXY = -3e6, -5e6, -1e6
@@ -42,9 +44,13 @@ local function corner(case)
   for _, side in ipairs{ "left", "right", "top", "bottom" } do boundary{ side = side, stress = {SXX, SYY, SXY} } end
   cycle(1)
   check.report(case.what .. ": unbalanced force ratio after one cycle", info().ratio, 0, 1e-12, { absolute = true })
-  local worst_n, worst_s, count = 0, 0, 0
+  local worst_n, worst_s, count, paired = 0, 0, 0, {}
   for c in contacts() do
     if math.abs(c.x) < 1e-9 and math.abs(c.y) < 1e-9 then
+      if c.corner then
+        local key = c.block .. " " .. c.other
+        paired[key] = (paired[key] or 0) + c.face  -- a pair's faces: 1 + 2
+      end
       local n = c.normal
       local tx, ty = SXX * n.x + SXY * n.y, SXY * n.x + SYY * n.y
       local sn, tau = tx * n.x + ty * n.y, -tx * n.y + ty * n.x
@@ -54,6 +60,13 @@ local function corner(case)
     end
   end
   check.report(case.what .. ": contacts at the apex", count, 4, 0, { absolute = true })
+  local pairs_found, unpaired = 0, 0
+  for _, faces in pairs(paired) do
+    if faces == 3 then pairs_found = pairs_found + 1 else unpaired = unpaired + 1 end
+  end
+  check.report(case.what .. ": corner pairs at the apex (faces 1 and 2)", pairs_found, case.pairs, 0,
+               { absolute = true })
+  check.report(case.what .. ": corner contacts at the apex without their pair", unpaired, 0, 0, { absolute = true })
   check.report(case.what .. ": their normal stress against n.sigma.n, worst [-]", worst_n, 0, 1e-9, { absolute = true })
   check.report(case.what .. ": their shear stress against s.sigma.n, worst [-]", worst_s, 0, 1e-9, { absolute = true })
   cycle(1000)
@@ -63,8 +76,8 @@ local function corner(case)
 end
 
 local blunt = {-4 / math.tan(math.rad(55)), 4}  -- on the top and bottom sides
-corner{ what = "wedge of 53 deg in one block", to = {-4, 2} }
-corner{ what = "wedge of 53 deg in two glued blocks", to = {-4, 2}, glued = true }
-corner{ what = "corner of 110 deg in one block", to = blunt }
-corner{ what = "corner of 110 deg in two glued blocks", to = blunt, glued = true }
+corner{ what = "wedge of 53 deg in one block", to = {-4, 2}, pairs = 2 }
+corner{ what = "wedge of 53 deg in two glued blocks", to = {-4, 2}, glued = true, pairs = 1 }
+corner{ what = "corner of 110 deg in one block", to = blunt, pairs = 2 }
+corner{ what = "corner of 110 deg in two glued blocks", to = blunt, glued = true, pairs = 1 }
 check.finish()
