@@ -576,11 +576,9 @@ int second_face(const Mechanics& m, size_t k, const Found& to) {
   // rocks about the limit, the second contact's energy would go and come back (in the reduced
   // seed study's Case 3 the balance closed within 2.3 % with no more than kAtTheVertex, 1.4 %
   // with this).
-  // (The list is ordered by face after gridpoint and block: a pair's second follows its first.)
-  const std::vector<Contact>& list = m.contacts.list;
+  // (Only the two of a pair are split: the first of them says there is one.)
   const Contact* first = held_contact(m.contacts, node, to.other);
-  const bool paired = first && first + 1 != list.data() + list.size() && first[1].node == node &&
-                      first[1].other == to.other;
+  const bool paired = first && first->split;
   const double near = (paired ? kPairKept : kAtTheVertex) * cb.reach[k];
   for (const int beside : {target.prev, target.next}) {
     const ContactEdge& b = cb.edges[static_cast<size_t>(beside)];
