@@ -144,8 +144,12 @@ struct LengthPush {
   if (c.per_facing > 0.0) {
     const size_t fa = static_cast<size_t>(c.far_a), fb = static_cast<size_t>(c.far_b);
     const FacingNodes nodes{{x(2 * n), x(2 * n + 1)}, {x(2 * fa), x(2 * fa + 1)}, {x(2 * fb), x(2 * fb + 1)},
-                            {xa, ya},                 {x(2 * b), x(2 * b + 1)},   e.corner_a,
-                            e.corner_b};
+                            {xa, ya},
+                            {x(2 * b), x(2 * b + 1)},
+                            e.corner_a || c.pair_at_a,
+                            e.corner_b || c.pair_at_b,
+                            c.half_a,
+                            c.half_b};
     facing = facing_length(nodes, pushing ? &facing_slope : nullptr);
     c.length = c.per_facing * facing;
   }

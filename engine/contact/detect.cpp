@@ -143,6 +143,8 @@ struct Found {
   bool cracked = false;  // the traction is a fresh crack's (its section broke since the last)
   int face = 0;           // Contact::face
   bool split = false;     // one of a gridpoint's two contacts with the block (second_face)
+  bool half_a = false, half_b = false;  // given the half-edge before (after) the gridpoint
+  bool pair_at_a = false, pair_at_b = false;  // Contact::pair_at_a, pair_at_b
 };
 
 // A contact of the gridpoint at `p` with `block` on its edge `edge_index`: the edge's normal,
@@ -224,10 +226,12 @@ std::optional<Stress> insitu_here(const Mechanics& m, Vec2 point) {
 // its loop, measured along them (their projections, clipped to each edge's ends) [m]. The walk
 // goes on in each direction while the segment still reaches past the end of the edge it is on:
 // a long half edge (coarse zoning) can lie over many short ones of the other block. Each edge
-// beyond takes only the piece of the segment past that end: at a corner of the block the segment
-// reaches just past, the whole segment projected on the side edge would count the depth of a
-// gridpoint sunk into the face as length there, and that length would come and go as the
-// segment's end rocks about the corner.
+// beyond takes only the piece of the segment past that end, and the walk stops at a convex corner
+// (ContactEdge::corner_a, corner_b): the face ends there, and past it the segment is beside the
+// block. Projected on the side beyond, the piece past the corner would count as length there,
+// which the length a contact follows between detections (facing_length.hpp, clipped at the
+// corner) does not: a gridpoint sliding past the corner would have its length, and its force,
+// jump at every detection.
 double covered_length(const Mechanics& m, Vec2 p, Vec2 q, int edge) {
   const ContactBoundary& cb = m.faces;
   // Of piece p-q: the part over edge e [m] and, past its end a (backward) or b (forward), the
@@ -263,7 +267,9 @@ double covered_length(const Mechanics& m, Vec2 p, Vec2 q, int edge) {
     Over here = over(edge, p, q, forward);
     int e = edge;
     while (here.beyond && covered < limit) {
-      e = forward ? cb.edges[static_cast<size_t>(e)].next : cb.edges[static_cast<size_t>(e)].prev;
+      const ContactEdge& on = cb.edges[static_cast<size_t>(e)];
+      if (forward ? on.corner_b : on.corner_a) break;  // the face ends at a convex corner
+      e = forward ? on.next : on.prev;
       if (e == edge) break;
       here = over(e, here.from, here.to, forward);
       if (!(here.length > 0.0)) break;
@@ -607,9 +613,14 @@ void give_half_edges(const Mechanics& m, size_t k, double search, bool with_insi
     const int edge = second_face(m, k, found[j]);
     if (edge < 0) continue;
     second[j] = found.size();
+    const bool before = edge == cb.edges[static_cast<size_t>(found[j].edge)].prev;
     found[j] = found_on(m, p, found[j].other, found[j].edge, true);
     found.push_back(found_on(m, p, found[j].other, edge, true));
     found.back().face = 1;
+    // Where the two faces meet: end a of the found edge and end b of the one before it, or the
+    // other way round.
+    (before ? found[j].pair_at_a : found[j].pair_at_b) = true;
+    (before ? found.back().pair_at_b : found.back().pair_at_a) = true;
   }
   std::vector<double> distance, parts;
   std::vector<Found> offered(firsts);
@@ -634,6 +645,7 @@ void give_half_edges(const Mechanics& m, size_t k, double search, bool with_insi
       // far as it faces it.
       const double facing_part = 0.5 * parts[j] * std::max(0.0, -dot(n_e, to.normal));
       to.length += facing_part;
+      (e.b == node ? to.half_a : to.half_b) = true;
       if (!with_traction) continue;
       if (const auto s = traction_source(m, own, p + (1.0 / 3.0) * (far_end - p), with_insitu)) {
         // This side's share of the edge's consistent nodal force, half * sigma . n, for the
@@ -998,8 +1010,11 @@ void cap_at_peak(Contact& c, const JointParams& p, double length) {
 // length now. Only a gridpoint with just two own edges, one on each side of it along its loop,
 // and a length its half-edges gave (up to kMostPerFacing times the facing length); one where glued
 // blocks meet, or one keeping its length while its edges turn away (keep_pressed), keeps the length
-// found.
-void follow_facing(const Mechanics& m, size_t k, Contact& c) {
+// found. One of a corner's two contacts in a corner (Contact::split) follows the half-edge it was
+// given, along its own face and up to where that face meets the pair's other: held as found, its
+// length would jump at the next detection (as a detection measures it, give_half_edges) once its
+// gridpoint had moved along the face, and its force with it.
+void follow_facing(const Mechanics& m, size_t k, const Found& f, Contact& c) {
   const ContactBoundary& cb = m.faces;
   int before = -1, after = -1, own = 0;
   for (int i = cb.edge_first[k]; i < cb.edge_first[k + 1]; ++i) {
@@ -1012,10 +1027,18 @@ void follow_facing(const Mechanics& m, size_t k, Contact& c) {
   if (own != 2 || before < 0 || after < 0) return;
   c.far_a = before;
   c.far_b = after;
+  if (c.split) {
+    if (f.half_a == f.half_b) return;  // both, or neither: not one half-edge's length
+    c.half_a = f.half_a;
+    c.half_b = f.half_b;
+    c.pair_at_a = f.pair_at_a;
+    c.pair_at_b = f.pair_at_b;
+  }
   if (!(c.length > 0.0)) return;
   const ContactEdge& edge = cb.edges[static_cast<size_t>(c.edge)];
   const Vec2 p = at(m, c.node), fa = at(m, before), fb = at(m, after), a = at(m, edge.a), b = at(m, edge.b);
-  const FacingNodes nodes{{p.x, p.y}, {fa.x, fa.y}, {fb.x, fb.y}, {a.x, a.y}, {b.x, b.y}, edge.corner_a, edge.corner_b};
+  const FacingNodes nodes{{p.x, p.y}, {fa.x, fa.y}, {fb.x, fb.y},  {a.x, a.y}, {b.x, b.y},
+                          edge.corner_a || c.pair_at_a, edge.corner_b || c.pair_at_b, c.half_a, c.half_b};
   const double facing = facing_length(nodes, nullptr);
   if (facing > 0.0 && c.length <= kMostPerFacing * facing) c.per_facing = c.length / facing;
 }
@@ -1121,9 +1144,7 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
       c.face = f.face;
       c.split = f.split;
       c.limit = cb.reach[k];
-      // Split over two faces, each carries its own half-edge's length: the facing length of both
-      // half-edges along one face's line is not its own.
-      if (!f.split) follow_facing(m, k, c);
+      follow_facing(m, k, f, c);
       const ContactEdge& edge = cb.edges[static_cast<size_t>(f.edge)];
       c.material = edge.material;
       if (c.material < 0)  // the gridpoint's own side may have one

@@ -1,12 +1,14 @@
 // The length a gridpoint's own edges give its contact with an edge of another block, as a function
-// of where the nodes are: of each half-edge that faces the edge, its projection on the edge's line
+// of where the nodes are: of each half-edge that faces the edge (one of a corner's two contacts
+// in a corner counts only the half-edge along its own face), its projection on the edge's line
 // (clipped at an end that is a convex corner of the edge's block: past it the half-edge is beside
-// the block) times how squarely it faces the edge, and half of that, the other half being the
-// other side's (contacts.hpp). It is what a detection finds over a single straight face
-// (detect.cpp, give_half_edges; past a blunt corner that also counts the half-edge's projection on
-// the next face), and it changes at first order both as the blocks turn against each other (at an
-// oblique corner) and as a gridpoint slides past a corner; its slope with respect to the nodes lets
-// a contact's force pay for what that change does to its energy (contact_force.hpp).
+// the block; for one of such two also where its face meets the other's) times how squarely it
+// faces the edge, and half of that, the other half being the other side's (contacts.hpp). It is
+// what a detection finds over a face (detect.cpp, give_half_edges, which also shares a half-edge
+// between the faces of two blocks), and it changes at first order both as the blocks turn against
+// each other (at an oblique corner) and as a gridpoint slides past a corner; its slope with
+// respect to the nodes lets a contact's force pay for what that change does to its energy
+// (contact_force.hpp).
 #pragma once
 
 #include <cmath>
@@ -14,10 +16,12 @@
 namespace edem {
 
 // Where the nodes are [m]: the gridpoint, the far ends of its edges before and after it along its
-// loop, and the edge's ends a and b; whether the projection stops at a (b).
+// loop, and the edge's ends a and b; whether the projection stops at a (b); whether the half-edge
+// towards far_a (far_b) counts.
 struct FacingNodes {
   double p[2], far_a[2], far_b[2], a[2], b[2];
   bool clip_a = false, clip_b = false;
+  bool count_a = true, count_b = true;
 };
 
 // The slope of the facing length with respect to each node's position [-].
@@ -32,6 +36,7 @@ inline double facing_length(const FacingNodes& g, FacingSlope* slope) {
   const double sx = ex / len, sy = ey / len;
   double total = 0.0, by_s[2] = {0.0, 0.0};
   for (int i = 0; i < 2; ++i) {
+    if (!(i == 0 ? g.count_a : g.count_b)) continue;
     const double* f = i == 0 ? g.far_a : g.far_b;
     const double sign = i == 0 ? 1.0 : -1.0;  // the edge in its loop's direction: sign (p - f)
     const double dx = sign * (g.p[0] - f[0]), dy = sign * (g.p[1] - f[1]);

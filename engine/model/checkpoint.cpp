@@ -132,15 +132,19 @@ template <class Ar> void fields(Ar& ar, Contact& c) {
   ar("given", c.given);
   ar("face", c.face);
   ar("split", c.split);
+  ar("half_a", c.half_a);
+  ar("half_b", c.half_b);
+  ar("pair_at_a", c.pair_at_a);
+  ar("pair_at_b", c.pair_at_b);
 }
 // Older schema-1 files may lack these, read then at their defaults: a tip's own length (such
 // files have no tips), the leads_past flags (their tips fade past any corner), a softening
 // bond's opening (they have no softening bonds), the facing a length follows (theirs hold
 // the length found until the next detection) and a gridpoint's second contact with a block (they
-// have none).
+// have none; so their facing lengths count both half-edges).
 std::vector<const char*> later_members(const Contact*) {
   return {"wedge", "leads_past_a", "leads_past_b", "opened", "far_a", "far_b", "per_facing", "given", "face",
-          "split"};
+          "split", "half_a", "half_b", "pair_at_a", "pair_at_b"};
 }
 template <class Ar> void fields(Ar& ar, ContactSet& s) {
   ar("list", s.list); ar("gather_first", s.gather_first); ar("gather", s.gather); ar("rows", s.rows);

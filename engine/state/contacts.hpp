@@ -121,6 +121,12 @@ struct Contact {
   // detections. 0: held as found (a gridpoint where glued blocks meet, with more own edges).
   int far_a = -1, far_b = -1;
   double per_facing = 0.0;
+  // Whether its facing length counts the half-edge towards far_a (far_b): one of a corner's two
+  // contacts in a corner (split) counts only the one along its own face; and whether that face
+  // meets the pair's other at end a (b) of its edge, where its facing length then stops: past it
+  // the half-edge is over the other face.
+  bool half_a = true, half_b = true;
+  bool pair_at_a = false, pair_at_b = false;
   // What it stored a metre in the state it was given (insitu{}, a fresh crack's traction, a loaded
   // joint's faces) [J/m^2]: its length's push pays only for what it stores beyond that, the rest
   // is the given stress's (contact_force.hpp).
