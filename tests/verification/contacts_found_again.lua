@@ -22,15 +22,34 @@
 -- ends on the model's left side, where the wedge's corners slide 2.5 cm past the rest's, a
 -- detection that counted the half-edge's piece past a convex corner by its projection on the side
 -- beyond, where the followed length stops at the corner, would change them by 6 %).
+--
+-- And a corner pair undone: the same wedge with the rest as two blocks glued by a potential crack
+-- along y = 0 from the apex (crackseed, as corner_in_corner's glued case), whose gridpoint at the
+-- apex, one for both, carries the pair on the wedge's two faces. Solved as above, then the
+-- crack's section at the apex is broken (judge{ criterion }): the gridpoint splits in two, and the
+-- one that keeps its number has a single contact with the wedge, on one of the two faces. Check:
+-- its normal stress is the one its pair's contact on that face had (1e-3 of it; two cycles pass).
+-- A detection that took it for a new contact, its pair's numbering gone, would drop the old one
+-- and let the new inherit the faces' state with its energy booked as given: nearly all of the
+-- 4.8 MPa would be gone. (The gridpoint made new by the split, on the other face, is a new contact
+-- that inherits the faces' state from its neighbours along the joint: it carries far less, and
+-- the balance loses its energy; not checked here.)
 local check = require "edem.check"
 
 local SXX, SYY, SXY = -3e6, -5e6, -1e6
 
-local function settled(reprepare)
+-- The wedge pushed into the corner and solved; `glued`: the rest in two blocks glued at y = 0.
+local function wedge_in_corner(glued)
   model{ title = "contacts found again" }
   block{ x = {-4, 4}, y = {-4, 4} }
   crack{ from = {0, 0}, to = {-4, 2} }
   crack{ from = {0, 0}, to = {-4, -2} }
+  if glued then
+    material{ "strong", model = "mohr", density = 2700, young = 7.4e9, poisson = 0.14, cohesion = 1e9,
+              friction = 30, tension = 1e9 }
+    crackseed{ angle = 0, spacing = 10, origin = {0, 0}, material = "strong",
+               region = {{0, -4}, {4, -4}, {4, 4}, {0, 4}} }
+  end
   zone{ edge = 0.5 }
   material{ "rock", density = 2700, young = 7.4e9, poisson = 0.14 }
   assign{ material = "rock" }
@@ -40,7 +59,11 @@ local function settled(reprepare)
   boundary{ side = "right", fix = "xy" }
   for _, side in ipairs{ "top", "bottom" } do boundary{ side = side, stress = {SXX, SYY, SXY} } end
   boundary{ side = "left", stress = {1.3 * SXX, SYY, SXY} }
-  local solved = solve{ ratio = 1e-6, max_cycles = 20000 }
+  return solve{ ratio = 1e-6, max_cycles = 20000 }
+end
+
+local function settled(reprepare)
+  local solved = wedge_in_corner(false)
   if reprepare then set{ damping = "adaptive" } end
   cycle(1)
   local found = {}
@@ -70,4 +93,27 @@ check.report("corner pairs' contacts", pairs_seen, 4, 0, { absolute = true })
 check.report("their lengths found again, worst change [-]", worst_length, 0, 1e-6, { absolute = true })
 check.report("their normal forces, worst change [-]", worst_force, 0, 1e-6, { absolute = true })
 check.report("every other contact's length found again, worst change [-]", worst_other, 0, 1e-4, { absolute = true })
+
+-- The pair undone.
+local function at_apex(c) return math.abs(c.x) < 0.1 and math.abs(c.y) < 0.1 end
+wedge_in_corner(true)
+local pair = {}
+for c in contacts() do
+  if at_apex(c) and c.corner and c.other == 1 then pair[#pair + 1] = c end
+end
+check.report("undone: the pair at the rest's apex, before", #pair, 2, 0, { absolute = true })
+judge{ every = 1, criterion = function(section) if section.x < 0.3 then return "shear" end end }
+cycle(2)
+local kept, had = nil, nil
+for c in contacts() do
+  if at_apex(c) and c.other == 1 and c.block == pair[1].block then kept = c end
+end
+if kept then
+  for _, c in ipairs(pair) do
+    if c.normal.x * kept.normal.x + c.normal.y * kept.normal.y > 0.99 then had = c end
+  end
+end
+check.report("undone: cracks", info().cracks, 1, 0, { absolute = true })
+check.report("undone: the contact kept on its face (1 yes)", (kept and had) and 1 or 0, 1, 0, { absolute = true })
+if kept and had then check.report("undone: its normal stress [Pa]", kept.sn, had.sn, 1e-3) end
 check.finish()
