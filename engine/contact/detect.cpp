@@ -222,16 +222,27 @@ std::optional<Stress> insitu_here(const Mechanics& m, Vec2 point) {
   return insitu_stress_if_any(m, point);
 }
 
+// Whether edge `on` ends, at its end b (`forward`) or a, in a sharp convex corner with the edge
+// `beyond` it: its block's boundary turns there by 60 degrees or more (kSharpTurnCosine). Past a
+// blunter corner the next face runs on under a half-edge reaching past it.
+constexpr double kSharpTurnCosine = 0.5;
+bool sharp_corner(const Mechanics& m, const ContactEdge& on, bool forward, int beyond) {
+  if (!(forward ? on.corner_b : on.corner_a)) return false;
+  const ContactEdge& next = m.faces.edges[static_cast<size_t>(beyond)];
+  const Vec2 d_on = at(m, on.b) - at(m, on.a), d_next = at(m, next.b) - at(m, next.a);
+  return dot(d_on, d_next) <= kSharpTurnCosine * norm(d_on) * norm(d_next);
+}
+
 // How much of the segment p-q lies over the touchable edges `edge` and those beside it along
 // its loop, measured along them (their projections, clipped to each edge's ends) [m]. The walk
 // goes on in each direction while the segment still reaches past the end of the edge it is on:
-// a long half edge (coarse zoning) can lie over many short ones of the other block. Each edge
-// beyond takes only the piece of the segment past that end, and the walk stops at a convex corner
-// (ContactEdge::corner_a, corner_b): the face ends there, and past it the segment is beside the
-// block. Projected on the side beyond, the piece past the corner would count as length there,
-// which the length a contact follows between detections (facing_length.hpp, clipped at the
-// corner) does not: a gridpoint sliding past the corner would have its length, and its force,
-// jump at every detection.
+// a long half edge (coarse zoning) can lie over many short ones of the other block, and past a
+// blunt corner the next face runs on under it. Each edge beyond takes only the piece of the
+// segment past that end, and the walk stops at a sharp corner (sharp_corner): past it the segment
+// is beside the block. Projected on the side beyond, the piece past such a corner would count as
+// length there, which the length a contact follows between detections (facing_length.hpp,
+// clipped at the corner) does not: a gridpoint sliding past the corner would have its length, and
+// its force, jump at every detection.
 double covered_length(const Mechanics& m, Vec2 p, Vec2 q, int edge) {
   const ContactBoundary& cb = m.faces;
   // Of piece p-q: the part over edge e [m] and, past its end a (backward) or b (forward), the
@@ -268,8 +279,9 @@ double covered_length(const Mechanics& m, Vec2 p, Vec2 q, int edge) {
     int e = edge;
     while (here.beyond && covered < limit) {
       const ContactEdge& on = cb.edges[static_cast<size_t>(e)];
-      if (forward ? on.corner_b : on.corner_a) break;  // the face ends at a convex corner
-      e = forward ? on.next : on.prev;
+      const int beyond = forward ? on.next : on.prev;
+      if (sharp_corner(m, on, forward, beyond)) break;  // past it, beside the block
+      e = beyond;
       if (e == edge) break;
       here = over(e, here.from, here.to, forward);
       if (!(here.length > 0.0)) break;
