@@ -5,10 +5,10 @@
 // the block; for one of such two also where its face meets the other's) times how squarely it
 // faces the edge, and half of that, the other half being the other side's (contacts.hpp). It is
 // what a detection finds over a face (detect.cpp, give_half_edges, which also shares a half-edge
-// between the faces of two blocks), and it changes at first order both as the blocks turn against
-// each other (at an oblique corner) and as a gridpoint slides past a corner; its slope with
-// respect to the nodes lets a contact's force pay for what that change does to its energy
-// (contact_force.hpp).
+// between the faces of two blocks, and past a blunt corner counts the piece over the next face),
+// and it changes at first order both as the blocks turn against each other (at an oblique corner)
+// and as a gridpoint slides past a corner; its slope with respect to the nodes lets a contact's
+// force pay for what that change does to its energy (contact_force.hpp).
 #pragma once
 
 #include <cmath>

@@ -20,7 +20,7 @@
 -- (the detection shares a half-edge among faces by how squarely it faces each, half_edge_parts,
 -- which the facing length follows to second order in the faces' turn: 2e-5 here; at the joints'
 -- ends on the model's left side, where the wedge's corners slide 2.5 cm past the rest's, a
--- detection that counted the half-edge's piece past a convex corner by its projection on the side
+-- detection that counted the half-edge's piece past a sharp corner by its projection on the side
 -- beyond, where the followed length stops at the corner, would change them by 6 %).
 --
 -- And a corner pair undone: the same wedge with the rest as two blocks glued by a potential crack
