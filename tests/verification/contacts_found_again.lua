@@ -35,27 +35,13 @@
 -- that inherits the faces' state from its neighbours along the joint: it carries far less, and
 -- the balance loses its energy; not checked here.)
 local check = require "edem.check"
+local wedge = require "edem.corner_wedge"
 
-local SXX, SYY, SXY = -3e6, -5e6, -1e6
+local SXX, SYY, SXY = wedge.sxx, wedge.syy, wedge.sxy
 
 -- The wedge pushed into the corner and solved; `glued`: the rest in two blocks glued at y = 0.
 local function wedge_in_corner(glued)
-  model{ title = "contacts found again" }
-  block{ x = {-4, 4}, y = {-4, 4} }
-  crack{ from = {0, 0}, to = {-4, 2} }
-  crack{ from = {0, 0}, to = {-4, -2} }
-  if glued then
-    material{ "strong", model = "mohr", density = 2700, young = 7.4e9, poisson = 0.14, cohesion = 1e9,
-              friction = 30, tension = 1e9 }
-    crackseed{ angle = 0, spacing = 10, origin = {0, 0}, material = "strong",
-               region = {{0, -4}, {4, -4}, {4, 4}, {0, 4}} }
-  end
-  zone{ edge = 0.5 }
-  material{ "rock", density = 2700, young = 7.4e9, poisson = 0.14 }
-  assign{ material = "rock" }
-  joint_material{ "j", kn = 84e6, ks = 3.6e6, friction = 31.2 }
-  jassign{ material = "j" }
-  insitu{ sxx = SXX, syy = SYY, sxy = SXY }
+  wedge.build("contacts found again", {-4, 2}, glued)
   boundary{ side = "right", fix = "xy" }
   for _, side in ipairs{ "top", "bottom" } do boundary{ side = side, stress = {SXX, SYY, SXY} } end
   boundary{ side = "left", stress = {1.3 * SXX, SYY, SXY} }

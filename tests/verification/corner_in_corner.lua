@@ -21,26 +21,12 @@
 -- apex gridpoint, on the other's two faces, but a wedge between two glued blocks, which has one
 -- face of each; the largest displacement after 1,000 cycles (at most a nanometre).
 local check = require "edem.check"
+local wedge = require "edem.corner_wedge"
 
-local SXX, SYY, SXY = -3e6, -5e6, -1e6
+local SXX, SYY, SXY = wedge.sxx, wedge.syy, wedge.sxy
 
 local function corner(case)
-  model{ title = case.what }
-  block{ x = {-4, 4}, y = {-4, 4} }
-  crack{ from = {0, 0}, to = {case.to[1], case.to[2]} }
-  crack{ from = {0, 0}, to = {case.to[1], -case.to[2]} }
-  if case.glued then
-    material{ "strong", model = "mohr", density = 2700, young = 7.4e9, poisson = 0.14, cohesion = 1e9,
-              friction = 30, tension = 1e9 }
-    crackseed{ angle = 0, spacing = 10, origin = {0, 0}, material = "strong",
-               region = {{0, -4}, {4, -4}, {4, 4}, {0, 4}} }
-  end
-  zone{ edge = 0.5 }
-  material{ "rock", density = 2700, young = 7.4e9, poisson = 0.14 }
-  assign{ material = "rock" }
-  joint_material{ "j", kn = 84e6, ks = 3.6e6, friction = 31.2 }
-  jassign{ material = "j" }
-  insitu{ sxx = SXX, syy = SYY, sxy = SXY }
+  wedge.build(case.what, case.to, case.glued)
   for _, side in ipairs{ "left", "right", "top", "bottom" } do boundary{ side = side, stress = {SXX, SYY, SXY} } end
   cycle(1)
   check.report(case.what .. ": unbalanced force ratio after one cycle", info().ratio, 0, 1e-12, { absolute = true })
