@@ -222,15 +222,23 @@ std::optional<Stress> insitu_here(const Mechanics& m, Vec2 point) {
   return insitu_stress_if_any(m, point);
 }
 
+// A convex corner of a block is sharp where its boundary turns by 60 deg or more (the cosine of
+// the turn at most this): beyond it a tip pressed in to d lies within the block for at most
+// 0.58 d, and a half-edge reaching past it is beside the block. At a blunter corner the next edge
+// runs on under the face's line, and the fade past a corner (contact_force.hpp) stays.
+constexpr double kSharpTurn = 0.5;
+
+// Whether a boundary running along `in` and then along `out` turns there at a sharp convex corner.
+bool sharp_turn(Vec2 in, Vec2 out) {
+  return cross(in, out) > 0.0 && dot(in, out) <= kSharpTurn * norm(in) * norm(out);
+}
+
 // Whether edge `on` ends, at its end b (`forward`) or a, in a sharp convex corner with the edge
-// `beyond` it: its block's boundary turns there by 60 degrees or more (kSharpTurnCosine). Past a
-// blunter corner the next face runs on under a half-edge reaching past it.
-constexpr double kSharpTurnCosine = 0.5;
+// `beyond` it (sharp_turn).
 bool sharp_corner(const Mechanics& m, const ContactEdge& on, bool forward, int beyond) {
-  if (!(forward ? on.corner_b : on.corner_a)) return false;
   const ContactEdge& next = m.faces.edges[static_cast<size_t>(beyond)];
   const Vec2 d_on = at(m, on.b) - at(m, on.a), d_next = at(m, next.b) - at(m, next.a);
-  return dot(d_on, d_next) <= kSharpTurnCosine * norm(d_on) * norm(d_next);
+  return forward ? sharp_turn(d_on, d_next) : sharp_turn(d_next, d_on);
 }
 
 // How much of the segment p-q lies over the touchable edges `edge` and those beside it along
@@ -384,12 +392,6 @@ double tip_wedge(const Mechanics& m, size_t k, Vec2 p, Vec2 own_normal, const Fo
 // How far an edge of a tip may lean back, from the face's normal towards the rest of the face,
 // and still not reach back over it: sin 10 deg [-].
 constexpr double kLeansBack = 0.17364817766693033;
-// A corner of the face's block is sharp where its boundary turns by 60 deg or more (the cosine of
-// the turn at most this): beyond it a tip pressed in to d lies within the block for at most
-// 0.58 d. At a blunter corner the next edge runs on under the face's line, and the fade past a
-// corner (contact_force.hpp) stays.
-constexpr double kSharpTurn = 0.5;
-
 // For a tip, whether its edges all lead out past end a, and past end b, of the edge it is pressed
 // into, where that end is a sharp convex corner: none of them leans back towards the rest of the
 // edge by more than kLeansBack. Beyond such an end the tip is beside the block, not in it: at a
@@ -404,9 +406,8 @@ void mark_leading_past(const Mechanics& m, size_t k, Vec2 p, Found& to) {
   const int node = cb.nodes[k];
   const ContactEdge& target = cb.edges[static_cast<size_t>(to.edge)];
   const Vec2 a = at(m, target.a), b = at(m, target.b);
-  const auto sharp = [&](Vec2 from, Vec2 corner, Vec2 to_point) {
-    const Vec2 in = corner - from, out = to_point - corner;
-    return cross(in, out) > 0.0 && dot(in, out) <= kSharpTurn * norm(in) * norm(out);
+  const auto sharp = [](Vec2 from, Vec2 corner, Vec2 to_point) {
+    return sharp_turn(corner - from, to_point - corner);
   };
   const ContactEdge& prev = cb.edges[static_cast<size_t>(target.prev)];
   const ContactEdge& next = cb.edges[static_cast<size_t>(target.next)];
@@ -1187,11 +1188,9 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
       // this one. Taken for a new contact, it would be dropped and its state inherited with its
       // energy booked as given (inherit_faces): a prestress no contact stores, some 6 MJ/m in one
       // detection in the seed's Case 3.
-      if (!kept) {
-        auto same = std::lower_bound(set.list.begin(), set.list.end(), c, [](const Contact& x, const Contact& y) {
-          return x.node != y.node ? x.node < y.node : x.other < y.other;
-        });
-        for (; same != set.list.end() && same->node == c.node && same->other == c.other; ++same)
+      if (const Contact* held = kept ? nullptr : held_contact(set, c.node, c.other)) {
+        for (auto same = set.list.begin() + (held - set.list.data());
+             same != set.list.end() && same->node == c.node && same->other == c.other; ++same)
           if (same->face != c.face && same_face(m, same->edge, c.edge)) {
             old = same;
             found_again = kept = true;
