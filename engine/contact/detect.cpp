@@ -950,6 +950,31 @@ class LoadedFaces {
   std::unordered_map<std::uint64_t, std::vector<int>> by_pair_;
 };
 
+// Each node a released tie made since the last detection, with the node it split from, the old
+// node a node split from in turn followed to the first (ContactSet::split_from).
+std::unordered_map<int, int> nodes_split_from(const ContactSet& set) {
+  std::unordered_map<int, int> from;
+  for (size_t i = 0; i + 1 < set.split_from.size(); i += 2) {
+    const auto earlier = from.find(set.split_from[i + 1]);
+    from[set.split_from[i]] = earlier != from.end() ? earlier->second : set.split_from[i + 1];
+  }
+  return from;
+}
+
+// The old contact a new contact `c` of a node made by a released tie carries on: its old node's
+// with the same block along the same face, which no new contact has kept; or the list's end.
+std::vector<Contact>::iterator taken_over(const Mechanics& m, ContactSet& set, const std::vector<char>& taken,
+                                          const std::unordered_map<int, int>& split_from, const Contact& c) {
+  const auto from = split_from.find(c.node);
+  if (from == split_from.end()) return set.list.end();
+  const Contact* held = held_contact(set, from->second, c.other);
+  if (!held) return set.list.end();
+  for (auto old = set.list.begin() + (held - set.list.data());
+       old != set.list.end() && old->node == from->second && old->other == c.other; ++old)
+    if (!taken[static_cast<size_t>(old - set.list.begin())] && same_face(m, old->edge, c.edge)) return old;
+  return set.list.end();
+}
+
 // A contact's energy changed from `had` to `now` by a detection, not by a cycle: the last booked
 // point (EnergyLedger::last) moves with it, so that commands do not book the change again.
 void book_at_last_point(Mechanics& m, const ContactEnergy& now, const ContactEnergy& had) {
@@ -1129,12 +1154,17 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
   if (booking) set.books.resize(set.list.size());  // a set prepare() made anew has none yet
   long late = 0;
   LoadedFaces loaded(set.list);
+  // The old contacts a new one keeps: a node split from another takes over only those its old
+  // node kept none of (a split node's number is above its old node's, so found later).
+  std::vector<char> taken(set.list.size(), 0);
+  const std::unordered_map<int, int> split_from = nodes_split_from(set);
   auto kept_from = set.list.cbegin();
   for (size_t k = 0; k < cb.nodes.size(); ++k) {
     if (!all && !redo[k]) {
       const int node = cb.nodes[k];
       while (kept_from != set.list.cend() && kept_from->node < node) ++kept_from;
       for (; kept_from != set.list.cend() && kept_from->node == node; ++kept_from) {
+        taken[static_cast<size_t>(kept_from - set.list.cbegin())] = 1;
         list.push_back(*kept_from);
         if (booking) books.push_back(set.books[static_cast<size_t>(kept_from - set.list.cbegin())]);
       }
@@ -1197,6 +1227,17 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
             break;
           }
       }
+      // A node a released tie made carries on its old node's contact on this face, if the old
+      // node kept it not: the load the joint carried there stays with the gridpoint that now
+      // touches it. Taken for new, it would inherit its neighbours' state instead (LoadedFaces,
+      // by pair of blocks: the old contact was the other block's) and the old one's energy be lost.
+      bool carried_on = false;
+      if (!kept)
+        if (auto from = taken_over(m, set, taken, split_from, c); from != set.list.end()) {
+          old = from;
+          kept = carried_on = true;
+        }
+      if (found_again || kept) taken[static_cast<size_t>(old - set.list.begin())] = 1;
       // Already pressed in deeper than a contact can get between two detections.
       const bool pressed_late = !first && f.gap < -kLateDepth * cb.reach[k];
       // Found so beside a corner, and held by no other block, the gridpoint came round the
@@ -1217,11 +1258,12 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
         keep_state(c, *old, p);
         // Its gridpoint's own boundary has changed: a crack broke at it (what that changes in its
         // length and energy goes with the crack's new faces, booked as the stress they are given
-        // is), or a block that shared it was dug out (that block's part of it goes with it).
+        // is), or a block that shared it was dug out (that block's part of it goes with it); or
+        // the gridpoint is another, split from the old one.
         if (!set.facing_known) {
           // Read from a file without them: what it stores is taken as given, its far ends as found.
           c.given = stored_per_metre(c, p);
-        } else if (c.far_a != old->far_a || c.far_b != old->far_b) {
+        } else if (carried_on || c.far_a != old->far_a || c.far_b != old->far_b) {
           had = contact_energy(c, p);
           const ContactEnergy before = contact_energy(*old, m.joint_params[static_cast<size_t>(old->material)]);
           if (m.fresh_cracks)
@@ -1311,6 +1353,7 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
     }
   }
   set.list = std::move(list);
+  set.split_from.clear();
   if (booking) set.books = std::move(books);
   set.late += late;
   gather_contact_forces(set, cb, m.node_count);

@@ -152,6 +152,7 @@ template <class Ar> void fields(Ar& ar, ContactSet& s) {
   ar("from_insitu", s.from_insitu); ar("late", s.late); ar("searched", s.searched);
   ar("partial", s.partial);
   optional_member(ar, "facing_known", s.facing_known, false);  // files older than it: not known
+  optional_member(ar, "split_from", s.split_from, {});  // files older than it: nothing taken over
 }
 // Files written before detection was done block by block lack these (and had only full ones).
 std::vector<const char*> later_members(const ContactSet*) { return {"searched", "partial"}; }

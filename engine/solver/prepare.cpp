@@ -277,7 +277,12 @@ void reconnect(Mechanics& m, const Mesh& mesh) {
     gp_node[gp] = id;
   }
   if (source.empty()) return;
-  // A new node starts where its old node was, moving with it.
+  // A new node starts where its old node was, moving with it, and takes over the old node's
+  // contacts on the faces it touches that the old node no longer does (find_contacts).
+  for (size_t i = 0; i < source.size(); ++i) {
+    m.contacts.split_from.push_back(static_cast<int>(old_count + i));
+    m.contacts.split_from.push_back(source[i]);
+  }
   for (const int old : source) {
     const size_t o = static_cast<size_t>(old);
     for (std::vector<double>* v : {&m.position, &m.u, &m.v, &m.origin, &m.force, &m.load}) {

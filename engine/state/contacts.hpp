@@ -203,6 +203,9 @@ struct ContactSet {
   long late = 0;
   // Gridpoints whose contacts were searched for, since the mesh was made: what detection cost.
   long searched = 0;
+  // Nodes a released tie made since the last detection, each with the node it split from (pairs:
+  // new, old): its contacts on the faces the old node's no longer holds are those it takes over.
+  std::vector<int> split_from;
 };
 
 // How far the gridpoint was inside the edge's block at the contact's last cycle (-gap) [m].

@@ -4,7 +4,7 @@
 -- the centre; glued: the rest in two blocks glued by a potential crack along y = 0 from the apex.
 -- Zones of 0.5 m, the seed's consistent joints (kn = 84 MPa/m, ks = 3.6 MPa/m, friction 31.2 deg)
 -- and the in-situ stress sxx, syy, sxy; no boundary conditions.
-local M = { sxx = -3e6, syy = -5e6, sxy = -1e6 }
+local M = { sxx = -3e6, syy = -5e6, sxy = -1e6, kn = 84e6 }
 
 function M.build(title, to, glued)
   model{ title = title }
@@ -20,7 +20,7 @@ function M.build(title, to, glued)
   zone{ edge = 0.5 }
   material{ "rock", density = 2700, young = 7.4e9, poisson = 0.14 }
   assign{ material = "rock" }
-  joint_material{ "j", kn = 84e6, ks = 3.6e6, friction = 31.2 }
+  joint_material{ "j", kn = M.kn, ks = 3.6e6, friction = 31.2 }
   jassign{ material = "j" }
   insitu{ sxx = M.sxx, syy = M.syy, sxy = M.sxy }
 end

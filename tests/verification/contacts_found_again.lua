@@ -27,13 +27,17 @@
 -- along y = 0 from the apex (crackseed, as corner_in_corner's glued case), whose gridpoint at the
 -- apex, one for both, carries the pair on the wedge's two faces. Solved as above, then the
 -- crack's section at the apex is broken (judge{ criterion }): the gridpoint splits in two, and the
--- one that keeps its number has a single contact with the wedge, on one of the two faces. Check:
--- its normal stress is the one its pair's contact on that face had (1e-3 of it; two cycles pass).
--- A detection that took it for a new contact, its pair's numbering gone, would drop the old one
--- and let the new inherit the faces' state with its energy booked as given: nearly all of the
--- 4.8 MPa would be gone. (The gridpoint made new by the split, on the other face, is a new contact
--- that inherits the faces' state from its neighbours along the joint: it carries far less, and
--- the balance loses its energy; not checked here.)
+-- one that keeps its number has a single contact with the wedge, on one of the two faces, and the
+-- gridpoint made new by the split one on the other. Checks: each carries the normal stress its
+-- pair's contact on that face had (1e-3 of it; two cycles pass), and no energy goes with contacts
+-- dropped (the contacts' error over the break less what the contacts kept made, each booking its
+-- own: within 1e-3 of what the pair's contact on the new gridpoint's face stored). A detection
+-- that took the first for a new contact, its pair's numbering gone, would drop the old one and
+-- let the new inherit the faces' state with its energy booked as given: nearly all of the 4.8
+-- MPa would be gone. One that took the second for new would let it inherit its neighbours' state
+-- along the joint (6.3 MPa would become 0.07) and drop the old one's 1.6e4 J/m from the balance.
+-- (The contacts kept make 6.1e3 J/m over the break, nearly all of it at the wedge's apex, whose
+-- lengths on the rest's faces grow by 16 % where the crack's mouth opens; printed, not checked.)
 local check = require "edem.check"
 local wedge = require "edem.corner_wedge"
 
@@ -88,18 +92,42 @@ for c in contacts() do
   if at_apex(c) and c.corner and c.other == 1 then pair[#pair + 1] = c end
 end
 check.report("undone: the pair at the rest's apex, before", #pair, 2, 0, { absolute = true })
+energy{ by_contact = true }
+local contact_error_before = energy().contact_error
 judge{ every = 1, criterion = function(section) if section.x < 0.3 then return "shear" end end }
 cycle(2)
-local kept, had = nil, nil
-for c in contacts() do
-  if at_apex(c) and c.other == 1 and c.block == pair[1].block then kept = c end
-end
-if kept then
-  for _, c in ipairs(pair) do
-    if c.normal.x * kept.normal.x + c.normal.y * kept.normal.y > 0.99 then had = c end
+-- The pair's contact along the face of `c` (their normals within 8 deg), or nil.
+local function pair_on_face_of(c)
+  for _, p in ipairs(pair) do
+    if p.normal.x * c.normal.x + p.normal.y * c.normal.y > 0.99 then return p end
   end
 end
+local kept, taken_over = nil, nil
+for c in contacts() do
+  if at_apex(c) and c.other == 1 then
+    if c.block == pair[1].block then kept = c else taken_over = c end
+  end
+end
+local had = kept and pair_on_face_of(kept)
+local had_other = taken_over and pair_on_face_of(taken_over)
 check.report("undone: cracks", info().cracks, 1, 0, { absolute = true })
 check.report("undone: the contact kept on its face (1 yes)", (kept and had) and 1 or 0, 1, 0, { absolute = true })
 if kept and had then check.report("undone: its normal stress [Pa]", kept.sn, had.sn, 1e-3) end
+check.report("undone: the new gridpoint's contact on the other face (1 yes)", (taken_over and had_other) and 1 or 0, 1,
+             0, { absolute = true })
+if taken_over and had_other then
+  check.report("undone: its normal stress [Pa]", taken_over.sn, had_other.sn, 1e-3)
+end
+-- The contacts' error over the break is what the contacts there made (each books its own) and
+-- what the contacts dropped took with them: the latter should be nothing.
+local made = 0
+for c in contacts() do made = made + (c.energy_made or 0) end
+local dropped = energy().contact_error - contact_error_before - made
+if had_other then
+  local stored = had_other.fn ^ 2 / (2 * wedge.kn * had_other.length)  -- the pair's contact there, linear joint
+  print(("undone: the contacts' error over the break %.4g J/m: made by contacts kept %.4g, gone with contacts "
+         .. "dropped %.4g; the pair's contact on the new gridpoint's face stored %.4g"):format(
+    dropped + made, made, dropped, stored))
+  check.report("undone: energy gone with contacts dropped [J/m]", dropped, 0, 1e-3 * stored, { absolute = true })
+end
 check.finish()
