@@ -961,17 +961,16 @@ std::unordered_map<int, int> nodes_split_from(const ContactSet& set) {
   return from;
 }
 
-// The old contact a new contact `c` of a node made by a released tie carries on: its old node's
-// with the same block along the same face, which no new contact has kept; or the list's end.
-std::vector<Contact>::iterator taken_over(const Mechanics& m, ContactSet& set, const std::vector<char>& taken,
-                                          const std::unordered_map<int, int>& split_from, const Contact& c) {
-  const auto from = split_from.find(c.node);
-  if (from == split_from.end()) return set.list.end();
-  const Contact* held = held_contact(set, from->second, c.other);
+// The first old contact of `node` with block `other` along the face of edge `edge` that `usable`
+// accepts (given its place in the list), or the list's end.
+template <class Usable>
+std::vector<Contact>::iterator old_along_face(const Mechanics& m, ContactSet& set, int node, int other, int edge,
+                                              Usable usable) {
+  const Contact* held = held_contact(set, node, other);
   if (!held) return set.list.end();
   for (auto old = set.list.begin() + (held - set.list.data());
-       old != set.list.end() && old->node == from->second && old->other == c.other; ++old)
-    if (!taken[static_cast<size_t>(old - set.list.begin())] && same_face(m, old->edge, c.edge)) return old;
+       old != set.list.end() && old->node == node && old->other == other; ++old)
+    if (usable(old) && same_face(m, old->edge, edge)) return old;
   return set.list.end();
 }
 
@@ -1218,25 +1217,24 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
       // this one. Taken for a new contact, it would be dropped and its state inherited with its
       // energy booked as given (inherit_faces): a prestress no contact stores, some 6 MJ/m in one
       // detection in the seed's Case 3.
-      if (const Contact* held = kept ? nullptr : held_contact(set, c.node, c.other)) {
-        for (auto same = set.list.begin() + (held - set.list.data());
-             same != set.list.end() && same->node == c.node && same->other == c.other; ++same)
-          if (same->face != c.face && same_face(m, same->edge, c.edge)) {
-            old = same;
-            found_again = kept = true;
-            break;
-          }
-      }
+      if (!kept)
+        if (auto same = old_along_face(m, set, c.node, c.other, c.edge, [&](auto x) { return x->face != c.face; });
+            same != set.list.end()) {
+          old = same;
+          found_again = kept = true;
+        }
       // A node a released tie made carries on its old node's contact on this face, if the old
       // node kept it not: the load the joint carried there stays with the gridpoint that now
       // touches it. Taken for new, it would inherit its neighbours' state instead (LoadedFaces,
       // by pair of blocks: the old contact was the other block's) and the old one's energy be lost.
       bool carried_on = false;
-      if (!kept)
-        if (auto from = taken_over(m, set, taken, split_from, c); from != set.list.end()) {
+      if (const auto source = split_from.find(c.node); !kept && source != split_from.end()) {
+        const auto not_taken = [&](auto x) { return !taken[static_cast<size_t>(x - set.list.begin())]; };
+        if (auto from = old_along_face(m, set, source->second, c.other, c.edge, not_taken); from != set.list.end()) {
           old = from;
           kept = carried_on = true;
         }
+      }
       if (found_again || kept) taken[static_cast<size_t>(old - set.list.begin())] = 1;
       // Already pressed in deeper than a contact can get between two detections.
       const bool pressed_late = !first && f.gap < -kLateDepth * cb.reach[k];
