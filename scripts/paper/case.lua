@@ -28,8 +28,9 @@
 --             the potential cracks no longer move with it (tests/bench/yield_pass_paths.lua) [3000]
 --   edge, far m: zone size at the cavern and far from it [1.5, 10]
 --   stages    how many of the 16 steps to dig [16]
---   step_cycles  cycles a step is solved for once its load is off, before it is left short of
---             its ratio [40000]
+--   step_cycles  cycles a step is solved for once its load is off; judged at equilibrium, a step
+--             short of its ratio is solved as long again under adaptive damping (rock with no
+--             equilibrium falls), and then judged at ten times the ratio if still short [40000]
 --   stall     cycles without the ratio falling a tenth after which a step's solve ends short of
 --             its ratio, the rock moving on with no equilibrium near (solve{ stall }) [0: never]
 --   settle    a step's state at its ratio (1e-5) solved on to this one under adaptive damping
@@ -598,13 +599,21 @@ for i, s in ipairs(c.stages) do
   -- The ratio is judged once the load is off: step_cycles from there.
   local ok, result = pcall(solve, { ratio = 1e-5, max_cycles = RELEASE + given.step_cycles, stall = given.stall,
                                     settle = given.settle, balance = given.balance })
-  -- Judged at equilibrium, a step short of its ratio has not been judged: rock creeping on soft
-  -- joints settles no further, so its state is judged at ten times the ratio (in rounds as any).
-  if ok and not result.converged and JUDGE_AT == "equilibrium" then
+  -- Judged at equilibrium, a step short of its ratio has not been judged. Rock with no equilibrium
+  -- near (blocks sliding out of a wall, which local damping holds creeping) is solved on under
+  -- adaptive damping, which lets it fall, to the same ratio: a state judged short of it would load
+  -- the sections nearby as far as the creep has gone when the cycles run out. Rock still short
+  -- after that, creeping on soft joints, settles no further: judged at ten times the ratio.
+  for _, ratio in ipairs(JUDGE_AT == "equilibrium" and { 1e-5, 1e-4 } or {}) do
+    if not ok or result.converged then break end
+    if DAMPING == "local" then set{ damping = "adaptive" } end
     local again
-    ok, again = pcall(solve, { ratio = 1e-4, max_cycles = 40000, stall = given.stall, balance = given.balance })
+    ok, again = pcall(solve, { ratio = ratio, max_cycles = given.step_cycles, stall = given.stall,
+                               balance = given.balance })
+    if DAMPING == "local" then set{ damping = "local", local_damping = 0.8 } end
     if ok then
       result.cycles, result.judgments = result.cycles + again.cycles, result.judgments + again.judgments
+      result.converged, result.ratio = ratio == 1e-5 and again.converged, again.ratio
     else
       result = again
     end
