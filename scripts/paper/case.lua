@@ -297,7 +297,10 @@ energy{ reset = true }  -- the energy balance of the excavation, from the in-sit
 -- Local damping takes the same share of every node's force whatever the motion's frequency. The
 -- adaptive damping, c = 2 omega, is critical for one frequency, the whole opening's slow
 -- convergence, and leaves quicker motion (a breaking section's ring, a sliding block) damped less.
-if DAMPING == "local" then set{ damping = "local", local_damping = 0.8 } end
+local function steps_damping()
+  if DAMPING == "local" then set{ damping = "local", local_damping = 0.8 } end
+end
+steps_damping()
 if given.save_after == 0 then save(("%s_step0.h5"):format(tag)) end
 
 -- Measuring points, in the rock left in place: the gridpoint nearest to the crown, and those
@@ -604,19 +607,18 @@ for i, s in ipairs(c.stages) do
   -- adaptive damping, which lets it fall, to the same ratio: a state judged short of it would load
   -- the sections nearby as far as the creep has gone when the cycles run out. Rock still short
   -- after that, creeping on soft joints, settles no further: judged at ten times the ratio.
-  for _, ratio in ipairs(JUDGE_AT == "equilibrium" and { 1e-5, 1e-4 } or {}) do
-    if not ok or result.converged then break end
+  if ok and not result.converged and JUDGE_AT == "equilibrium" then
     if DAMPING == "local" then set{ damping = "adaptive" } end
-    local again
-    ok, again = pcall(solve, { ratio = ratio, max_cycles = given.step_cycles, stall = given.stall,
-                               balance = given.balance })
-    if DAMPING == "local" then set{ damping = "local", local_damping = 0.8 } end
-    if ok then
+    for _, ratio in ipairs{ 1e-5, 1e-4 } do
+      local again
+      ok, again = pcall(solve, { ratio = ratio, max_cycles = given.step_cycles, stall = given.stall,
+                                 balance = given.balance })
+      if not ok then result = again; break end
       result.cycles, result.judgments = result.cycles + again.cycles, result.judgments + again.judgments
       result.converged, result.ratio = ratio == 1e-5 and again.converged, again.ratio
-    else
-      result = again
+      if again.converged then break end
     end
+    steps_damping()
   end
   if not ok then
     local why = tostring(result):gsub("^.-cycle %d+: ", "")
