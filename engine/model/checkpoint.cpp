@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "constitutive/zone_law.hpp"
 #include "contact/detect.hpp"
+#include "contact/joint_law.hpp"
 #include "io/checkpoint_file.hpp"
 #include "io/h5_archive.hpp"
 #include "model/model.hpp"
@@ -95,6 +96,8 @@ template <class Ar> void fields(Ar& ar, JointParams& p) {
   optional_member(ar, "slip_at_loss", p.slip_at_loss, 0.0);
   optional_member(ar, "law_stress_scale", p.law_stress_scale, 1.0);
   optional_member(ar, "law_closure_scale", p.law_closure_scale, 1.0);
+  // Files older than it: -1, and restore takes it from the joint material again.
+  optional_member(ar, "curve_closure", p.curve_closure, -1.0);
 }
 template <class Ar> void fields(Ar& ar, JassignDef& j) {
   ar("material", j.material); ar("set", j.set); ar("kind", j.kind); ar("region", j.region);
@@ -768,6 +771,9 @@ struct CheckpointAccess {
       check_sizes(m, model.mesh_);
       check_indices(m, model.mesh_);
       if (!(m.faces.median_edge > 0.0)) m.faces.median_edge = median_edge_length(m.faces, m.position);
+      for (size_t j = 0; j < m.joint_params.size(); ++j)
+        if (m.joint_params[j].curve_closure < 0.0)
+          m.joint_params[j].curve_closure = joint_params(m.joint_materials[j]).curve_closure;
       // The gather follows from the contacts and the faces: made anew, whatever the file holds.
       if (m.contacts.detected) gather_contact_forces(m.contacts, m.faces, m.node_count);
       mark_glued_tips(m.faces, m.position);

@@ -187,6 +187,37 @@ TEST_F(Checkpoint, RestoredRunWithACohesiveCrackSofteningGoesOnBitForBit) {
   EXPECT_TRUE(global(second, "dump") == expected) << "restored differs";
 }
 
+// Joints on the seed's lab curve scaled to the prototype (closures of decimetres): how deep a
+// contact is followed and its edge held (JointParams::curve_closure) is carried, so a detection
+// after the restore (an excavation's, here) finds the contacts the uninterrupted run finds.
+TEST_F(Checkpoint, RestoredSoftJointsGoOnBitForBitThroughAnExcavation) {
+  std::string scene = kScene;
+  const std::string linear = "joint_material{ \"joint\", kn = 2e10, ks = 2e9, friction = 25 }";
+  const auto at = scene.find(linear);
+  ASSERT_NE(at, std::string::npos);
+  scene.replace(at, linear.size(),
+                "joint_material{ \"joint\", kn_law = \"seed-cubic\", stress_scale = 17.86, closure_scale = 400, "
+                "ks = 3.6e6, friction = 25 }");
+  const std::string zoning = "zone{ edge = 0.4";
+  scene.insert(scene.find(zoning), "region{ name = \"beside\", polygon = {{1.5, -1}, {3, -1}, {3, 1}, {1.5, 1}} }\n  ");
+  scene += "calls = 0\n";
+  const char* later = R"(
+    excavate{ region = "beside", release = 0 }
+    cycle(300)
+  )";
+  Interpreter whole({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+  expect_runs(whole, scene + "cycle(600)\n" + later + kDump);
+  const std::string expected = global(whole, "dump");
+  ASSERT_FALSE(expected.empty());
+  {
+    Interpreter first({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+    expect_runs(first, scene + "cycle(600)\nsave('" + file("soft.h5") + "')\n");
+  }
+  Interpreter second({.quiet = true, .threads = 1, .stdlib_dirs = {}});
+  expect_runs(second, "restore('" + file("soft.h5") + "')\ncalls = 0\n" + later + kDump);
+  EXPECT_TRUE(global(second, "dump") == expected) << "restored differs";
+}
+
 // A strain-softening (ss) element driven past its peak and saved mid-softening: each zone's
 // plastic shear strain e_ps, which sets its strength, is carried, so the restored run goes on bit
 // for bit.
