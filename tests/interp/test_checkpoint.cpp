@@ -198,8 +198,9 @@ TEST_F(Checkpoint, RestoredSoftJointsGoOnBitForBitThroughAnExcavation) {
   scene.replace(at, linear.size(),
                 "joint_material{ \"joint\", kn_law = \"seed-cubic\", stress_scale = 17.86, closure_scale = 400, "
                 "ks = 3.6e6, friction = 25 }");
-  const std::string zoning = "zone{ edge = 0.4";
-  scene.insert(scene.find(zoning), "region{ name = \"beside\", polygon = {{1.5, -1}, {3, -1}, {3, 1}, {1.5, 1}} }\n  ");
+  const auto zoning = scene.find("zone{ edge = 0.4");
+  ASSERT_NE(zoning, std::string::npos);
+  scene.insert(zoning, "region{ name = \"beside\", polygon = {{1.5, -1}, {3, -1}, {3, 1}, {1.5, 1}} }\n  ");
   scene += "calls = 0\n";
   const char* later = R"(
     excavate{ region = "beside", release = 0 }
