@@ -180,8 +180,9 @@ const Command& chart_command() {
       .name = "chart",
       .help =
           "Draws x-y series as a line chart (a line through each series' points in order, a "
-          "marker at each point, a legend of the names); the file's extension (.png, .svg or "
-          ".pdf) picks the format.",
+          "marker at each point, a legend of the names in the corner of the frame that hides the "
+          "least data, or above the frame when every corner would hide a point); the file's "
+          "extension (.png, .svg or .pdf) picks the format.",
       .keys =
           {
               {"file", Type::string, "", any_value, kRequired, "the picture to write"},

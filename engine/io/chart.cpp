@@ -239,6 +239,7 @@ constexpr std::size_t kMarkedPoints = 40;
 // Over the data, the legend's ground lets a little of it show through.
 constexpr LegendStyle kLegend{.swatch = 30.0, .ground = 0.9, .columns = 1};
 constexpr double kLegendInset = 10.0;  // from the frame
+constexpr int kPointCover = 20;  // what a point a legend covers counts, against a line sample's 1
 
 Rgb colour_of(std::size_t series) {
   return kSeriesColours[series % kSeriesColours.size()];
@@ -296,14 +297,15 @@ struct Layout {
   double title_y = 0.0;
 };
 
-Layout layout(Canvas& p, const ChartDef& def, double width, double height) {
+// `band`: room kept above the frame, below the title, for a legend that no corner inside can take.
+Layout layout(Canvas& p, const ChartDef& def, double width, double height, double band = 0.0) {
   const double s = p.s(), margin = kMargin * s;
   Layout lay;
   lay.x = axis_of(def.series, true, def.log_x);
   lay.y = axis_of(def.series, false, def.log_y);
   const double title_h = def.title.empty() ? 0.0 : kTitleHeight * s;
   const double tick_room = (kTickLength + kTickGap + 1.3 * kTickFont) * s;
-  const double top = margin + title_h + 4.0 * s;
+  const double top = margin + title_h + 4.0 * s + band;
   const double bottom =
       height - margin - (def.x_label.empty() ? 0.0 : kLabelHeight * s) - tick_room;
   lay.title_y = margin + 0.5 * title_h;
@@ -462,9 +464,15 @@ Legend legend_of(const ChartDef& def) {
 }
 
 // The legend's box in the corner of the frame that covers the fewest points and line samples
-// (top right first on a tie); nothing when no series has a name.
-std::optional<Rect> legend_box(Canvas& p, const Layout& lay, const Legend& legend,
-                               const std::vector<std::vector<std::array<double, 2>>>& points) {
+// (top right first on a tie), with how much it covers (kPointCover a point, 1 a line sample);
+// nothing when no series has a name.
+struct LegendPlace {
+  Rect box;
+  int covered = 0;
+};
+std::optional<LegendPlace> legend_box(
+    Canvas& p, const Layout& lay, const Legend& legend,
+    const std::vector<std::vector<std::array<double, 2>>>& points) {
   if (legend.entries.empty()) return std::nullopt;
   const double s = p.s();
   const double w = p.legend_column_width(legend.entries, kLegend);
@@ -482,7 +490,7 @@ std::optional<Rect> legend_box(Canvas& p, const Layout& lay, const Legend& legen
     int score = 0;
     for (const auto& series : points)
       for (std::size_t i = 0; i < series.size(); ++i) {
-        if (near.contains(series[i][0], series[i][1])) score += 20;
+        if (near.contains(series[i][0], series[i][1])) score += kPointCover;
         if (i == 0) continue;
         for (int k = 1; k < 20; ++k) {
           const double t = k / 20.0;
@@ -501,13 +509,31 @@ std::optional<Rect> legend_box(Canvas& p, const Layout& lay, const Legend& legen
       best_score = score;
     }
   }
-  return *best;
+  return LegendPlace{*best, best_score};
+}
+
+// The legend's height and the gap to the frame, when it stands above the frame.
+double legend_band(Canvas& p, const Legend& legend) {
+  return p.legend_height(legend.entries.size()) + kLegendInset * p.s();
 }
 
 void render(cairo_t* cr, const ChartDef& def, double width, double height) {
   Canvas p(cr, width, height);
-  const Layout lay = layout(p, def, width, height);
-  const auto points = points_of(def, lay);
+  Layout lay = layout(p, def, width, height);
+  auto points = points_of(def, lay);
+  const Legend legend = legend_of(def);
+  std::optional<LegendPlace> place = legend_box(p, lay, legend, points);
+  // Every corner of the frame would hide a point, or as much line as a point counts: the frame
+  // gives up a band at its top, if it keeps half its height, and the legend stands there,
+  // right-aligned over it.
+  const double band = place ? legend_band(p, legend) : 0.0;
+  if (place && place->covered >= kPointCover && band < 0.5 * lay.frame.h) {
+    lay = layout(p, def, width, height, band);
+    points = points_of(def, lay);
+    const Rect& f = lay.frame;
+    place->box.x = f.x + f.w - place->box.w;
+    place->box.y = f.y - band;
+  }
 
   p.paint(rgb(0xffffff));
   draw_grid(p, lay);
@@ -515,9 +541,8 @@ void render(cairo_t* cr, const ChartDef& def, double width, double height) {
   draw_series(p, lay, points);
   draw_axes(p, lay);
   draw_labels(p, lay, def, width, height);
-  const Legend legend = legend_of(def);
-  if (const auto box = legend_box(p, lay, legend, points))
-    p.legend(*box, legend.entries, kLegend, [&](std::size_t entry, double x, double y) {
+  if (place)
+    p.legend(place->box, legend.entries, kLegend, [&](std::size_t entry, double x, double y) {
       const std::size_t i = legend.series[entry];
       if (points[i].size() <= kMarkedPoints) {
         marker(p, marker_of(i), x, y, colour_of(i));

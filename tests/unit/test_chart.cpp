@@ -106,6 +106,36 @@ TEST_F(ChartTest, MarksAreDrawnAndDenseSeriesHaveNoMarkers) {
   EXPECT_GT(squares(read_png(def.file), 0x1f77b4), 0) << "no markers on a 20-point series";
 }
 
+// Data in every corner of the frame: the legend stands above the frame instead of on a point. A
+// chart with the series named shows every marker the unnamed one does, and the legend's own.
+TEST_F(ChartTest, ALegendThatEveryCornerWouldHideGoesAboveTheFrame) {
+  ChartDef def;
+  def.series = {{"", {0, 1, 1, 0}, {0, 0, 1, 1}}};
+  def.file = file("unnamed.png");
+  chart(def);
+  def.series[0].name = "corners";
+  def.file = file("named.png");
+  chart(def);
+  // Full 5 x 5 squares of the series' colour: a marker's disc holds some, a line none.
+  const auto squares = [](const Picture& p) {
+    int count = 0;
+    for (int y = 0; y + 5 <= p.height; ++y)
+      for (int x = 0; x + 5 <= p.width; ++x) {
+        bool full = true;
+        for (int dy = 0; dy < 5 && full; ++dy)
+          for (int dx = 0; dx < 5 && full; ++dx)
+            full = p.pixels[static_cast<size_t>((y + dy) * p.width + x + dx)] == 0x1f77b4;
+        count += full;
+      }
+    return count;
+  };
+  const int unnamed = squares(read_png(file("unnamed.png"))),
+            named = squares(read_png(file("named.png")));
+  ASSERT_GT(unnamed, 0);
+  // Four discs, and five with the legend's: a legend on a corner would leave four.
+  EXPECT_GT(named, unnamed + unnamed / 8) << "the legend hides a point";
+}
+
 TEST_F(ChartTest, WritesSvg) {
   const ChartDef def = speed_chart(file("speed.svg"));
   chart(def);
