@@ -48,6 +48,21 @@ using test::Picture;
 using test::read_all;
 using test::read_png;
 
+// Full 5 x 5 squares of `colour`: a marker is a disc 10 px across of its series' colour, which
+// holds some; a line 1.8 px wide holds none.
+int squares(const Picture& p, std::uint32_t colour) {
+  int count = 0;
+  for (int y = 0; y + 5 <= p.height; ++y)
+    for (int x = 0; x + 5 <= p.width; ++x) {
+      bool full = true;
+      for (int dy = 0; dy < 5 && full; ++dy)
+        for (int dx = 0; dx < 5 && full; ++dx)
+          full = p.pixels[static_cast<size_t>((y + dy) * p.width + x + dx)] == colour;
+      count += full;
+    }
+  return count;
+}
+
 class ChartTest : public test::PictureDir {};
 
 TEST_F(ChartTest, WritesPngOfTheRequestedSizeShowingEverySeries) {
@@ -84,20 +99,6 @@ TEST_F(ChartTest, MarksAreDrawnAndDenseSeriesHaveNoMarkers) {
   const Picture plain = read_png(file("plain.png")), marked = read_png(file("marked.png"));
   ASSERT_EQ(plain.pixels.size(), marked.pixels.size());
   EXPECT_GT(marked.inked(), plain.inked() + 0.001) << "the marks are not drawn";
-  // A marker is a disc 10 px across of the series' colour: a line 1.8 px wide holds no 5 x 5 square
-  // of it.
-  const auto squares = [](const Picture& p, std::uint32_t colour) {
-    int count = 0;
-    for (int y = 0; y + 5 <= p.height; ++y)
-      for (int x = 0; x + 5 <= p.width; ++x) {
-        bool full = true;
-        for (int dy = 0; dy < 5 && full; ++dy)
-          for (int dx = 0; dx < 5 && full; ++dx)
-            full = p.pixels[static_cast<size_t>((y + dy) * p.width + x + dx)] == colour;
-        count += full;
-      }
-    return count;
-  };
   EXPECT_EQ(squares(plain, 0x1f77b4), 0) << "markers on a 201-point series";
   def.series[0].x.resize(20);
   def.series[0].y.resize(20);
@@ -116,21 +117,8 @@ TEST_F(ChartTest, ALegendThatEveryCornerWouldHideGoesAboveTheFrame) {
   def.series[0].name = "corners";
   def.file = file("named.png");
   chart(def);
-  // Full 5 x 5 squares of the series' colour: a marker's disc holds some, a line none.
-  const auto squares = [](const Picture& p) {
-    int count = 0;
-    for (int y = 0; y + 5 <= p.height; ++y)
-      for (int x = 0; x + 5 <= p.width; ++x) {
-        bool full = true;
-        for (int dy = 0; dy < 5 && full; ++dy)
-          for (int dx = 0; dx < 5 && full; ++dx)
-            full = p.pixels[static_cast<size_t>((y + dy) * p.width + x + dx)] == 0x1f77b4;
-        count += full;
-      }
-    return count;
-  };
-  const int unnamed = squares(read_png(file("unnamed.png"))),
-            named = squares(read_png(file("named.png")));
+  const int unnamed = squares(read_png(file("unnamed.png")), 0x1f77b4),
+            named = squares(read_png(file("named.png")), 0x1f77b4);
   ASSERT_GT(unnamed, 0);
   // Four discs, and five with the legend's: a legend on a corner would leave four.
   EXPECT_GT(named, unnamed + unnamed / 8) << "the legend hides a point";
