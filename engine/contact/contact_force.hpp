@@ -110,23 +110,40 @@ inline double stored_in(const Contact& c, const JointParams& p) {
   return e.normal + e.shear;
 }
 
-// The force a contact whose length follows its facing length (Contact::per_facing) gives its
-// nodes as they move: its stored energy's slope with respect to their positions, at its closure
-// and shear stress [N/m], by role (kContactRoles, x and y each).
-struct LengthPush {
+// The forces a contact gives its nodes besides its force on the gridpoint and that force's
+// reaction on the edge point under it [N/m], by role (kContactRoles, x and y each): the couple its
+// shear force leaves, acting as far off the edge as the gridpoint is pressed in, on the edge's
+// ends; and for a contact whose length follows its facing length (Contact::per_facing), its
+// stored energy's slope with respect to the positions of the nodes that set that length, at its
+// closure and shear stress.
+struct NodePush {
   double on[2 * kContactRoles] = {};
 };
+
+// A contact's force on its gridpoint, the reaction on its edge's ends split by where it projects,
+// and the rest it gives its nodes (NodePush): by role (kContactRoles), x and y [N/m].
+[[gnu::always_inline]] inline void contact_push(const Contact& c, const NodePush& extra,
+                                                double p[2 * kContactRoles]) {
+  const double wa = -(1.0 - c.t), wb = -c.t;
+  p[0] = c.fx + extra.on[0];
+  p[1] = c.fy + extra.on[1];
+  p[2] = wa * c.fx + extra.on[2];
+  p[3] = wa * c.fy + extra.on[3];
+  p[4] = wb * c.fx + extra.on[4];
+  p[5] = wb * c.fy + extra.on[5];
+  for (int k = 6; k < 2 * kContactRoles; ++k) p[k] = extra.on[k];
+}
 
 // Updates `c` and its force on the gridpoint (c.fx, c.fy) from the node positions, origin + u,
 // and velocities `v`; returns the overlap, how far the
 // gridpoint is inside the edge's block [m] (negative: a gap). `edges`: all of them (the edge is
 // edges[c.edge]; past a corner its neighbour matters too). Adds what it dissipates to `lost`.
-// With `pushing`, a contact whose length follows its facing length puts there the force that
-// gives (LengthPush; the caller's, zeroed).
+// With `pushing` (the caller's, zeroed) it puts there the rest of its forces on its nodes
+// (NodePush); without, only the gridpoint's force and its reaction are given.
 [[gnu::always_inline]] inline double contact_force(Contact& c, const ContactEdge* edges, const JointParams& p,
                                                    const double* origin, const double* u,
                                                    const double* v, double dt, ContactLoss& lost,
-                                                   LengthPush* pushing = nullptr) {
+                                                   NodePush* pushing = nullptr) {
   const ContactEdge& e = edges[c.edge];
   const size_t n = static_cast<size_t>(c.node), a = static_cast<size_t>(e.a), b = static_cast<size_t>(e.b);
   const auto x = [&](size_t dof) { return origin[dof] + u[dof]; };
@@ -254,9 +271,18 @@ struct LengthPush {
     const double own_share = !(from_corner > 0.0) ? 0.0 : tip > c.length ? share * c.length / tip : share;
     share = std::max(own_share, std::min(share, tip_share));
   }
+  // The gridpoint's velocity along the face against that of the edge's block where the gridpoint
+  // is: the edge point's under it, and what the edge's turn adds at the gridpoint's offset `r`
+  // from there (as far as it is pressed in, and past a corner how far beyond it). Two blocks
+  // pressed together and turned as one do not shear; by the edge point's velocity alone they
+  // would, by the overlap times the angle.
+  const double rx = px - t * dx, ry = py - t * dy;
+  const double dvx = v[2 * b] - v[2 * a], dvy = v[2 * b + 1] - v[2 * a + 1];
+  const double turn_rate = (dx * dvy - dy * dvx) / (len * len);  // the edge's [rad/s]
+  const double offset_across = rx * sy - ry * sx;                 // r x s
   const double rvx = v[2 * n] - ((1.0 - t) * v[2 * a] + t * v[2 * b]);
   const double rvy = v[2 * n + 1] - ((1.0 - t) * v[2 * a + 1] + t * v[2 * b + 1]);
-  const double dus = (rvx * sx + rvy * sy) * dt;
+  const double dus = (rvx * sx + rvy * sy - turn_rate * offset_across) * dt;
   // The state the last step left, for what this one dissipates.
   const double closure_before = c.closure, sn_before = c.sn, fs_before = c.fs;
   const bool open_before = c.state == ContactState::open, intact_before = c.intact;
@@ -381,6 +407,16 @@ struct LengthPush {
                                            facing_slope.far_b};
     for (int role = 0; role < kContactRoles; ++role)
       for (int k = 0; k < 2; ++k) pushing->on[2 * role + k] = -w * slopes[role][k];
+  }
+  // The shear force on the gridpoint and its reaction act `r` apart: the couple fs (r x s) they
+  // leave is balanced by forces across the edge on its ends, whose work over the edge's turn is
+  // what the turn's part of the shear displacement above takes from the shear spring.
+  if (pushing) {
+    const double across = c.fs * offset_across / (len * len);  // x (dy, -dx) on b, minus on a
+    pushing->on[2] -= across * dy;
+    pushing->on[3] += across * dx;
+    pushing->on[4] += across * dy;
+    pushing->on[5] -= across * dx;
   }
   return -gap;
 }

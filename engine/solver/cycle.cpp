@@ -128,19 +128,6 @@ template <bool kMeasure>
   return applied;
 }
 
-// A contact's force on its gridpoint, and the reaction on its edge's ends split by where it
-// projects, with what its length's changes give (LengthPush): by role (kContactRoles), x and y [N/m].
-[[gnu::always_inline]] inline void contact_push(const Contact& c, const LengthPush& length, double p[2 * kContactRoles]) {
-  const double wa = -(1.0 - c.t), wb = -c.t;
-  p[0] = c.fx + length.on[0];
-  p[1] = c.fy + length.on[1];
-  p[2] = wa * c.fx + length.on[2];
-  p[3] = wa * c.fy + length.on[3];
-  p[4] = wb * c.fx + length.on[4];
-  p[5] = wb * c.fy + length.on[5];
-  for (int k = 6; k < 2 * kContactRoles; ++k) p[k] = length.on[k];
-}
-
 // What a contact adds to the applied force the ratio is measured against: its force on both sides.
 inline double contact_applied(const Contact& c) { return 2.0 * std::sqrt(c.fx * c.fx + c.fy * c.fy); }
 
@@ -274,10 +261,10 @@ void contact_pass(Mechanics& m, int begin, int end, Partials& partials) {
       const JointParams& p = params[c.material];
       const ContactLoss lost_before = lost;
       const double before = booking ? stored_in(c, p) : 0.0;
-      LengthPush length;
-      const double overlap = contact_force(c, edges, p, m.origin.data(), m.u.data(), m.v.data(), m.step, lost, &length);
+      NodePush extra;
+      const double overlap = contact_force(c, edges, p, m.origin.data(), m.u.data(), m.v.data(), m.step, lost, &extra);
       double* pushed = push + 2 * kContactRoles * static_cast<size_t>(i);
-      contact_push(c, length, pushed);
+      contact_push(c, extra, pushed);
       if (booking) [[unlikely]]
         book_contact(m, c, p, before, lost_before, lost, pushed, m.contacts.books[static_cast<size_t>(i)]);
       if constexpr (kMeasure) {
@@ -659,11 +646,11 @@ std::vector<double> standing_forces(const Mechanics& m, double* applied) {
     Contact now = c;
     const ContactEdge& e = m.faces.edges[static_cast<size_t>(c.edge)];
     ContactLoss ignored;
-    LengthPush length;
+    NodePush extra;
     contact_force(now, m.faces.edges.data(), m.joint_params[static_cast<size_t>(c.material)], m.origin.data(),
-                  m.u.data(), m.v.data(), 0.0, ignored, &length);
+                  m.u.data(), m.v.data(), 0.0, ignored, &extra);
     double p[2 * kContactRoles];
-    contact_push(now, length, p);
+    contact_push(now, extra, p);
     const int nodes[kContactRoles] = {c.node, e.a, e.b, c.far_a, c.far_b};
     for (int k = 0; k < kContactRoles; ++k) {
       if (nodes[k] < 0) continue;

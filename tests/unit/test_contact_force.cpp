@@ -391,7 +391,7 @@ struct Turning : Corner {
   // The forces on nodes 3, 4 and 5 at the current positions.
   std::array<double, 6> push() {
     ContactLoss lost;
-    LengthPush turn;
+    NodePush turn;
     contact_force(contact, edges.data(), joint, origin.data(), u.data(), v.data(), 1e-4, lost, &turn);
     given_booked += lost.given;
     return {contact.fx + turn.on[0], contact.fy + turn.on[1], turn.on[6], turn.on[7], turn.on[8], turn.on[9]};
@@ -467,6 +467,61 @@ TEST(ContactForce, SlidPastACornerTheGivenPartIsBookedAndTheRestIsWork) {
   const auto [work, change] = c.move(0.1, 0.0, -0.05, 0.0, 3000);
   EXPECT_LT(c.given_booked, 0.25 * change);  // about half of it, a loss
   EXPECT_NEAR(work - c.given_booked, -change, 1e-3 * std::fabs(change));
+}
+
+
+// Both blocks turned together as one rigid body, the gridpoint pressed 5 cm into the face: the
+// faces do not slide on each other, so its shear displacement and force stay as they were. Measured
+// as the gridpoint's velocity against the edge point's under it, the turn would shear it by the
+// overlap times the angle (5e-5 m a step here).
+TEST(ContactForce, PressedFacesTurnedTogetherDoNotShear) {
+  Corner c;
+  c.joint.tan_residual_friction = 0.6;
+  c.origin[6] = 0.5;
+  c.origin[7] = -0.05;
+  const double omega = 1e-3, dt = 1.0;  // about (0.5, 0)
+  for (int step = 0; step < 5; ++step) {
+    for (size_t i = 0; i < 4; ++i) {
+      const double x = c.origin[2 * i] + c.u[2 * i], y = c.origin[2 * i + 1] + c.u[2 * i + 1];
+      c.v[2 * i] = -omega * y;
+      c.v[2 * i + 1] = omega * (x - 0.5);
+    }
+    ContactLoss lost;
+    contact_force(c.contact, c.edges.data(), c.joint, c.origin.data(), c.u.data(), c.v.data(), dt,
+                  lost);
+    for (size_t k = 0; k < 8; ++k) c.u[k] += c.v[k] * dt;
+  }
+  EXPECT_NEAR(c.contact.us, 0.0, 1e-15);
+  EXPECT_NEAR(c.contact.fs, 0.0, 1e-6);
+}
+
+// A gridpoint pressed 5 cm into the face and sheared: its shear force on it and the reaction on
+// the edge's ends act 5 cm apart, a couple the edge's ends balance, so the contact's forces on its
+// nodes add up to no force and no moment, as two bodies pressed together push each other.
+TEST(ContactForce, TheForcesOnItsNodesHaveNoMoment) {
+  Corner c;
+  c.joint.tan_residual_friction = 0.6;
+  c.origin[6] = 0.3;
+  c.origin[7] = -0.05;
+  c.v[6] = 100.0;  // along the face: 1 cm in the step
+  ContactLoss lost;
+  NodePush extra;
+  contact_force(c.contact, c.edges.data(), c.joint, c.origin.data(), c.u.data(), c.v.data(), 1e-4, lost,
+                &extra);
+  ASSERT_GT(std::fabs(c.contact.fs), 1e4);
+  double p[2 * kContactRoles];
+  contact_push(c.contact, extra, p);
+  const int nodes[3] = {3, 0, 1};  // by role: the gridpoint, the edge's ends a and b
+  double fx = 0.0, fy = 0.0, moment = 0.0;
+  for (int role = 0; role < 3; ++role) {
+    const size_t n = static_cast<size_t>(nodes[role]);
+    fx += p[2 * role];
+    fy += p[2 * role + 1];
+    moment += c.origin[2 * n] * p[2 * role + 1] - c.origin[2 * n + 1] * p[2 * role];
+  }
+  EXPECT_NEAR(fx, 0.0, 1e-9 * std::fabs(c.contact.fs));
+  EXPECT_NEAR(fy, 0.0, 1e-9 * std::fabs(c.contact.fs));
+  EXPECT_NEAR(moment, 0.0, 1e-9 * std::fabs(c.contact.fs));
 }
 
 }  // namespace
