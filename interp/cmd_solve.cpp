@@ -331,8 +331,10 @@ const Command& solve_command() {
                "a state at the ratio counts (is converged, or judged at equilibrium) only once no body "
                "(rock its zones and intact sections join) has more than this share of the forces on it "
                "unbalanced: the ratio, a sum over the whole model, can hide a few blocks with no "
-               "equilibrium, which local damping holds creeping (tests/verification/unbalanced_body.lua). "
-               "0: not asked"},
+               "equilibrium, which the damping holds creeping (tests/verification/unbalanced_body.lua). "
+               "A body further out of balance than this, at a state at the ratio, moves undamped while "
+               "the solve goes on, until it is back within it: it slides or falls as friction and its "
+               "contacts let it, not as far as the cycles let it creep. 0: not asked"},
           },
       .run = run_solve,
       .returns = "a table: cycles (run by this call), ratio (reached), converged (true or false), stalled "

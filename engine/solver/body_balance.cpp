@@ -12,7 +12,15 @@
 
 namespace edem {
 
-BodyBalance worst_body_balance(const Mechanics& m) {
+namespace {
+
+// Each node's body (its root node) and each root's share of the forces on it unbalanced.
+struct Bodies {
+  std::vector<int> parent;
+  std::vector<double> share;  // per root node
+};
+
+Bodies find_bodies(const Mechanics& m) {
   const size_t nodes = static_cast<size_t>(m.node_count);
   std::vector<int> parent(nodes);
   std::iota(parent.begin(), parent.end(), 0);
@@ -52,18 +60,35 @@ BodyBalance worst_body_balance(const Mechanics& m) {
     for (const int node : {c.node, edge_node})
       if (in_range(node)) holding[static_cast<size_t>(find_root(parent, node))] += force;
   }
-  BodyBalance worst;
+  std::vector<double> share(nodes, 0.0);
   for (size_t n = 0; n < nodes; ++n) {
     const bool root = static_cast<size_t>(find_root(parent, static_cast<int>(n))) == n;
-    if (!root || !moving[n] || !(holding[n] > 0.0)) continue;
-    const double share = norm(net[n]) / holding[n];
-    if (share > worst.share) {
-      worst.share = share;
+    if (root && moving[n] && holding[n] > 0.0) share[n] = norm(net[n]) / holding[n];
+  }
+  return {std::move(parent), std::move(share)};
+}
+
+}  // namespace
+
+BodyBalance worst_body_balance(const Mechanics& m) {
+  const Bodies bodies = find_bodies(m);
+  BodyBalance worst;
+  for (size_t n = 0; n < bodies.share.size(); ++n) {
+    if (bodies.share[n] > worst.share) {
+      worst.share = bodies.share[n];
       worst.block = m.node_block[n];
       worst.at = {m.origin[2 * n] + m.u[2 * n], m.origin[2 * n + 1] + m.u[2 * n + 1]};
     }
   }
   return worst;
+}
+
+std::vector<double> body_share_by_node(const Mechanics& m) {
+  Bodies bodies = find_bodies(m);
+  std::vector<double> by_node(bodies.share.size(), 0.0);
+  for (size_t n = 0; n < by_node.size(); ++n)
+    by_node[n] = bodies.share[static_cast<size_t>(find_root(bodies.parent, static_cast<int>(n)))];
+  return by_node;
 }
 
 }  // namespace edem

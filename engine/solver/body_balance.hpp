@@ -3,6 +3,8 @@
 // whatever the ratio over the whole model says.
 #pragma once
 
+#include <vector>
+
 #include "core/vec2.hpp"
 
 namespace edem {
@@ -19,5 +21,9 @@ struct BodyBalance {
 // can hold rock that has no equilibrium, creeping, with a whole-model ratio below 1e-5: its
 // body's share shows it (tests/bench/RESULTS.md, "Rock that local damping holds").
 BodyBalance worst_body_balance(const Mechanics& m);
+
+// Each node's body's share (the measure above; 0 for nodes of no moving body), for solve{ balance }
+// to let the bodies with no equilibrium near move undamped.
+std::vector<double> body_share_by_node(const Mechanics& m);
 
 }  // namespace edem

@@ -300,6 +300,7 @@ void node_motion_pass(Mechanics& m, int begin, int end, const Motion& motion, bo
   const double* push = m.contacts.push.data();
   const bool with_bolts = !m.bolt_hosts.gather.empty();
   const double half_dt = 0.5 * motion.dt;
+  const char* undamped = m.undamped.size() == static_cast<size_t>(m.node_count) ? m.undamped.data() : nullptr;
   for (int first = begin; first < end; first += kChunk) {
     const int last = std::min(end, first + kChunk);
     double unbalanced = 0.0, kinetic = 0.0, num = 0.0, den = 0.0, speed = -1.0;
@@ -352,7 +353,10 @@ void node_motion_pass(Mechanics& m, int begin, int end, const Motion& motion, bo
             if (record_start) m.adaptive.r_start[dof] = force;
             const double before = vel;
             double impulse_lost;  // the force's impulse less the momentum it gave [N s/m]
-            if (motion.local) {
+            if (undamped != nullptr && undamped[n]) {
+              vel += motion.dt * force * inv_mass;
+              impulse_lost = 0.0;
+            } else if (motion.local) {
               const double damped = force - motion.alpha * std::fabs(force) * (vel > 0.0 ? 1.0 : vel < 0.0 ? -1.0 : 0.0);
               vel += motion.dt * damped * inv_mass;
               impulse_lost = (force - damped) * motion.dt;

@@ -207,6 +207,27 @@ bool stands_judged(Mechanics& m, const Mesh& mesh, SolveResult& result) {
   return broke == 0;
 }
 
+// Lets the bodies more out of balance than `balance` move undamped (Mechanics::undamped), the
+// rest damped as set. True if any is.
+bool free_unbalanced_bodies(Mechanics& m, double balance) {
+  const std::vector<double> share = body_share_by_node(m);
+  m.undamped.assign(share.size(), 0);
+  bool any = false;
+  for (size_t n = 0; n < share.size(); ++n)
+    if (share[n] > balance) m.undamped[n] = 1, any = true;
+  if (!any) m.undamped.clear();
+  return any;
+}
+
+// The bodies a solve let move undamped are damped again when it ends, however it ends.
+struct UndampedCleared {
+  explicit UndampedCleared(Mechanics& mechanics) : m(mechanics) { m.undamped.clear(); }
+  ~UndampedCleared() { m.undamped.clear(); }
+  UndampedCleared(const UndampedCleared&) = delete;
+  UndampedCleared& operator=(const UndampedCleared&) = delete;
+  Mechanics& m;
+};
+
 // A solve's state, not a cycle()'s (run with no ratio to reach).
 void note_worst_body(const Mechanics& m, SolveResult& result) {
   const BodyBalance worst = worst_body_balance(m);
@@ -386,8 +407,17 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
     return false;
   };
   // With `balance`, a state at the ratio counts only once no body is further out of balance: the
-  // ratio, a sum over the whole model, can hide a few blocks with no equilibrium.
-  const auto balanced = [&] { return balance <= 0.0 || worst_body_balance(m).share <= balance; };
+  // ratio, a sum over the whole model, can hide a few blocks with no equilibrium. Those move
+  // undamped until they are back within it: the damping is the method's, and holds such a block
+  // creeping, as far as the cycles run, where it would slide or fall (a path the release and the
+  // damping would then decide). Looked at again every measuring cycle while any moves so.
+  const UndampedCleared undamped_cleared{m};
+  bool freed = false;
+  const auto balanced = [&] {
+    if (balance <= 0.0) return true;
+    freed = free_unbalanced_bodies(m, balance);
+    return !freed;
+  };
   if (target_ratio > 0.0 && m.release.dof.empty()) {
     const Measure now = measure_state(m);
     m.info.ratio = now.applied > 0.0 ? now.unbalanced / now.applied : 0.0;
@@ -460,10 +490,12 @@ SolveResult run_solver(Mechanics& m, const Mesh& mesh, long max_cycles, double t
     // Nor is one whose excavation loads are still coming off.
     const int broke_before = result.broke;
     const bool was_settling = settling;
-    if (target_ratio > 0.0 && m.info.ratio <= goal && !cracked && !releasing && balanced() && at_goal()) {
+    const bool at_ratio = target_ratio > 0.0 && m.info.ratio <= goal && !cracked && !releasing;
+    if (at_ratio && balanced() && at_goal()) {
       result.converged = true;
       break;
     }
+    if (!at_ratio && freed && m.info.cycle % kMeasureInterval == 0) freed = free_unbalanced_bodies(m, balance);
     if (releasing || cracked || result.broke != broke_before || settling != was_settling) {
       lowest = INFINITY;
       lowest_at = result.cycles;

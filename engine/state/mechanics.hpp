@@ -189,6 +189,9 @@ struct Mechanics {
   std::vector<double> load;         // boundary tractions lumped to nodes [N/m]
   std::vector<std::uint8_t> fix;    // bit 0: x held, bit 1: y held
   std::vector<int> node_block;      // a block of the node (for messages)
+  // Nodes of bodies solve{ balance } found with no equilibrium near, moved undamped while it runs
+  // (empty: none; solver/run.cpp).
+  std::vector<char> undamped;
   std::vector<BoundarySegment> boundary;
 
   // ---- contacts

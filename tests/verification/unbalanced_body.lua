@@ -9,7 +9,8 @@
 -- its weight down the slope less the friction, over its weight and its contacts' force
 -- W cos theta / cos phi; a block its friction holds (phi = 65 deg) settles, its share falling
 -- with the ratio. Settled first with phi = 89 deg, so that the contacts carry the block's weight.
--- solve{ balance } asks each body's balance of a converged state as well.
+-- solve{ balance } asks each body's balance of a converged state as well, and lets a body further
+-- out of balance move undamped until it is back within it.
 -- The seed cavern's right wall, held creeping by local damping at a ratio below 1e-5, shows the
 -- same (tests/bench/RESULTS.md, "Rock that local damping holds").
 local check = require "edem.check"
@@ -17,8 +18,10 @@ local check = require "edem.check"
 local g, theta = 9.81, 60
 
 -- The block's share at the end of a solve to `ratio` with friction `phi`, whether that solve
--- converged, the block it names and how far the block slid in it.
-local function run_case(phi, ratio, balance)
+-- converged, the block it names and how far the block slid in it; in `mode` (static if not
+-- given), with `samples` given: the time and the block's displacement every 100 cycles of that
+-- solve.
+local function run_case(phi, ratio, balance, mode, samples)
   model{ title = ("a block on a %g deg slope, phi = %g, on a base 3,600 times its area"):format(theta, phi) }
   block{ x = {-30, 30}, y = {-30, 0} }
   block{ x = {-0.5, 0.5}, y = {0, 0.5} }
@@ -29,12 +32,40 @@ local function run_case(phi, ratio, balance)
   jassign{ material = "plane" }
   boundary{ polygon = {{-31, -31}, {31, -31}, {31, -29.9}, {-31, -29.9}}, fix = "xy" }
   gravity{ g * math.sin(math.rad(theta)), -g * math.cos(math.rad(theta)) }
-  set{ damping = "local", local_damping = 0.8 }
+  set{ mode = mode or "static", damping = "local", local_damping = 0.8 }
   solve{ ratio = 1e-7, max_cycles = 50000 }
   joint_material{ "plane", kn = 1e10, ks = 1e10, friction = phi }
   local start = gp_near(0, 0.5).ux
-  local r = solve{ ratio = ratio, max_cycles = 50000, balance = balance }
+  if samples then
+    every(100, function() samples[#samples + 1] = { info().time, gp_near(0, 0.5).ux - start } end)
+  end
+  local r = solve{ ratio = ratio, max_cycles = samples and 30000 or 50000, balance = balance }
   return r, gp_near(0, 0.5).ux - start
+end
+
+-- The acceleration of a least-squares parabola through samples {t, s}.
+local function acceleration(samples)
+  local t0, sums, rhs = samples[1][1], { 0, 0, 0, 0, 0 }, { 0, 0, 0 }
+  for _, q in ipairs(samples) do
+    local t = q[1] - t0
+    for i = 1, 5 do sums[i] = sums[i] + t ^ (i - 1) end
+    for i = 1, 3 do rhs[i] = rhs[i] + q[2] * t ^ (i - 1) end
+  end
+  local a = { { sums[1], sums[2], sums[3], rhs[1] }, { sums[2], sums[3], sums[4], rhs[2] },
+              { sums[3], sums[4], sums[5], rhs[3] } }
+  for c = 1, 3 do
+    for r = c + 1, 3 do
+      local f = a[r][c] / a[c][c]
+      for k = c, 4 do a[r][k] = a[r][k] - f * a[c][k] end
+    end
+  end
+  local x = {}
+  for r = 3, 1, -1 do
+    local v = a[r][4]
+    for k = r + 1, 3 do v = v - a[r][k] * x[k] end
+    x[r] = v / a[r][r]
+  end
+  return 2 * x[3]
 end
 
 local t, phi = math.rad(theta), math.rad(31.2)
@@ -69,4 +100,23 @@ r = run_case(65, 1e-5, 0.01)
 check.report("balance 0.01, phi = 65: converged once settled, share at most 0.01 (1 = yes)",
              (r.converged and r.cycles > 0 and r.body_share <= 0.01) and 1 or 0, 1, 0, { absolute = true })
 print(("    its share %.3g, %d cycles"):format(r.body_share, r.cycles))
+-- A body further out of balance than `balance` moves undamped while the solve goes on: the
+-- sliding block, in dynamic mode (real masses), slides as friction alone resists it, with
+--   a = g (sin theta - cos theta tan phi) = 5.525 m/s2,
+-- once the ratio has reached 1e-5 (before, it moved damped): a parabola through its displacement
+-- from 1 cm on. Without `balance`, local damping holds it creeping.
+local samples = {}
+r, slid = run_case(31.2, 1e-5, 0.1, "dynamic", samples)
+local sliding = {}
+for _, q in ipairs(samples) do if q[2] > 0.01 then sliding[#sliding + 1] = q end end
+check.report("balance 0.1, dynamic, phi = 31.2: its acceleration once free [m/s2]", acceleration(sliding),
+             g * (math.sin(t) - math.cos(t) * math.tan(phi)), 0.02)
+print(("    slid %.3g m in %d cycles (%d samples from 1 cm on), converged %s"):format(slid, r.cycles, #sliding,
+                                                                                tostring(r.converged)))
+samples = {}
+r, slid = run_case(31.2, 1e-5, nil, "dynamic", samples)
+check.report("without balance, dynamic, phi = 31.2: converged while it slides, damped (1 = yes)",
+             (r.converged and slid > 1e-4) and 1 or 0, 1, 0, { absolute = true })
+local took = samples[#samples][1] - samples[1][1]
+print(("    slid %.3g m in %.3g s: a mean acceleration of %.3g m/s2"):format(slid, took, 2 * slid / took ^ 2))
 check.finish()
