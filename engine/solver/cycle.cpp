@@ -287,8 +287,9 @@ void contact_pass(Mechanics& m, int begin, int end, Partials& partials) {
 // work of a force over the step is F . (v_old + v_new) / 2 dt, the distance the scheme moves the
 // node by between the midpoints of the last step and this one; damping takes the difference of
 // the force's impulse and the momentum it gave, at that speed. kDamped: the damping takes energy
-// out; kCoupled: contacts or bolts act on the nodes (their forces' work is summed apart).
-template <bool kMeasure, bool kDamped, bool kCoupled>
+// out; kCoupled: contacts or bolts act on the nodes (their forces' work is summed apart); kFreed:
+// some bodies move undamped (Mechanics::undamped, solve{ balance }).
+template <bool kMeasure, bool kDamped, bool kCoupled, bool kFreed>
 void node_motion_pass(Mechanics& m, int begin, int end, const Motion& motion, bool record_start,
                       Partials& partials) {
   double* acc = m.acc_force.data();
@@ -300,7 +301,7 @@ void node_motion_pass(Mechanics& m, int begin, int end, const Motion& motion, bo
   const double* push = m.contacts.push.data();
   const bool with_bolts = !m.bolt_hosts.gather.empty();
   const double half_dt = 0.5 * motion.dt;
-  const char* undamped = m.undamped.size() == static_cast<size_t>(m.node_count) ? m.undamped.data() : nullptr;
+  const char* undamped = m.undamped.data();
   for (int first = begin; first < end; first += kChunk) {
     const int last = std::min(end, first + kChunk);
     double unbalanced = 0.0, kinetic = 0.0, num = 0.0, den = 0.0, speed = -1.0;
@@ -343,6 +344,8 @@ void node_motion_pass(Mechanics& m, int begin, int end, const Motion& motion, bo
       const double mass = m.mass[nn];
       if (mass > 0.0) {
         const double inv_mass = 1.0 / mass;
+        bool free = false;
+        if constexpr (kFreed) free = undamped[n] != 0;
         for (int c = 0; c < 2; ++c) {
           const size_t dof = 2 * nn + static_cast<size_t>(c);
           const double force = f[c] + m.weight[dof] + m.load[dof];
@@ -353,7 +356,7 @@ void node_motion_pass(Mechanics& m, int begin, int end, const Motion& motion, bo
             if (record_start) m.adaptive.r_start[dof] = force;
             const double before = vel;
             double impulse_lost;  // the force's impulse less the momentum it gave [N s/m]
-            if (undamped != nullptr && undamped[n]) {
+            if (free) {
               vel += motion.dt * force * inv_mass;
               impulse_lost = 0.0;
             } else if (motion.local) {
@@ -427,11 +430,19 @@ void node_motion_pass(Mechanics& m, int begin, int end, const Motion& motion, bo
 // One node pass, its kind chosen once a pass.
 void node_motion(Mechanics& m, int begin, int end, const Motion& motion, bool record_start, bool measure,
                  bool coupled, Partials& partials) {
+  const bool freed = motion.damped && m.undamped.size() == static_cast<size_t>(m.node_count);
   const auto run = [&]<bool kMeasure, bool kDamped>() {
-    if (coupled)
-      node_motion_pass<kMeasure, kDamped, true>(m, begin, end, motion, record_start, partials);
-    else
-      node_motion_pass<kMeasure, kDamped, false>(m, begin, end, motion, record_start, partials);
+    if (coupled) {
+      if (kDamped && freed)
+        node_motion_pass<kMeasure, kDamped, true, true>(m, begin, end, motion, record_start, partials);
+      else
+        node_motion_pass<kMeasure, kDamped, true, false>(m, begin, end, motion, record_start, partials);
+    } else {
+      if (kDamped && freed)
+        node_motion_pass<kMeasure, kDamped, false, true>(m, begin, end, motion, record_start, partials);
+      else
+        node_motion_pass<kMeasure, kDamped, false, false>(m, begin, end, motion, record_start, partials);
+    }
   };
   if (measure)
     motion.damped ? run.template operator()<true, true>() : run.template operator()<true, false>();
