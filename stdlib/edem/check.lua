@@ -4,6 +4,7 @@
 --   check.report("wall u [m]", measured, expected, 0.02)        -- relative tolerance
 --   check.report("ratio", r, 0, 1e-6, { absolute = true })     -- absolute tolerance
 --   check.finish()   -- raises an error (the script fails) if any check failed
+--   check.acceleration(samples, from, to)  -- a of s = s0 + v0 t + a t^2 / 2 fitted to {t, s}
 --
 -- Each report prints one line: name, measured, expected, error and tolerance, ok or FAIL.
 -- With `--set report=DIR` (scripts/make-docs.sh), finish() also writes the script's section of
@@ -74,6 +75,37 @@ local function write_section(dir)
            series = { { name = "error / tolerance", x = x, y = ratio },
                       { name = "limit", x = { 1, math.max(#rows, 2) }, y = { 1, 1 } } } }
   end
+end
+
+-- Least-squares fit of s = s0 + v0 t + a t^2 / 2 over samples {t, s} with t in [from, to]
+-- (both optional): a.
+function check.acceleration(samples, from, to)
+  from, to = from or -math.huge, to or math.huge
+  local S = {}
+  for i = 1, 3 do S[i] = { 0, 0, 0, 0 } end
+  for _, p in ipairs(samples) do
+    local t, s = p[1], p[2]
+    if t >= from and t <= to then
+      local basis = { 1, t, t * t / 2 }
+      for i = 1, 3 do
+        for j = 1, 3 do S[i][j] = S[i][j] + basis[i] * basis[j] end
+        S[i][4] = S[i][4] + basis[i] * s
+      end
+    end
+  end
+  for k = 1, 3 do  -- Gauss elimination, 3 x 3
+    for i = k + 1, 3 do
+      local f = S[i][k] / S[k][k]
+      for j = k, 4 do S[i][j] = S[i][j] - f * S[k][j] end
+    end
+  end
+  local x = {}
+  for i = 3, 1, -1 do
+    local sum = S[i][4]
+    for j = i + 1, 3 do sum = sum - S[i][j] * x[j] end
+    x[i] = sum / S[i][i]
+  end
+  return x[3]
 end
 
 function check.finish()

@@ -86,35 +86,6 @@ local function run_case(case)
   return samples, past
 end
 
--- Least-squares fit of s = s0 + v0 t + a t^2 / 2 over samples with t in [from, to].
-local function fit_acceleration(samples, from, to)
-  local S = {}
-  for i = 1, 3 do S[i] = { 0, 0, 0, 0 } end
-  for _, p in ipairs(samples) do
-    local t, s = p[1], p[2]
-    if t >= from and t <= to then
-      local basis = { 1, t, t * t / 2 }
-      for i = 1, 3 do
-        for j = 1, 3 do S[i][j] = S[i][j] + basis[i] * basis[j] end
-        S[i][4] = S[i][4] + basis[i] * s
-      end
-    end
-  end
-  for k = 1, 3 do  -- Gauss elimination, 3 x 3
-    for i = k + 1, 3 do
-      local f = S[i][k] / S[k][k]
-      for j = k, 4 do S[i][j] = S[i][j] - f * S[k][j] end
-    end
-  end
-  local x = {}
-  for i = 3, 1, -1 do
-    local sum = S[i][4]
-    for j = i + 1, 3 do sum = sum - S[i][j] * x[j] end
-    x[i] = sum / S[i][i]
-  end
-  return x[3]
-end
-
 local function acceleration(theta, phi)
   return g * (math.sin(math.rad(theta)) - math.cos(math.rad(theta)) * math.tan(math.rad(phi)))
 end
@@ -122,7 +93,7 @@ end
 for _, theta in ipairs({ 30, 40 }) do
   local samples = run_case{ theta = theta, phi = 20, settle_friction = 89, seconds = 1.0 }
   check.report(("theta = %g, phi = 20: acceleration [m/s2]"):format(theta),
-               fit_acceleration(samples, 0.2, 1.0), acceleration(theta, 20), 0.01)
+               check.acceleration(samples, 0.2, 1.0), acceleration(theta, 20), 0.01)
 end
 
 local function elastic(shear_stiffness)
@@ -167,7 +138,7 @@ print(("  the 2 m x 1 m block at phi = 29.9 (settled at 30.1) slid %.4g m by 2 s
   moved(samples, 2.0), acceleration(30, 29.9) * 2.0))
 samples = run_case{ theta = 30, phi = 29.9, settle_friction = 89, height = flat, kn = soft, seconds = 2.0 }
 print(("  slid %.4g m by 2 s, a t^2 / 2 = %.4g m"):format(moved(samples, 2.0), acceleration(30, 29.9) * 2.0))
-check.report("theta = 30, phi = 29.9: acceleration [m/s2]", fit_acceleration(samples, 0.2, 2.0),
+check.report("theta = 30, phi = 29.9: acceleration [m/s2]", check.acceleration(samples, 0.2, 2.0),
              acceleration(30, 29.9), 0.01)
 
 local c_crit = mass * acceleration(30, 20) / width
@@ -186,17 +157,17 @@ check.report("cohesion kept, c = 1.05 c_crit: stable (1 = yes)", stable(samples,
 samples = run_case{ theta = 30, phi = 20, settle_friction = 89, cohesion = 0.95 * c_crit, keep_cohesion = true,
                     height = flat, kn = soft, seconds = 2.0 }
 print(("  cohesion kept, c = 0.95 c_crit: acceleration %.5g m/s2, closed form %.5g"):format(
-  fit_acceleration(samples, 0.2, 2.0), acceleration(30, 20) - 0.95 * c_crit * width / mass))
+  check.acceleration(samples, 0.2, 2.0), acceleration(30, 20) - 0.95 * c_crit * width / mass))
 check.report("cohesion kept, c = 0.95 c_crit: slides (1 = yes)",
              moved(samples, 2.0) > 100 * elastic(soft) and 1 or 0, 1, 0, { absolute = true })
 samples = run_case{ theta = 30, phi = 20, settle_friction = 89, cohesion = 0.5 * c_crit, keep_cohesion = true,
                     height = flat, kn = soft, seconds = 2.0 }
-check.report("cohesion kept, c = 0.5 c_crit: acceleration [m/s2]", fit_acceleration(samples, 0.2, 2.0),
+check.report("cohesion kept, c = 0.5 c_crit: acceleration [m/s2]", check.acceleration(samples, 0.2, 2.0),
              acceleration(30, 20) - 0.5 * c_crit * width / mass, 0.01)
 -- Brittle cohesion (the default, residual zero): 0.95 c_crit fails and slides as without cohesion.
 samples = run_case{ theta = 30, phi = 20, settle_friction = 89, cohesion = 0.95 * c_crit, height = flat,
                     kn = soft, seconds = 2.0 }
-check.report("brittle, c = 0.95 c_crit: acceleration [m/s2]", fit_acceleration(samples, 0.2, 2.0),
+check.report("brittle, c = 0.95 c_crit: acceleration [m/s2]", check.acceleration(samples, 0.2, 2.0),
              acceleration(30, 20), 0.01)
 -- Brittle at 1.05 c_crit is not the rigid block's answer and is not run: the base of this
 -- elastic block is 5 % more stressed at its ends than on average (the base shear acts a

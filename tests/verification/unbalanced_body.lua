@@ -43,31 +43,6 @@ local function run_case(phi, ratio, balance, mode, samples)
   return r, gp_near(0, 0.5).ux - start
 end
 
--- The acceleration of a least-squares parabola through samples {t, s}.
-local function acceleration(samples)
-  local t0, sums, rhs = samples[1][1], { 0, 0, 0, 0, 0 }, { 0, 0, 0 }
-  for _, q in ipairs(samples) do
-    local t = q[1] - t0
-    for i = 1, 5 do sums[i] = sums[i] + t ^ (i - 1) end
-    for i = 1, 3 do rhs[i] = rhs[i] + q[2] * t ^ (i - 1) end
-  end
-  local a = { { sums[1], sums[2], sums[3], rhs[1] }, { sums[2], sums[3], sums[4], rhs[2] },
-              { sums[3], sums[4], sums[5], rhs[3] } }
-  for c = 1, 3 do
-    for r = c + 1, 3 do
-      local f = a[r][c] / a[c][c]
-      for k = c, 4 do a[r][k] = a[r][k] - f * a[c][k] end
-    end
-  end
-  local x = {}
-  for r = 3, 1, -1 do
-    local v = a[r][4]
-    for k = r + 1, 3 do v = v - a[r][k] * x[k] end
-    x[r] = v / a[r][r]
-  end
-  return 2 * x[3]
-end
-
 local t, phi = math.rad(theta), math.rad(31.2)
 local share = (math.sin(t) - math.cos(t) * math.tan(phi)) / (1 + math.cos(t) / math.cos(phi))
 local r, slid = run_case(31.2, 1e-5)
@@ -109,7 +84,8 @@ local samples = {}
 r, slid = run_case(31.2, 1e-5, 0.1, "dynamic", samples)
 local sliding = {}
 for _, q in ipairs(samples) do if q[2] > 0.01 then sliding[#sliding + 1] = q end end
-check.report("balance 0.1, dynamic, phi = 31.2: its acceleration once free [m/s2]", acceleration(sliding),
+check.report("balance 0.1, dynamic, phi = 31.2: its acceleration once free [m/s2]",
+             check.acceleration(sliding),
              g * (math.sin(t) - math.cos(t) * math.tan(phi)), 0.02)
 print(("    slid %.3g m in %d cycles (%d samples from 1 cm on), converged %s"):format(slid, r.cycles, #sliding,
                                                                                 tostring(r.converged)))
