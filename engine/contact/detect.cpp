@@ -1050,8 +1050,9 @@ void cap_at_peak(Contact& c, const JointParams& p, double length) {
 // found. One of a corner's two contacts in a corner (Contact::split) follows the half-edge it was
 // given, along its own face and up to where that face meets the pair's other: held as found, its
 // length would jump at the next detection (as a detection measures it, give_half_edges) once its
-// gridpoint had moved along the face, and its force with it.
-void follow_facing(const Mechanics& m, size_t k, const Found& f, Contact& c) {
+// gridpoint had moved along the face, and its force with it. Returns the facing length [m] (0: none
+// measured).
+double follow_facing(const Mechanics& m, size_t k, const Found& f, Contact& c) {
   const ContactBoundary& cb = m.faces;
   int before = -1, after = -1, own = 0;
   for (int i = cb.edge_first[k]; i < cb.edge_first[k + 1]; ++i) {
@@ -1061,23 +1062,46 @@ void follow_facing(const Mechanics& m, size_t k, const Found& f, Contact& c) {
     if (e.b == c.node) before = e.a;
     if (e.a == c.node) after = e.b;
   }
-  if (own != 2 || before < 0 || after < 0) return;
+  if (own != 2 || before < 0 || after < 0) return 0.0;
   c.far_a = before;
   c.far_b = after;
   if (c.split) {
-    if (f.half_a == f.half_b) return;  // both, or neither: not one half-edge's length
+    if (f.half_a == f.half_b) return 0.0;  // both, or neither: not one half-edge's length
     c.half_a = f.half_a;
     c.half_b = f.half_b;
     c.pair_at_a = f.pair_at_a;
     c.pair_at_b = f.pair_at_b;
   }
-  if (!(c.length > 0.0)) return;
+  if (!(c.length > 0.0)) return 0.0;
   const ContactEdge& edge = cb.edges[static_cast<size_t>(c.edge)];
   const Vec2 p = at(m, c.node), fa = at(m, before), fb = at(m, after), a = at(m, edge.a), b = at(m, edge.b);
   const FacingNodes nodes{{p.x, p.y}, {fa.x, fa.y}, {fb.x, fb.y},  {a.x, a.y}, {b.x, b.y},
                           edge.corner_a || c.pair_at_a, edge.corner_b || c.pair_at_b, c.half_a, c.half_b};
   const double facing = facing_length(nodes, nullptr);
   if (facing > 0.0 && c.length <= kMostPerFacing * facing) c.per_facing = c.length / facing;
+  return facing;
+}
+
+// How far a contact's length as a detection measures it may stray from the length it follows
+// (Contact::per_facing) before the detection takes its measure [-]: see follows_as_before.
+constexpr double kLengthStray = 0.1;
+
+// Whether a contact found again goes on following its facing length at the share of it it had
+// (Contact::per_facing) rather than at the share the detection finds (`c`): its gridpoint's own
+// edges and the half-edges it counts are the same, and the detection's length is within
+// kLengthStray of the one it follows. A detection measures a length otherwise than the facing
+// length follows it (it shares a half-edge among the faces of the blocks it lies over, by how
+// squarely it faces each, and counts a half-edge lying along the face); taken at every detection,
+// a share that wavers as the blocks rock would make the length, the stored energy and the force
+// jump at each, unpaid: a corner pressed into a corner makes energy at every detection and rings
+// on. Strayed further (a half-edge come to lie over the block, another face come near), the
+// detection's length holds, and its jump is booked as energy made.
+bool follows_as_before(const Contact& old, const Contact& c, double facing) {
+  if (!(old.per_facing > 0.0 && facing > 0.0)) return false;
+  if (c.far_a != old.far_a || c.far_b != old.far_b || c.split != old.split || c.half_a != old.half_a ||
+      c.half_b != old.half_b || c.pair_at_a != old.pair_at_a || c.pair_at_b != old.pair_at_b)
+    return false;
+  return std::fabs(c.length - old.per_facing * facing) <= kLengthStray * old.per_facing * facing;
 }
 
 // How far from a gridpoint its contacts are looked for, at most [m].
@@ -1186,7 +1210,7 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
       c.face = f.face;
       c.split = f.split;
       c.limit = cb.reach[k];
-      follow_facing(m, k, f, c);
+      const double facing = follow_facing(m, k, f, c);
       const ContactEdge& edge = cb.edges[static_cast<size_t>(f.edge)];
       c.material = edge.material;
       if (c.material < 0)  // the gridpoint's own side may have one
@@ -1253,6 +1277,10 @@ void find_contacts(Mechanics& m, const BlockGrid& grid, const std::vector<char>&
       // What it stores as a stress given below finds it, for the prestress that stress adds.
       ContactEnergy had = kept ? contact_energy(*old, m.joint_params[static_cast<size_t>(old->material)]) : ContactEnergy{};
       if (kept) {
+        if (!carried_on && set.facing_known && follows_as_before(*old, c, facing)) {
+          c.per_facing = old->per_facing;
+          c.length = old->per_facing * facing;
+        }
         keep_state(c, *old, p);
         // Its gridpoint's own boundary has changed: a crack broke at it (what that changes in its
         // length and energy goes with the crack's new faces, booked as the stress they are given

@@ -118,7 +118,9 @@ struct Contact {
   double length = 0.0; // [m]
   // The ends of the gridpoint's own edges, before it (far_a) and after it (far_b) along its loop,
   // and its length per unit facing length (facing_length.hpp), which it follows between
-  // detections. 0: held as found (a gridpoint where glued blocks meet, with more own edges).
+  // detections, and across them while a detection measures its length within 10 % of that
+  // (detect.cpp, follows_as_before). 0: held as found (a gridpoint where glued blocks meet, with
+  // more own edges).
   int far_a = -1, far_b = -1;
   double per_facing = 0.0;
   // Whether its facing length counts the half-edge towards far_a (far_b): one of a corner's two

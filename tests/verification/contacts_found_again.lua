@@ -1,10 +1,11 @@
 -- A detection finds each contact as it was held: contacts found again carry the forces they had.
 --
 -- Between detections a contact's length follows how its gridpoint's half-edges face the edge
--- (engine/contact/facing_length.hpp); a detection measures it afresh (engine/contact/detect.cpp).
--- Where the two disagree, a state that was settled is pushed off its equilibrium at the next
--- detection: its contacts' forces jump with their lengths, and the energy balance books what the
--- jump makes. A re-preparation (any set{} between cycles) detects every contact afresh.
+-- (engine/contact/facing_length.hpp); a detection measures it afresh (engine/contact/detect.cpp)
+-- and keeps the length followed while its measure is within 10 % of it (rocked_corner.lua).
+-- Where the two disagree further, a state that was settled is pushed off its equilibrium at the
+-- next detection: its contacts' forces jump with their lengths, and the energy balance books what
+-- the jump makes. A re-preparation (any set{} between cycles) detects every contact afresh.
 --
 -- The corner_in_corner wedge: an 8 m x 8 m square cut by two joints from its centre to its left
 -- side, a wedge of 53 deg (x < 0) in the concave corner of the rest, the seed's consistent joints
