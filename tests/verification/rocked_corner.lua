@@ -56,7 +56,8 @@ end
 print(("the lowest corner pressed in %.4f m"):format(deepest))
 
 -- The switch to dynamic mode prepares the model again, which measures every contact afresh: the
--- balance starts after its first cycle.
+-- square's corner, whose followed length strayed 12 % from the measure over the solve, takes the
+-- measure there (-115 J/m). The balance starts after that first cycle: it checks the rocking.
 set{ mode = "dynamic", damping = "none" }
 local w, n = 2 * math.pi / period, 0
 every(1, function()
@@ -72,7 +73,8 @@ local e = energy()
 print(("balance over %d periods [J/m]: kinetic %.4g, strain %.4g, contacts %.4g, boundary %.4g, slip %.4g; error "
        .. "%.4g (zones %.4g, contacts %.4g), largest term %.4g"):format(periods, e.kinetic, e.strain, e.contact,
        e.boundary, e.slip, e.error, e.zone_error, e.contact_error, e.largest))
-check.report("the lowest corner pressed in [m] (at least 2 cm)", deepest > 0.02 and 1 or 0, 1, 0, { absolute = true })
+check.report("the lowest corner pressed in at least 2 cm (1 = yes)", deepest > 0.02 and 1 or 0, 1, 0,
+             { absolute = true })
 check.report("the contacts' energy error at its largest / the largest term", worst / e.largest, 0, 0.005,
              { absolute = true })
 check.finish()
