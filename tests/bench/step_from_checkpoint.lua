@@ -7,34 +7,38 @@
 --        run tests/bench/step_from_checkpoint.lua
 --
 -- Settings: file (the checkpoint), step (the region to dig, or several separated by commas, dug in
--- turn; "" digs nothing and solves on), on (true: a step short of its ratio is solved on to ten
--- times it within 40,000 cycles more, and judged there, as case.lua does judged at equilibrium),
--- damping (local, 0.8, adaptive, or none), release and cycles (the solve's limit past the release), ratio
--- (the solve's goal, 1e-5 as case.lua's steps), the
--- point followed (x, y: the right wall at the springline), every (cycles between the trace's
--- lines), save_to (a checkpoint of the state the solve ends at; "" none), muck (blocks loose at two
--- checks 200 cycles apart are dug out, edem.loose, as case.lua's default does; case.lua also keeps
--- rock of steps not yet dug, which one step from a checkpoint cannot tell apart), by_contact (N > 0:
--- each contact keeps its own energy balance, energy{ by_contact }, and the N that made or lost the
--- most are listed at the end: where an energy error arises), nearest (N > 0: no section breaks,
--- and the N intact ones nearest their strength at the end are listed, each with its overstress,
--- as judge{ most } ranks them: 1 breaks it), neighbours (wait or break: judge{ neighbours } for
--- the steps, judged at equilibrium with judge{}'s other keys at their defaults; "": as the
--- checkpoint has it). The trace gives the
--- energies from the start (slip and damping: what they took), the point's movement and adaptive
--- damping's rate c = 2 omega (info().damping_rate).
+-- turn; "" digs nothing and solves on), on (true: a step short of its ratio is solved on as
+-- case.lua does judged at equilibrium: under adaptive damping, 40,000 cycles more to the ratio,
+-- then 40,000 to ten times it, and judged there), damping (local, 0.8, adaptive, none, or
+-- checkpoint: as saved, with no set{}, the one that follows case.lua's run), release and cycles (the
+-- solve's limit past the release), ratio (the solve's goal, 1e-5 as case.lua's steps), the point
+-- followed (x, y: the right wall at the springline), every (cycles between the trace's lines),
+-- save_to (a checkpoint of the state the solve ends at; "" none), muck (blocks loose at two checks
+-- 200 cycles apart are dug out, edem.loose, and rock of steps not yet dug stays, as case.lua's
+-- default does), by_contact (N > 0: each contact keeps its own energy balance, energy{ by_contact },
+-- and the N that made or lost the most are listed at the end: where an energy error arises),
+-- nearest (N > 0: no section breaks, and the N intact ones nearest their strength at the end are
+-- listed, each with its overstress, as judge{ most } ranks them: 1 breaks it), neighbours (wait or
+-- break: judge{ neighbours } for the steps, judged at equilibrium with judge{}'s other keys at their
+-- defaults; "": as the checkpoint has it). The trace gives the energies from the start (slip and
+-- damping: what they took), the point's movement and adaptive damping's rate c = 2 omega
+-- (info().damping_rate).
 local s = settings{ file = "", step = "", damping = "local", release = 100, cycles = 40000, x = 12.0, y = 0.0,
                     every = 2000, save_to = "", muck = true, on = false, by_contact = 0,
                     nearest = 0, neighbours = "", ratio = 1e-5 }
 if s.file == "" then error("give --set file=CHECKPOINT.h5", 0) end
 restore(s.file)
 if s.neighbours ~= "" then judge{ at = "equilibrium", neighbours = s.neighbours } end
-if s.damping == "local" then
+-- set{} prepares the model again, which measures afresh a contact whose followed length has strayed
+-- more than 10 % from the detection's: "checkpoint" keeps the saved damping and case.lua's path.
+if s.damping == "checkpoint" then
+  -- as saved
+elseif s.damping == "local" then
   set{ damping = "local", local_damping = 0.8 }
 elseif s.damping == "adaptive" or s.damping == "none" then
   set{ damping = s.damping }
 else
-  error(("damping must be local, adaptive or none, got %s"):format(s.damping), 0)
+  error(("damping must be local, adaptive, none or checkpoint, got %s"):format(s.damping), 0)
 end
 
 local point = gp_near(s.x, s.y)
@@ -58,9 +62,19 @@ every(s.every, function(cycle)
 end)
 local fallen = 0
 if s.muck then
+  -- As case.lua: a block goes once it was loose at the check before too, and rock of a cavern step
+  -- not dug yet (a block in a warhead_ region other than those dug here) stays for its step.
+  local digging, later = {}, {}
+  for name in s.step:gmatch("[^,]+") do digging[name] = true end
+  for b in blocks() do
+    for _, name in ipairs(b.regions) do
+      if name:find("^warhead_") and not digging[name] then later[b.id] = true end
+    end
+  end
   local stays_loose = require("edem.loose").tracker()
+  stays_loose(function() return false end)  -- the blocks loose at the checkpoint count as loose before
   every(200, function()
-    for _, b in ipairs(stays_loose(function(_, before) return before end)) do
+    for _, b in ipairs(stays_loose(function(b, before) return before and not later[b.id] end)) do
       excavate{ block = b.id }
       fallen = fallen + 1
     end
@@ -74,8 +88,13 @@ for _, name in ipairs(steps) do
   if name ~= "" then excavate{ region = name, release = s.release } end
   local r = solve{ ratio = s.ratio, max_cycles = s.release + s.cycles }
   if not r.converged and s.on then
-    local again = solve{ ratio = 1e-4, max_cycles = 40000 }
-    r.cycles, r.converged, r.ratio = r.cycles + again.cycles, again.converged, again.ratio
+    if s.damping == "local" then set{ damping = "adaptive" } end
+    for _, ratio in ipairs{ s.ratio, 10 * s.ratio } do
+      local again = solve{ ratio = ratio, max_cycles = 40000 }
+      r.cycles, r.converged, r.ratio = r.cycles + again.cycles, again.converged, again.ratio
+      if again.converged then break end
+    end
+    if s.damping == "local" then set{ damping = "local", local_damping = 0.8 } end
   end
   print(("%s%s: %s after %d cycles (ratio %.3g), %d cracks, %d blocks mucked out; the point moved %.4f m "
          .. "towards the axis; kinetic energy at most %.4g J/m (at the trace's lines); %.0f s"):format(
