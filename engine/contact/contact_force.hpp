@@ -257,19 +257,36 @@ struct NodePush {
   // A tip whose edges all lead out past a sharp corner of the edge (Contact::leads_past_a, b)
   // is over the block only short of it: pressed in by d, its overlap runs about 2 wedge d from its
   // apex towards the corner, deepest at the apex, and only the part before the corner presses on
-  // the block: its share is that part of the overlap's area, 1 that far from the corner, 0 at the
-  // corner and beyond. The fade above would have the face's line, run on past the corner, push
-  // the corner of a block that stands beside, on the block next to this one (a slipped crossing).
-  // Short of the corner a length of its own (half-edges along the face) carries in full: only the
-  // tip's part beyond it is cut.
+  // the block: its share grows with that part of the chord, q, as a smooth step, 1 that far from
+  // the corner, 0 at the corner and beyond, level at both ends as the fade's is. The fade above
+  // would have the face's line, run on past the corner, push the corner of a block that stands
+  // beside, on the block next to this one (a slipped crossing). Short of the corner a length of
+  // its own (half-edges along the face) carries in full: only the tip's part beyond it is cut.
+  // The share hangs on the gridpoint's distance from the corner and on its depth; its slopes with
+  // them (per metre) give the push that makes the force its energy's slope (below). Level at the
+  // corner, that push is nothing there, where the contact ends: a push that stopped short there
+  // would do work at every crossing of a gridpoint rocking over the corner.
+  double cut_by_place = 0.0, cut_by_depth = 0.0;
+  bool corner_at_a = false;
   if (c.leads_past_a || c.leads_past_b) [[unlikely]] {
-    const double from_corner = std::min(c.leads_past_a ? t_line * len : INFINITY,
-                                        c.leads_past_b ? (1.0 - t_line) * len : INFINITY);
-    const double tip = c.wedge * std::clamp(-gap, 0.0, c.limit);
-    const double beyond_corner = 2.0 * tip > from_corner ? 1.0 - from_corner / (2.0 * tip) : 0.0;
-    const double tip_share = from_corner > 0.0 ? 1.0 - beyond_corner * beyond_corner : 0.0;
+    const double to_a = c.leads_past_a ? t_line * len : INFINITY;
+    const double to_b = c.leads_past_b ? (1.0 - t_line) * len : INFINITY;
+    const double from_corner = std::min(to_a, to_b);
+    corner_at_a = to_a <= to_b;
+    const double depth = -gap;
+    const double tip = c.wedge * std::clamp(depth, 0.0, c.limit);
+    const double tip_by_depth = depth > 0.0 && depth < c.limit ? c.wedge : 0.0;
+    const double q = tip > 0.0 ? std::clamp(from_corner / (2.0 * tip), 0.0, 1.0) : 1.0;
+    const double tip_share = from_corner > 0.0 ? q * q * (3.0 - 2.0 * q) : 0.0;
     const double own_share = !(from_corner > 0.0) ? 0.0 : tip > c.length ? share * c.length / tip : share;
-    share = std::max(own_share, std::min(share, tip_share));
+    const double cut = std::min(share, tip_share);
+    if (from_corner > 0.0 && own_share >= cut) {
+      if (tip > c.length) cut_by_depth = -own_share / tip * tip_by_depth;
+    } else if (from_corner > 0.0 && tip_share < share && q < 1.0) {
+      cut_by_place = 3.0 * q * (1.0 - q) / tip;
+      cut_by_depth = -6.0 * q * q * (1.0 - q) / tip * tip_by_depth;
+    }
+    share = std::max(own_share, cut);
   }
   // The gridpoint's velocity along the face against that of the edge's block where the gridpoint
   // is: the edge point's under it, and what the edge's turn adds at the gridpoint's offset `r`
@@ -372,6 +389,30 @@ struct NodePush {
     c.fy += push * sy;
     lost.given += c.given * c.length * (share - share_before);
   }
+  // A tip short of a sharp corner stores share x what its springs would over the whole tip, and its
+  // share hangs on where it is: the force is that energy's slope, a push along the edge towards
+  // the corner, where the share falls, and the share's change with the depth added to the normal
+  // force. Without it the force would not be the slope of any energy, and two corners pressed into
+  // each other at a slipped joint crossing, rocking, would make energy at every round. As with the
+  // fade, only what the springs store beyond the given state: the given part's change goes to the
+  // given stress's account. Its reaction along the edge goes to the corner, whose place sets the
+  // distance, and the couple it leaves with it, as the shear force's (below).
+  double along = 0.0;
+  if (!fading && (cut_by_place != 0.0 || cut_by_depth != 0.0) && share > 0.0) [[unlikely]] {
+    const double whole = std::max(0.0, contact_energy(c, p).normal / share - c.length * c.given);
+    along = -whole * cut_by_place * (corner_at_a ? 1.0 : -1.0);
+    const double out = whole * cut_by_depth;
+    c.fx += along * sx + out * nx;
+    c.fy += along * sy + out * ny;
+    lost.given += c.given * c.length * (share - share_before);
+    if (pushing) {
+      const double moved = corner_at_a ? c.t : -(1.0 - c.t);  // of the push's reaction, from the far end
+      pushing->on[2] -= moved * along * sx;
+      pushing->on[3] -= moved * along * sy;
+      pushing->on[4] += moved * along * sx;
+      pushing->on[5] += moved * along * sy;
+    }
+  }
   // Its energy is its length times what it stores per metre, at the closure and shear stress it
   // has (a tip pressed past its own length: up to the overlap where the tip's took over): the
   // slope of that energy with its facing length pushes the nodes that set it. Without it the
@@ -410,9 +451,10 @@ struct NodePush {
   }
   // The shear force on the gridpoint and its reaction act `r` apart: the couple fs (r x s) they
   // leave is balanced by forces across the edge on its ends, whose work over the edge's turn is
-  // what the turn's part of the shear displacement above takes from the shear spring.
+  // what the turn's part of the shear displacement above takes from the shear spring. A tip's push
+  // along the edge leaves the same couple, and turned with the edge it stores nothing more.
   if (pushing) {
-    const double across = c.fs * offset_across / (len * len);  // x (dy, -dx) on b, minus on a
+    const double across = (c.fs + along) * offset_across / (len * len);  // x (dy, -dx) on b, minus on a
     pushing->on[2] -= across * dy;
     pushing->on[3] += across * dx;
     pushing->on[4] += across * dy;
