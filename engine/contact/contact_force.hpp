@@ -266,7 +266,7 @@ struct NodePush {
   // them (per metre) give the push that makes the force its energy's slope (below). Level at the
   // corner, that push is nothing there, where the contact ends: a push that stopped short there
   // would do work at every crossing of a gridpoint rocking over the corner.
-  double cut_by_place = 0.0, cut_by_depth = 0.0;
+  double cut_by_place = 0.0, cut_by_depth = 0.0, share_by_length = 0.0;
   bool corner_at_a = false;
   if (c.leads_past_a || c.leads_past_b) [[unlikely]] {
     const double to_a = c.leads_past_a ? t_line * len : INFINITY;
@@ -278,15 +278,32 @@ struct NodePush {
     const double tip_by_depth = depth > 0.0 && depth < c.limit ? c.wedge : 0.0;
     const double q = tip > 0.0 ? std::clamp(from_corner / (2.0 * tip), 0.0, 1.0) : 1.0;
     const double tip_share = from_corner > 0.0 ? q * q * (3.0 - 2.0 * q) : 0.0;
-    const double own_share = !(from_corner > 0.0) ? 0.0 : tip > c.length ? share * c.length / tip : share;
+    const double own = !(from_corner > 0.0) ? 0.0 : tip > c.length ? share * c.length / tip : share;
     const double cut = std::min(share, tip_share);
-    if (from_corner > 0.0 && own_share >= cut) {
-      if (tip > c.length) cut_by_depth = -own_share / tip * tip_by_depth;
-    } else if (from_corner > 0.0 && tip_share < share && q < 1.0) {
-      cut_by_place = 3.0 * q * (1.0 - q) / tip;
-      cut_by_depth = -6.0 * q * q * (1.0 - q) / tip * tip_by_depth;
+    // Slopes of the own length's share and of the cut tip's, with depth, place and own length.
+    const double own_by_depth = from_corner > 0.0 && tip > c.length ? -own / tip * tip_by_depth : 0.0;
+    const double own_by_length = from_corner > 0.0 && tip > c.length ? share / tip : 0.0;
+    const bool cut_moves = from_corner > 0.0 && tip_share < share && q < 1.0;
+    const double cut_by_q_place = cut_moves ? 3.0 * q * (1.0 - q) / tip : 0.0;
+    const double cut_by_q_depth = cut_moves ? -6.0 * q * q * (1.0 - q) / tip * tip_by_depth : 0.0;
+    // The larger of the two, its corner rounded over a band a tenth of their mean wide where both
+    // move: where one takes over from the other the share's slope must not jump, or a gridpoint
+    // rocking across the switch is pushed by a step that one sample a cycle integrates wrongly,
+    // energy made each cycle. Where either is at its cap it is the share, as given.
+    const double band = cut_moves && tip > c.length ? 0.05 * (own + cut) : 0.0, apart = own - cut;
+    const double overlap_of_band = std::max(0.0, band - std::fabs(apart));
+    share = std::max(own, cut);
+    double by_own = apart > 0.0 ? 1.0 : 0.0, by_cut = 1.0 - by_own;
+    if (overlap_of_band > 0.0) {
+      const double h = overlap_of_band, side = apart > 0.0 ? 1.0 : -1.0;
+      share += h * h / (4.0 * band);
+      const double level = 0.05 * h * h / (4.0 * band * band);  // through the band's width
+      by_own += h * (0.05 - side) / (2.0 * band) - level;
+      by_cut += h * (0.05 + side) / (2.0 * band) - level;
     }
-    share = std::max(own_share, cut);
+    cut_by_place = by_cut * cut_by_q_place;
+    cut_by_depth = by_own * own_by_depth + by_cut * cut_by_q_depth;
+    share_by_length = by_own * own_by_length;
   }
   // The gridpoint's velocity along the face against that of the edge's block where the gridpoint
   // is: the edge point's under it, and what the edge's turn adds at the gridpoint's offset `r`
@@ -397,9 +414,10 @@ struct NodePush {
   // fade, only what the springs store beyond the given state: the given part's change goes to the
   // given stress's account. Its reaction along the edge goes to the corner, whose place sets the
   // distance, and the couple it leaves with it, as the shear force's (below).
-  double along = 0.0;
-  if (!fading && (cut_by_place != 0.0 || cut_by_depth != 0.0) && share > 0.0) [[unlikely]] {
-    const double whole = std::max(0.0, contact_energy(c, p).normal / share - c.length * c.given);
+  double along = 0.0, whole = 0.0;
+  if (!fading && (cut_by_place != 0.0 || cut_by_depth != 0.0 || share_by_length != 0.0) && share > 0.0)
+      [[unlikely]] {
+    whole = std::max(0.0, contact_energy(c, p).normal / share - c.length * c.given);
     along = -whole * cut_by_place * (corner_at_a ? 1.0 : -1.0);
     const double out = whole * cut_by_depth;
     c.fx += along * sx + out * nx;
@@ -439,6 +457,8 @@ struct NodePush {
       const double switch_closure = c.closure0 + c.dilation + c.length / c.wedge;
       const double at_switch = switch_closure > 0.0 ? normal_energy(p, switch_closure) : 0.0;
       w = c.per_facing * share * std::max(0.0, at_switch - c.given);
+      // Short of a sharp corner its share hangs on its own length too (own length / tip).
+      w += c.per_facing * whole * share_by_length;
     } else if (fading) {
       w += beyond / share * fade_by_length * c.per_facing;
       // (Its share's change with the length is booked with the fade's above.)
