@@ -194,35 +194,42 @@ TEST(ContactForce, ShortOfASharpCornerATipKeepsItsOwnLengthAndLosesOnlyTheTipsPa
 // rock round such paths; a force only along the normal, share x the whole tip's, made about 6e4 J/m
 // a swing in the seed cavern's Case 3 at 262 m. The path crosses where the tip's chord reaches the
 // corner (share below 1 on one side, 1 on the other), for a tip alone and for one with a length of
-// its own that the tip outgrows. And from one point to another the work is the energy's fall.
+// its own that the tip outgrows, by the corner at either end of the edge. And from one point to
+// another the work is the energy's fall.
 TEST(ContactForce, ATipShortOfASharpCornerDoesNoWorkRoundAClosedPath) {
-  for (const double own : {0.0, 0.009}) {
-    Corner c;
-    c.contact.wedge = 0.25;
-    c.contact.limit = 0.1;
-    c.contact.leads_past_b = true;
-    c.contact.length = own;
-    const std::array<std::array<double, 2>, 5> corners{{{0.004, -0.02}, {0.03, -0.02}, {0.03, -0.06},
-                                                        {0.004, -0.06}, {0.004, -0.02}}};
-    c.force_at(corners[0][0], corners[0][1]);
-    const double start = contact_energy(c.contact, c.joint).normal;
-    double fx = c.contact.fx, fy = c.contact.fy, work = 0.0, largest = 0.0;
-    constexpr int kSteps = 16000;  // the share's slope jumps where its rule changes: O(1 / kSteps)
-    for (size_t side = 0; side + 1 < corners.size(); ++side) {
-      const double dx = (corners[side + 1][0] - corners[side][0]) / kSteps;
-      const double dy = (corners[side + 1][1] - corners[side][1]) / kSteps;
-      for (int i = 1; i <= kSteps; ++i) {
-        c.force_at(corners[side][0] + i * dx, corners[side][1] + i * dy);
-        work += 0.5 * (fx + c.contact.fx) * dx + 0.5 * (fy + c.contact.fy) * dy;
-        fx = c.contact.fx;
-        fy = c.contact.fy;
-        largest = std::max(largest, contact_energy(c.contact, c.joint).normal);
+  for (const bool at_b : {true, false}) {
+    for (const double own : {0.0, 0.009}) {
+      Corner c;
+      c.contact.wedge = 0.25;
+      c.contact.limit = 0.1;
+      (at_b ? c.contact.leads_past_b : c.contact.leads_past_a) = true;
+      c.contact.length = own;
+      const double x0 = at_b ? 0.0 : 1.0, sign = at_b ? 1.0 : -1.0;  // the corner, and away from it
+      const std::array<std::array<double, 2>, 5> corners{{{x0 + sign * 0.004, -0.02}, {x0 + sign * 0.03, -0.02},
+                                                          {x0 + sign * 0.03, -0.06}, {x0 + sign * 0.004, -0.06},
+                                                          {x0 + sign * 0.004, -0.02}}};
+      c.force_at(corners[0][0], corners[0][1]);
+      const double start = contact_energy(c.contact, c.joint).normal;
+      double fx = c.contact.fx, fy = c.contact.fy, work = 0.0, largest = 0.0;
+      constexpr int kSteps = 16000;  // the share's slope jumps where its rule changes: O(1 / kSteps)
+      for (size_t side = 0; side + 1 < corners.size(); ++side) {
+        const double dx = (corners[side + 1][0] - corners[side][0]) / kSteps;
+        const double dy = (corners[side + 1][1] - corners[side][1]) / kSteps;
+        for (int i = 1; i <= kSteps; ++i) {
+          c.force_at(corners[side][0] + i * dx, corners[side][1] + i * dy);
+          work += 0.5 * (fx + c.contact.fx) * dx + 0.5 * (fy + c.contact.fy) * dy;
+          fx = c.contact.fx;
+          fy = c.contact.fy;
+          largest = std::max(largest, contact_energy(c.contact, c.joint).normal);
+        }
+        if (side == 1) {  // from the first point to the far one: the work is the energy's fall
+          EXPECT_NEAR(work, start - contact_energy(c.contact, c.joint).normal, 1e-4 * largest) << "own " << own
+                                                                                                << " at b " << at_b;
+        }
       }
-      if (side == 1) {  // from the first point to the far one: the work is the energy's fall
-        EXPECT_NEAR(work, start - contact_energy(c.contact, c.joint).normal, 1e-4 * largest) << "own " << own;
-      }
+      EXPECT_NEAR(work, 0.0, 1e-4 * largest) << "own length " << own << " at b " << at_b << ", largest energy "
+                                             << largest;
     }
-    EXPECT_NEAR(work, 0.0, 1e-4 * largest) << "own length " << own << ", largest energy " << largest;
   }
 }
 
