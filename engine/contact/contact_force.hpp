@@ -281,8 +281,9 @@ struct NodePush {
     const double own = !(from_corner > 0.0) ? 0.0 : tip > c.length ? share * c.length / tip : share;
     const double cut = std::min(share, tip_share);
     // Slopes of the own length's share and of the cut tip's, with depth, place and own length.
-    const double own_by_depth = from_corner > 0.0 && tip > c.length ? -own / tip * tip_by_depth : 0.0;
-    const double own_by_length = from_corner > 0.0 && tip > c.length ? share / tip : 0.0;
+    const bool own_moves = from_corner > 0.0 && tip > c.length;
+    const double own_by_depth = own_moves ? -own / tip * tip_by_depth : 0.0;
+    const double own_by_length = own_moves ? share / tip : 0.0;
     const bool cut_moves = from_corner > 0.0 && tip_share < share && q < 1.0;
     const double cut_by_q_place = cut_moves ? 3.0 * q * (1.0 - q) / tip : 0.0;
     const double cut_by_q_depth = cut_moves ? -6.0 * q * q * (1.0 - q) / tip * tip_by_depth : 0.0;
@@ -290,7 +291,7 @@ struct NodePush {
     // move: where one takes over from the other the share's slope must not jump, or a gridpoint
     // rocking across the switch is pushed by a step that one sample a cycle integrates wrongly,
     // energy made each cycle. Where either is at its cap it is the share, as given.
-    const double band = cut_moves && tip > c.length ? 0.05 * (own + cut) : 0.0, apart = own - cut;
+    const double band = cut_moves && own_moves ? 0.05 * (own + cut) : 0.0, apart = own - cut;
     const double overlap_of_band = std::max(0.0, band - std::fabs(apart));
     share = std::max(own, cut);
     double by_own = apart > 0.0 ? 1.0 : 0.0, by_cut = 1.0 - by_own;
