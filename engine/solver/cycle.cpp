@@ -39,6 +39,7 @@
 #include "contact/contact_force.hpp"
 #include "contact/detect.hpp"
 #include "solver/excavation.hpp"
+#include "solver/load_balance.hpp"
 
 namespace edem {
 namespace {
@@ -55,9 +56,9 @@ struct NodeWork {
   }
 };
 
-// Sums per chunk of zones, contacts or nodes (kChunk of them), added in chunk order so that the
-// totals are the same bits for any thread count. The energy sums run over every cycle of a batch,
-// the others over its last (measuring) cycle.
+// Sums per chunk of zones (kChunk of them), contacts or nodes (kSplitChunk), added in chunk order
+// so that the totals are the same bits for any thread count and any split. The energy sums run
+// over every cycle of a batch, the others over its last (measuring) cycle.
 struct Partials {
   std::vector<double> zone_applied;  // per zone chunk
   std::vector<int> zone_inverted;
@@ -251,8 +252,8 @@ void contact_pass(Mechanics& m, int begin, int end, Partials& partials) {
   const JointParams* params = m.joint_params.data();
   const double limit = overlap_limit(m);
   const bool booking = m.energy.by_contact && m.contacts.books.size() == m.contacts.list.size();
-  for (int first = begin; first < end; first += kChunk) {
-    const int last = std::min(end, first + kChunk);
+  for (int first = begin; first < end; first += kSplitChunk) {
+    const int last = std::min(end, first + kSplitChunk);
     double applied = 0.0;
     int overlapping = -1;
     ContactLoss lost;
@@ -272,7 +273,7 @@ void contact_pass(Mechanics& m, int begin, int end, Partials& partials) {
         if (overlapping < 0 && overlap > limit) overlapping = i;
       }
     }
-    const size_t chunk = static_cast<size_t>(first / kChunk);
+    const size_t chunk = static_cast<size_t>(first / kSplitChunk);
     partials.contact_loss[chunk].slip += lost.slip;
     partials.contact_loss[chunk].bond += lost.bond;
     partials.contact_loss[chunk].given += lost.given;
@@ -302,8 +303,8 @@ void node_motion_pass(Mechanics& m, int begin, int end, const Motion& motion, bo
   const bool with_bolts = !m.bolt_hosts.gather.empty();
   const double half_dt = 0.5 * motion.dt;
   const char* undamped = m.undamped.data();
-  for (int first = begin; first < end; first += kChunk) {
-    const int last = std::min(end, first + kChunk);
+  for (int first = begin; first < end; first += kSplitChunk) {
+    const int last = std::min(end, first + kSplitChunk);
     double unbalanced = 0.0, kinetic = 0.0, num = 0.0, den = 0.0, speed = -1.0;
     int fastest = -1;
     bool finite = true;
@@ -413,7 +414,7 @@ void node_motion_pass(Mechanics& m, int begin, int end, const Motion& motion, bo
         }
       }
     }
-    const size_t chunk = static_cast<size_t>(first / kChunk);
+    const size_t chunk = static_cast<size_t>(first / kSplitChunk);
     partials.work[chunk] += work;
     if constexpr (kMeasure) {
       partials.unbalanced[chunk] = unbalanced;
@@ -496,7 +497,7 @@ Measure run_cycles(Mechanics& m, int count) {
   const Partition& part = m.partition;
   const int ranges = part.threads;
   const size_t zone_chunks = (m.active.size() + kChunk - 1) / kChunk;
-  const size_t node_chunks = (static_cast<size_t>(m.node_count) + kChunk - 1) / kChunk;
+  const size_t node_chunks = (static_cast<size_t>(m.node_count) + kSplitChunk - 1) / kSplitChunk;
   Partials partials;
   partials.zone_applied.assign(zone_chunks, 0.0);
   partials.zone_inverted.assign(zone_chunks, -1);
@@ -509,17 +510,12 @@ Measure run_cycles(Mechanics& m, int count) {
   partials.finite.assign(node_chunks, 1);
   const int contact_count = static_cast<int>(m.contacts.list.size());
   m.contacts.push.resize(2 * kContactRoles * static_cast<size_t>(contact_count));
-  const size_t contact_chunks = (static_cast<size_t>(contact_count) + kChunk - 1) / kChunk;
+  const size_t contact_chunks = (static_cast<size_t>(contact_count) + kSplitChunk - 1) / kSplitChunk;
   partials.contact_applied.assign(contact_chunks, 0.0);
   partials.contact_overlapping.assign(contact_chunks, -1);
   partials.contact_loss.assign(contact_chunks, ContactLoss{});
-  std::vector<int> contact_begin(static_cast<size_t>(ranges) + 1);
-  {
-    const int chunks = static_cast<int>(contact_chunks);
-    for (int t = 0; t <= ranges; ++t)
-      contact_begin[static_cast<size_t>(t)] =
-          std::min(contact_count, static_cast<int>(static_cast<long>(chunks) * t / ranges) * kChunk);
-  }
+  const std::vector<int> contact_begin = split_at(part.contact_cut, contact_count);
+  const std::vector<int> node_begin = split_at(part.node_cut, m.node_count);
   if (m.adaptive.u_start.size() != m.u.size()) {
     m.adaptive.u_start = m.u;
     m.adaptive.r_start.assign(m.u.size(), 0.0);
@@ -535,6 +531,8 @@ Measure run_cycles(Mechanics& m, int count) {
 
   // Each thread's waits at the barriers, and when it finished (the rest of its wait is the join).
   std::vector<double> waited(static_cast<size_t>(ranges), 0.0), finished(static_cast<size_t>(ranges), 0.0);
+  // Each thread's seconds of work before the first barrier and before the second.
+  std::vector<double> forces_busy(static_cast<size_t>(ranges), 0.0), motion_busy(static_cast<size_t>(ranges), 0.0);
   int team_size = 1;
   const double region_start = omp_get_wtime();
 #pragma omp parallel num_threads(ranges)
@@ -542,11 +540,15 @@ Measure run_cycles(Mechanics& m, int count) {
     // Each thread takes the ranges t, t + team, ...; with a full team that is range t.
     const int team = omp_get_num_threads(), me = omp_get_thread_num();
     if (me == 0) team_size = team;
-    double wait = 0.0;
-    const auto barrier = [&wait] {
+    double wait = 0.0, forces = 0.0, moves = 0.0;
+    double phase_start = omp_get_wtime();
+    // Waits for the team; adds the work since the last barrier to `busy`.
+    const auto barrier = [&wait, &phase_start](double& busy) {
       const double arrived = omp_get_wtime();
+      busy += arrived - phase_start;
 #pragma omp barrier
-      wait += omp_get_wtime() - arrived;
+      phase_start = omp_get_wtime();
+      wait += phase_start - arrived;
     };
     for (int cycle = 0; cycle < count; ++cycle) {
       const bool measure = cycle == count - 1;
@@ -563,17 +565,23 @@ Measure run_cycles(Mechanics& m, int count) {
       if (me == 0) step_release(m);
       // The bolts read the nodes' displacements, as the zones do, and move only their own nodes.
       if (me == 0) bolt_cycle(m, motion, record && cycle == 0, measure, bolt_measure);
-      barrier();
+      barrier(forces);
       for (int r = me; r < ranges; r += team) {
-        const int b = part.node_begin[static_cast<size_t>(r)], e = part.node_begin[static_cast<size_t>(r) + 1];
+        const int b = node_begin[static_cast<size_t>(r)], e = node_begin[static_cast<size_t>(r) + 1];
         node_motion(m, b, e, motion, record && cycle == 0, measure, coupled, partials);
       }
-      barrier();
+      barrier(moves);
     }
     waited[static_cast<size_t>(me)] = wait;
+    forces_busy[static_cast<size_t>(me)] = forces;
+    motion_busy[static_cast<size_t>(me)] = moves;
     finished[static_cast<size_t>(me)] = omp_get_wtime();
   }
   const double region_end = omp_get_wtime();
+  if (team_size == ranges) {  // thread t ran range t: its times are the range's
+    rebalance(m.partition.contact_cut, forces_busy);
+    rebalance(m.partition.node_cut, motion_busy);
+  }
   m.adaptive.have_r_start = true;
   release_work(m);
 

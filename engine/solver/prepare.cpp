@@ -14,6 +14,7 @@
 #include "core/error.hpp"
 #include "core/union_find.hpp"
 #include "crack/judge.hpp"
+#include "solver/load_balance.hpp"
 #include "solver/loads.hpp"
 #include "solver/zone_groups.hpp"
 
@@ -124,7 +125,8 @@ Partition make_partition(const Mechanics& m, int threads) {
   part.threads = threads;
   const int zones = static_cast<int>(m.active.size());
   part.zone_begin = chunked_split(zones, threads);
-  part.node_begin = chunked_split(m.node_count, threads);
+  part.contact_cut = even_cuts(threads);
+  part.node_cut = even_cuts(threads);
   // The order zones are done in: active order, except that the other members of a mixed
   // group follow its first member, whose thread does the whole group. Contributions to a node
   // are summed in this order whatever the thread count.
@@ -313,7 +315,14 @@ void reconnect(Mechanics& m, const Mesh& mesh) {
 }
 
 void split_among_threads(Mechanics& m) {
-  m.partition = make_partition(m, thread_count(m));
+  Partition part = make_partition(m, thread_count(m));
+  // Split among as many threads as before, the contacts and nodes keep the cuts the threads'
+  // times moved them to (load_balance.hpp).
+  if (part.threads == m.partition.threads) {
+    part.contact_cut = std::move(m.partition.contact_cut);
+    part.node_cut = std::move(m.partition.node_cut);
+  }
+  m.partition = std::move(part);
   m.acc_force.assign(2 * static_cast<size_t>(m.partition.accumulators), 0.0);
 }
 

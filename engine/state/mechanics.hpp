@@ -72,7 +72,8 @@ inline constexpr int kChunk = 1024;
 struct Partition {
   int threads = 0;
   std::vector<int> zone_begin;          // thread t: active positions [zone_begin[t], [t+1])
-  std::vector<int> node_begin;          // thread t: nodes [node_begin[t], [t+1])
+  std::vector<double> contact_cut;      // thread t: the share of contacts before its own
+  std::vector<double> node_cut;         // the same for nodes (load_balance.hpp)
   std::vector<std::array<int, 3>> dest; // per active zone corner: accumulator index
   std::vector<int> gather_first;        // per node + 1: its slots in `gather` (empty: owned)
   std::vector<int> gather;              // accumulator indices of shared nodes' slots, in order
