@@ -60,11 +60,12 @@ struct BoundarySegment {
   Stress at_a, at_b;    // the stress whose traction it carries, at each end [Pa]
 };
 
-// Zones and nodes are split among threads in blocks of this many; partial sums are taken over
-// the same blocks, so that reductions give the same bits for any thread count.
+// Zones are split among threads in blocks of this many (contacts and nodes: kSplitChunk);
+// partial sums are taken over the same blocks, so that reductions give the same bits for any
+// thread count.
 inline constexpr int kChunk = 1024;
 
-// How zones and nodes are split among threads, and where each zone corner's contribution
+// How zones, contacts and nodes are split among threads, and where each zone corner's contribution
 // goes. Contributions to a node are always summed in the order zones are done (active order,
 // the other members of a mixed group right after its first), so the result is the same bits
 // for any thread count: a node whose zones are all done by one thread's range is accumulated
