@@ -26,6 +26,7 @@
 --             potential cracks go does not change with the steps' damping [local]
 --   prepass_release  cycles over which each of the jointed prepass's steps is released: near its slow limit, where
 --             the potential cracks no longer move with it (tests/bench/yield_pass_paths.lua) [3000]
+--   prepass_stall  the jointed prepass's stall (as stall, for its steps) [0: never]
 --   edge, far m: zone size at the cavern and far from it [1.5, 10]
 --   stages    how many of the 16 steps to dig [16]
 --   step_cycles  cycles a step is solved for once its load is off; judged at equilibrium, a step
@@ -81,7 +82,7 @@ local loose = require "edem.loose"
 local given = settings{
   case = 3, depth = 158, bolts = "none", bolt_at = "solved", set = "P", prepass = "jointed",
   judge = "equilibrium", release = 0, release_offset = 0, damping = "adaptive", prepass_damping = "local",
-  prepass_release = 3000,
+  prepass_release = 3000, prepass_stall = 0,
   edge = 1.5, far = 10, stages = 16, step_cycles = 40000, stall = 0, settle = 0, balance = 0, rock = "elastic",
   similar = 45, min_angle = 30, origin_x = "centroid", origin_y = "centroid",
   by_mode = false, muck = "loose", first = "left", mirror = false, judge_most = 0, judge_radius = 0,
@@ -107,8 +108,10 @@ end
 if not (math.type(given.step_cycles) == "integer" and given.step_cycles >= 1) then
   error(("step_cycles must be a whole number of cycles >= 1, got %s"):format(given.step_cycles), 0)
 end
-if not (math.type(given.stall) == "integer" and given.stall >= 0) then
-  error(("stall must be a whole number of cycles >= 0, got %s"):format(given.stall), 0)
+for _, key in ipairs{ "stall", "prepass_stall" } do
+  if not (math.type(given[key]) == "integer" and given[key] >= 0) then
+    error(("%s must be a whole number of cycles >= 0, got %s"):format(key, given[key]), 0)
+  end
 end
 if not (type(given.settle) == "number" and given.settle >= 0 and given.settle < 1e-5) then
   error(("settle must be 0 or a ratio below 1e-5, got %s"):format(given.settle), 0)
@@ -215,6 +218,7 @@ if PREPASS == "jointed" then
   for k = 1, math.min(STAGES, #names) do dug[k] = names[k] end
   local pictures = { [3] = "_prepass_arch.png", [9] = "_prepass_step9.png", [#dug] = "_prepass.png" }
   pre = yield_pass.run{ stages = dug, release = given.prepass_release, damping = PREPASS_DAMPING,
+                       stall = given.prepass_stall,
                        after_stage = function(k)
     if pictures[k] then plot{ file = tag .. pictures[k], show = { "plastic", "blocks" }, window = WINDOW } end
   end }
@@ -547,8 +551,9 @@ local function result_row()
                 prepass_note == "complete" and '""' or ('"' .. prepass_note .. '"'),
                 '"' .. table.concat(unconverged, " ") .. '"',
                 '"' .. stopped:gsub('"', "'") .. '"', '"' .. points_fallen() .. '"', EDGE, FAR, FIRST, MUCK,
-                DAMPING, MIRROR, ("%.2f"):format(r.length), ORIGIN_X or "", ORIGIN_Y or "", JUDGE_AT, judgments, PREPASS,
-                BOLT_AT, PREPASS_DAMPING, '"' .. table.concat(unconverged_why, "; "):gsub('"', "'") .. '"', ROCK,
+                DAMPING, MIRROR, ("%.2f"):format(r.length), ORIGIN_X or "", ORIGIN_Y or "", JUDGE_AT, judgments,
+                PREPASS, BOLT_AT, PREPASS_DAMPING,
+                '"' .. table.concat(unconverged_why, "; "):gsub('"', "'") .. '"', ROCK,
                 ("%.4g"):format(r.energy.error), ("%.3g"):format(r.energy.relative_error),
                 ("%.5f"):format(r.left_settles_5m), ("%.5f"):format(r.right_settles_5m), given.prepass_release }
   local named = {}  -- for result{}: each column's value, unquoted
