@@ -183,6 +183,7 @@ TEST(ContactForce, ShortOfASharpCornerATipKeepsItsOwnLengthAndLosesOnlyTheTipsPa
   c.contact.length = 0.009;  // less than the tip's, more than its part short of the corner
   EXPECT_NEAR(carried(0.01, -0.04), stress * 0.009, 1e-6);
   c.contact.length = 0.02;  // more than the tip's: its own, with no slope to push by
+  EXPECT_NEAR(carried(0.01, -0.04), stress * 0.02, 1e-6);
   EXPECT_NEAR(c.force_at(0.01, -0.04), stress * 0.02, 1e-6);
   c.contact.length = 0.0;  // far enough from the corner, the whole tip, and nothing more
   EXPECT_NEAR(c.force_at(0.5, -0.04), stress * tip, 1e-6);
