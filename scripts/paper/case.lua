@@ -49,7 +49,8 @@
 --   mirror    true: the joints mirrored about x = 0 (with first = right, the mirror image) [false]
 --   judge_most  at most this many sections break at a judgment [0: all that fail]
 --   neighbours  wait (of failing sections that touch, the worst breaks and the others are judged
---             again on the state that leaves) or break (all that fail, the study's setting) [break]
+--             again on the state that leaves: the count does not move with the release or the
+--             damping) or break (all that fail at once, as the seed's method) [wait]
 --   judge_radius  m: a section's stress also from its blocks' zones within this distance [0]
 --   tolerance model{}'s geometric tolerance [7e-4]
 --   fracture_energy, shear_fracture_energy  J/m^2: broken sections soften as cohesive cracks
@@ -86,7 +87,7 @@ local given = settings{
   edge = 1.5, far = 10, stages = 16, step_cycles = 40000, stall = 0, settle = 0, balance = 0, rock = "elastic",
   similar = 45, min_angle = 30, origin_x = "centroid", origin_y = "centroid",
   by_mode = false, muck = "loose", first = "left", mirror = false, judge_most = 0, judge_radius = 0,
-  neighbours = "break",
+  neighbours = "wait",
   tolerance = 7e-4, fracture_energy = 0, shear_fracture_energy = 0, table = "case_results.csv",
   threads = os.getenv("OMP_NUM_THREADS") or "default", strict = false, save_after = -1,
 }
