@@ -61,13 +61,58 @@ inline void keep_state(Contact& c, const Contact& old, const JointParams& p) {
   c.fs = was > 0.0 ? std::clamp(old.fs * (now / was), -strength, strength) : 0.0;
 }
 
+// What a tip's normal spring stores pressed past where its tip's length starts to outgrow its own
+// (tip_takes_over), before its corner's share [J/m], and that energy's slope with its own length
+// [J/m^2]: the integral of its normal force over its overlap from where it touched, its own length
+// up to the band, then the length that grows with the overlap, up to the limit, then the limit's.
+struct TipNormal {
+  double energy = 0.0, by_own = 0.0;
+};
+inline TipNormal tip_normal_energy(const Contact& c, const JointParams& p, double overlap) {
+  const double offset = c.closure0 + c.dilation;  // closure = offset + overlap
+  const double from = std::max(tip_takes_over(c), -offset), to = std::min(overlap, c.limit);
+  TipNormal e;
+  e.by_own = normal_energy(p, offset + from);
+  e.energy = c.length * e.by_own;
+  // By Simpson's rule over the pieces where the length is smooth (exact for the linear law):
+  // the band's two halves, then the tip's.
+  const double own_ends = c.length / c.wedge, band_ends = c.length * (1.0 + kTipBand) / c.wedge;
+  const double cuts[] = {from, std::clamp(own_ends, from, std::max(from, to)),
+                         std::clamp(band_ends, from, std::max(from, to)), std::max(from, to)};
+  for (int piece = 0; piece < 3; ++piece) {
+    const double lo = cuts[piece], hi = cuts[piece + 1];
+    if (!(hi > lo)) continue;
+    const int intervals = piece < 2 ? 4 : 16;  // the band is narrow
+    const double h = (hi - lo) / intervals;
+    double sum = 0.0, sum_by_own = 0.0;
+    for (int i = 0; i <= intervals; ++i) {
+      const double x = lo + i * h;
+      const double weight = i == 0 || i == intervals ? 1.0 : (i % 2 == 1 ? 4.0 : 2.0);
+      const double sn = normal_stress(p, offset + x);
+      const TipLength length = tip_length(c.length, c.wedge * x);
+      sum += weight * sn * length.length;
+      sum_by_own += weight * sn * length.by_own;
+    }
+    e.energy += sum * h / 3.0;
+    e.by_own += sum_by_own * h / 3.0;
+  }
+  if (overlap > c.limit) {
+    const TipLength at_limit = tip_length(c.length, c.wedge * c.limit);
+    const double beyond = normal_energy(p, c.closure) - normal_energy(p, offset + c.limit);
+    e.energy += at_limit.length * beyond;
+    e.by_own += at_limit.by_own * beyond;
+  }
+  return e;
+}
+
 // The elastic energy a contact stores as its last cycle left it [J/m]: its normal spring's, the
 // integral of its normal force over its overlap from where it touched (a tip's length grows with
 // the overlap), and its shear spring's, fs^2 / (2 ks length).
 struct ContactEnergy {
   double normal = 0.0, shear = 0.0;
 };
-inline ContactEnergy contact_energy(const Contact& c, const JointParams& p) {
+// With `tip`, a tip's normal energy and its slope with its own length go there too when found.
+inline ContactEnergy contact_energy(const Contact& c, const JointParams& p, TipNormal* tip = nullptr) {
   if (c.state == ContactState::open) return {};
   const double overlap = last_overlap(c);
   const double length = last_carrying_length(c);
@@ -78,29 +123,13 @@ inline ContactEnergy contact_energy(const Contact& c, const JointParams& p) {
     e.normal = 0.5 * c.sn * c.closure * length;
     return e;
   }
-  const double grows_from = c.wedge > 0.0 ? c.length / c.wedge : INFINITY;  // overlap where a tip's length passes its own
-  if (!(overlap > grows_from)) {
+  if (!(overlap > tip_takes_over(c))) {
     e.normal = length * normal_energy(p, c.closure);
     return e;
   }
-  // A tip pressed past it: its own length up to there, then wedge x overlap up to the limit, then
-  // the limit's; the middle part by Simpson's rule (exact for the linear law).
-  const double offset = c.closure0 + c.dilation;  // closure = offset + overlap
-  const double from = std::max(grows_from, -offset), to = std::min(overlap, c.limit);
-  double energy = c.length * normal_energy(p, offset + from);
-  if (to > from) {
-    constexpr int kIntervals = 16;
-    const double h = (to - from) / kIntervals;
-    double sum = 0.0;
-    for (int i = 0; i <= kIntervals; ++i) {
-      const double x = from + i * h;
-      const double weight = i == 0 || i == kIntervals ? 1.0 : (i % 2 == 1 ? 4.0 : 2.0);
-      sum += weight * normal_stress(p, offset + x) * c.wedge * x;
-    }
-    energy += sum * h / 3.0;
-  }
-  if (overlap > c.limit) energy += c.wedge * c.limit * (normal_energy(p, c.closure) - normal_energy(p, offset + c.limit));
-  e.normal = c.share * energy;
+  const TipNormal normal = tip_normal_energy(c, p, overlap);
+  if (tip) *tip = normal;
+  e.normal = c.share * normal.energy;
   return e;
 }
 
@@ -368,7 +397,7 @@ struct NodePush {
   const double ks = p.ks * length;
   // Its length changes past a corner or as a tip sinks: it keeps its shear stress, as its normal
   // stress keeps to its closure (what that changes in its energy the length's push below pays
-  // for a length the facing length sets; a tip's is the method's, and the balance shows it).
+  // for a length the facing length sets, the normal force for a tip's that its depth sets).
   const double fs_start = length_before > 0.0 ? fs_before * (length / length_before) : 0.0;
   const double trial = fs_start - ks * dus;
   const double cohesion =
@@ -388,9 +417,27 @@ struct NodePush {
     c.state = c.intact ? ContactState::bonded : ContactState::elastic;
   }
   c.sn = sn;
-  const double fn = sn * length;
+  double fn = sn * length;
+  // A tip's length grows with its depth (tip_length), and it keeps its shear stress as it does:
+  // its shear spring, fs^2 / (2 ks length), stores fs^2 / (2 ks length^2) more per metre of
+  // length, and the normal force pays for it, as it does for the normal spring's.
+  const double depth = -gap;
+  TipLength tip_at;  // its length's slopes at this depth
+  if (c.wedge > 0.0 && depth > tip_takes_over(c)) [[unlikely]] {
+    tip_at = tip_length(c.length, c.wedge * std::min(depth, c.limit));
+    if (depth < c.limit) fn += c.fs * c.fs / (2.0 * p.ks * length * length) * share * tip_at.by_tip * c.wedge;
+  }
   c.fx = fn * nx + c.fs * sx;
   c.fy = fn * ny + c.fs * sy;
+  // What its springs store as this cycle leaves them, found once when first asked (a tip's normal
+  // spring's is an integral), with a tip's normal energy's slope with its own length.
+  ContactEnergy energy_now;
+  TipNormal tip_normal;
+  bool energy_known = false;
+  const auto stored_now = [&]() {
+    if (!energy_known) energy_now = contact_energy(c, p, &tip_normal), energy_known = true;
+    return energy_now.normal + energy_now.shear;
+  };
   // Past the corner its springs' energy is share x what they would store over the whole length:
   // the fade's force is that energy's slope, a push along the edge away from the corner. Without
   // it the energy a face sliding off a corner under load stores would vanish as its share goes.
@@ -401,7 +448,7 @@ struct NodePush {
   // whatever its length, as its fade's span is its length.
   const bool fading = past && share > 0.0 && share == fade_share;
   if (fading) [[unlikely]] {
-    const double beyond = std::max(0.0, stored_in(c, p) / share - c.length * c.given);
+    const double beyond = std::max(0.0, stored_now() / share - c.length * c.given);
     const double push = beyond * fade_slope * (t_line < 0.0 ? -1.0 : 1.0);
     c.fx += push * sx;
     c.fy += push * sy;
@@ -418,7 +465,7 @@ struct NodePush {
   double along = 0.0, whole = 0.0;
   if (!fading && (cut_by_place != 0.0 || cut_by_depth != 0.0 || share_by_length != 0.0) && share > 0.0)
       [[unlikely]] {
-    whole = std::max(0.0, contact_energy(c, p).normal / share - c.length * c.given);
+    whole = std::max(0.0, stored_now() / share - c.length * c.given);
     along = -whole * cut_by_place * (corner_at_a ? 1.0 : -1.0);
     const double out = whole * cut_by_depth;
     c.fx += along * sx + out * nx;
@@ -442,23 +489,21 @@ struct NodePush {
     // is not pushed on; what its length changes of it goes to the given stress's account.
     // A contact come off its given state (unloaded, opened) keeps no more of it than it stores:
     // its length's push never pulls to lengthen it.
-    const double stored = stored_in(c, p);
+    const double stored = stored_now();
     if (share * c.length * c.given > stored) c.given = share * c.length > 0.0 ? stored / (share * c.length) : 0.0;
     const double beyond = stored - share * c.length * c.given;
     double w = beyond / facing;  // [J/m per m of facing length]
     // Past a corner the span its share fades over is its length, which the facing length sets.
     // The given part's change with the length, its share's span included.
     double given_by_length = c.given * share;
-    if (c.wedge * std::clamp(-gap, 0.0, c.limit) > c.length) {
-      // A tip pressed past its own length: its energy is its own length's up to the overlap where
-      // the tip's took over, c.length / c.wedge, and the tip's beyond (contact_energy), whose
-      // slope with its own length is what a metre of it stores at that overlap. At the overlap
-      // where the tip takes over that is the slope below, so the push goes on smoothly.
-      // (Touched only past that overlap, it stores nothing over its own length.)
-      const double switch_closure = c.closure0 + c.dilation + c.length / c.wedge;
-      const double at_switch = switch_closure > 0.0 ? normal_energy(p, switch_closure) : 0.0;
-      w = c.per_facing * share * std::max(0.0, at_switch - c.given);
-      // Short of a sharp corner its share hangs on its own length too (own length / tip).
+    if (c.wedge > 0.0 && depth > tip_takes_over(c)) {
+      // A tip pressed past where its tip's length takes over: its energy hangs on its own length
+      // through the part of its overlap its own length carried (tip_normal_energy), and its shear
+      // spring's through its length at this depth. Short of a sharp corner its share hangs on its
+      // own length too (own length / tip).
+      const double own_part = tip_normal.by_own +
+                              c.fs * c.fs / (2.0 * p.ks * length * length) * tip_at.by_own;
+      w = c.per_facing * share * std::max(0.0, own_part - c.given);
       w += c.per_facing * whole * share_by_length;
     } else if (fading) {
       w += beyond / share * fade_by_length * c.per_facing;

@@ -213,10 +213,38 @@ struct ContactSet {
 // How far the gridpoint was inside the edge's block at the contact's last cycle (-gap) [m].
 inline double last_overlap(const Contact& c) { return c.closure - c.closure0 - c.dilation; }
 
+// A tip's carrying length from its own length and its tip's (wedge x overlap): the larger, its
+// corner rounded over a band kTipBand x its own length wide each side, and the length's slopes
+// with both. Taken sharp, the slope of what the springs store with either length would jump where
+// one takes over from the other: a shear stress kept as the length changes stores tau^2 / (2 ks)
+// a metre, paid by the push along the face on one side and by the normal force on the other, and
+// a gridpoint rocking across that switch is pushed by a step that one sample a cycle integrates
+// wrongly, energy made every crossing.
+constexpr double kTipBand = 0.1;
+struct TipLength {
+  double length = 0.0, by_own = 0.0, by_tip = 0.0;  // [m], [-], [-]
+};
+inline TipLength tip_length(double own, double tip) {
+  const double h = kTipBand * own, apart = own - tip;
+  if (!(h > 0.0) || std::fabs(apart) >= h) return apart >= 0.0 ? TipLength{own, 1.0, 0.0} : TipLength{tip, 0.0, 1.0};
+  const double r = h - std::fabs(apart), side = apart > 0.0 ? 1.0 : -1.0;
+  TipLength t;
+  t.length = std::max(own, tip) + r * r / (4.0 * h);
+  t.by_tip = (apart < 0.0 ? 1.0 : 0.0) + r * side / (2.0 * h);
+  // The band's width grows with the own length too.
+  t.by_own = (apart > 0.0 ? 1.0 : 0.0) - r * side / (2.0 * h) + kTipBand * (h * h - apart * apart) / (4.0 * h * h);
+  return t;
+}
+
 // The length that carries the contact's force at `overlap` [m] (before a corner's share): its
-// own, or a tip's, which grows with the overlap up to the watchdog's limit.
+// own, or a tip's, which grows with the overlap up to the watchdog's limit (tip_length).
 inline double carrying_length(const Contact& c, double overlap) {
-  return std::max(c.length, c.wedge * std::clamp(overlap, 0.0, c.limit));
+  return tip_length(c.length, c.wedge * std::clamp(overlap, 0.0, c.limit)).length;
+}
+
+// The overlap from which a tip's length starts to outgrow its own (tip_length's band) [m].
+inline double tip_takes_over(const Contact& c) {
+  return c.wedge > 0.0 ? c.length * (1.0 - kTipBand) / c.wedge : INFINITY;
 }
 
 // The length that carried the contact's force at its last cycle [m], its corner's share taken.

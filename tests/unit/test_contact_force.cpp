@@ -281,6 +281,42 @@ TEST(ContactForce, ATipStoresTheWorkOfPressingItIn) {
   }
 }
 
+// A tip that carries a shear force keeps its shear stress as its length grows with its depth
+// (contact_force), so its shear spring stores more the deeper it is pressed: the normal force pays
+// for that too. Pressed in without a shear move, the work of its force is the change of both its
+// springs' energy, with a tip alone, with one that outgrows its own length on the way (0.01 m, at
+// 0.04 m deep), and with one short of a sharp corner.
+TEST(ContactForce, ATipCarryingAShearForceStoresTheWorkOfPressingItIn) {
+  for (const int kind : {0, 1, 2}) {
+    Corner c;
+    c.contact.length = kind == 1 ? 0.01 : 0.0;
+    c.contact.wedge = 0.25;
+    c.contact.limit = 0.1;
+    c.joint.ks = 1e9;
+    c.joint.tan_friction = c.joint.tan_residual_friction = 10.0;
+    const double x = kind == 2 ? 0.03 : 0.5;
+    if (kind == 2) c.contact.leads_past_b = true;
+    c.force_at(x, -0.02);
+    c.contact.fs = 2e5;
+    double fy = c.force_at(x, -0.02), fx = c.contact.fx;
+    const ContactEnergy start = contact_energy(c.contact, c.joint);
+    double work = 0.0;
+    constexpr int kSteps = 40000;
+    for (int i = 1; i <= kSteps; ++i) {  // from 0.02 to 0.08 m deep
+      const double y = -0.02 - 0.06 * i / kSteps;
+      const double now = c.force_at(x, y);
+      work += 0.5 * (fy + now) * 0.06 / kSteps;
+      fy = now;
+      fx = c.contact.fx;
+    }
+    const ContactEnergy end = contact_energy(c.contact, c.joint);
+    const double change = end.normal + end.shear - start.normal - start.shear;
+    EXPECT_GT(end.shear - start.shear, 0.01 * change) << kind;
+    EXPECT_NEAR(change, work, 1e-4 * work) << "kind " << kind << ", shear energy " << start.shear << " to "
+                                           << end.shear << ", fx " << fx;
+  }
+}
+
 TEST(ContactForce, BesideAThinTipWithinTheEdgeNoDeepLinePressesItIn) {
   Corner c;
   c.origin[4] = 1.0;  // the boundary turns down at 45 deg at b, to (1, -1): a 45 deg tip
@@ -515,6 +551,59 @@ TEST(ContactForce, ATipPressedPastItsOwnLengthStoresTheWorkOfTheTurningForce) {
   EXPECT_GT(c.contact.wedge * 1e-3, c.contact.length);  // the tip's length carries it throughout
   EXPECT_LT(change, 0.0);
   EXPECT_NEAR(work, -change, 1e-6 * std::fabs(change));
+}
+
+// The same gridpoint as a tip whose tip's length (54 x the 1 mm overlap) its own length (0.061 m)
+// falls past as it turns, through the band where either carries: the push still pays for what the
+// turn changes of both springs' energy, and turned back it has done no work.
+TEST(ContactForce, ATipWhoseOwnLengthFallsPastItsTipsStoresTheWorkOfTheTurningForce) {
+  Turning c;
+  c.contact.wedge = 54.0;
+  c.contact.limit = 0.01;
+  const auto [work, change] = c.move(0.5, 0.0, 0.5, 0.3, 3000);
+  EXPECT_LT(c.contact.length * (1.0 + kTipBand), c.contact.wedge * 1e-3);  // the tip's length carries it at the end
+  EXPECT_LT(change, 0.0);
+  EXPECT_NEAR(work, -change, 1e-6 * std::fabs(change));
+  const double shear_stress = c.contact.fs / last_carrying_length(c.contact);
+  double back = 0.0, start = stored_in(c.contact, c.joint);
+  std::array<double, 6> force = c.push();
+  for (int i = 1; i <= 3000; ++i) {
+    const std::vector<double> before(c.origin.begin() + 6, c.origin.end());
+    const std::array<double, 6> was = force;
+    c.place(0.5, 0.3 * (1.0 - i / 3000.0));
+    force = c.push();
+    for (size_t k = 0; k < 6; ++k) back += 0.5 * (was[k] + force[k]) * (c.origin[6 + k] - before[k]);
+  }
+  EXPECT_NEAR(work + back, 0.0, 1e-6 * std::fabs(change));
+  EXPECT_NEAR(back, start - stored_in(c.contact, c.joint), 1e-6 * std::fabs(change));
+  EXPECT_NEAR(c.contact.fs / last_carrying_length(c.contact), shear_stress, 1e-6 * shear_stress);
+}
+
+// Where its tip's length takes over from its own, a shear stress kept as the length changes
+// stores tau^2 / (2 ks) a metre, paid by the push on its edges' far ends while its own length
+// carries and by the normal force once its tip's does: the forces on its nodes must go from the
+// one to the other without a jump, or a gridpoint rocking across is pushed by a step that one
+// sample a cycle integrates wrongly (a tip of Case 3 at 262 m made 5e4 J/m a cycle so).
+TEST(ContactForce, WhereATipsLengthTakesOverFromItsOwnTheForcesDoNotJump) {
+  Turning c;
+  c.contact.wedge = 54.0;
+  c.contact.limit = 0.01;
+  c.contact.fs = 5e4;  // 0.8 MPa, its shear spring 3.4e3 J/m^2 against the normal's 4.5e3
+  c.place(0.5, 0.0);
+  c.contact.length = 0.25 * (0.2 + 0.1 * 0.1 / std::hypot(0.1, 0.2));
+  std::array<double, 6> force = c.push();
+  double jump = 0.0, largest = 0.0;
+  for (int i = 1; i <= 30000; ++i) {  // turned by 0.3 rad: its own length falls past its tip's
+    c.place(0.5, 0.3 * i / 30000.0);
+    const std::array<double, 6> was = force;
+    force = c.push();
+    for (size_t k = 0; k < 6; ++k) {
+      jump = std::max(jump, std::fabs(force[k] - was[k]));
+      largest = std::max(largest, std::fabs(force[k]));
+    }
+  }
+  EXPECT_LT(c.contact.length * (1.0 + kTipBand), c.contact.wedge * 1e-3);
+  EXPECT_LT(jump, 1e-3 * largest) << "largest force " << largest;
 }
 
 // Slid from 0.1 m short of the block's corner (b, at x = 0) to 0.05 m past it: its half-edge
