@@ -422,10 +422,13 @@ struct NodePush {
   // its shear spring, fs^2 / (2 ks length), stores fs^2 / (2 ks length^2) more per metre of
   // length, and the normal force pays for it, as it does for the normal spring's.
   const double depth = -gap;
-  TipLength tip_at;  // its length's slopes at this depth
-  if (c.wedge > 0.0 && depth > tip_takes_over(c)) [[unlikely]] {
+  const bool tip_past = c.wedge > 0.0 && depth > tip_takes_over(c);  // its tip's length counts
+  TipLength tip_at;                                                   // its length's slopes at this depth
+  double shear_per_length = 0.0;                                      // fs^2 / (2 ks length^2) [J/m^2]
+  if (tip_past) [[unlikely]] {
     tip_at = tip_length(c.length, c.wedge * std::min(depth, c.limit));
-    if (depth < c.limit) fn += c.fs * c.fs / (2.0 * p.ks * length * length) * share * tip_at.by_tip * c.wedge;
+    shear_per_length = c.fs * c.fs / (2.0 * p.ks * length * length);
+    if (depth < c.limit) fn += shear_per_length * share * tip_at.by_tip * c.wedge;
   }
   c.fx = fn * nx + c.fs * sx;
   c.fy = fn * ny + c.fs * sy;
@@ -496,13 +499,12 @@ struct NodePush {
     // Past a corner the span its share fades over is its length, which the facing length sets.
     // The given part's change with the length, its share's span included.
     double given_by_length = c.given * share;
-    if (c.wedge > 0.0 && depth > tip_takes_over(c)) {
+    if (tip_past) {
       // A tip pressed past where its tip's length takes over: its energy hangs on its own length
-      // through the part of its overlap its own length carried (tip_normal_energy), and its shear
-      // spring's through its length at this depth. Short of a sharp corner its share hangs on its
-      // own length too (own length / tip).
-      const double own_part = tip_normal.by_own +
-                              c.fs * c.fs / (2.0 * p.ks * length * length) * tip_at.by_own;
+      // through the part of its overlap its own length carried (tip_normal_energy, found with
+      // `stored` above), and its shear spring's through its length at this depth. Short of a sharp
+      // corner its share hangs on its own length too (own length / tip).
+      const double own_part = tip_normal.by_own + shear_per_length * tip_at.by_own;
       w = c.per_facing * share * std::max(0.0, own_part - c.given);
       w += c.per_facing * whole * share_by_length;
     } else if (fading) {
