@@ -5,6 +5,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "state/contacts.hpp"
@@ -163,6 +164,30 @@ struct NodePush {
   for (int k = 6; k < 2 * kContactRoles; ++k) p[k] = extra.on[k];
 }
 
+// How deep the gridpoint is inside the edge's block [m]: behind the edge's line and behind the
+// line of the edge beside it at each convex corner of the edge (the block is convex there). The
+// overlap the force takes can run deeper beside a corner: its cap adds the span the force fades
+// over, and a tip whose edges lead past a sharp corner carries only its share there. A gridpoint
+// beside the block is not in it, however far behind the edge's line (the overlap watchdog asks).
+inline double depth_in_block(const Contact& c, const ContactEdge* edges, const double* origin,
+                             const double* u) {
+  const auto at = [&](int node) {
+    const size_t k = 2 * static_cast<size_t>(node);
+    return std::array<double, 2>{origin[k] + u[k], origin[k + 1] + u[k + 1]};
+  };
+  const std::array<double, 2> p = at(c.node);
+  const auto behind = [&](int from, int to) {  // the gridpoint's depth behind the line from -> to
+    const std::array<double, 2> f = at(from), t = at(to);
+    const double dx = t[0] - f[0], dy = t[1] - f[1];
+    return ((p[1] - f[1]) * dx - (p[0] - f[0]) * dy) / std::hypot(dx, dy);
+  };
+  const ContactEdge& e = edges[c.edge];
+  double depth = behind(e.a, e.b);
+  if (e.corner_a) depth = std::min(depth, behind(edges[e.prev].a, e.a));
+  if (e.corner_b) depth = std::min(depth, behind(e.b, edges[e.next].b));
+  return depth;
+}
+
 // Updates `c` and its force on the gridpoint (c.fx, c.fy) from the node positions, origin + u,
 // and velocities `v`; returns the overlap, how far the
 // gridpoint is inside the edge's block [m] (negative: a gap). `edges`: all of them (the edge is
@@ -263,11 +288,17 @@ struct NodePush {
   // within the edge near the corner, one beside a thin tip that has sunk into its own block's
   // face: it is inside by at most its depth inside the neighbouring edge's line plus the span
   // the force fades over (so a gridpoint on the corner, inside or out by round-off, keeps its
-  // contact). A glued tip's end has the rule below instead.
-  const bool near_corner = gap < 0.0 && ((e.corner_a && t_line * len < c.limit) ||
-                                         (e.corner_b && (1.0 - t_line) * len < c.limit));
-  const bool glued_end = t_line < 0.5 ? e.glued_tip_a : e.glued_tip_b;
-  if ((past || near_corner) && !glued_end && !c.split) from_neighbour(t_line < 0.5, 2.0 * fade, true);
+  // contact). Each corner within reach caps it: under a face shorter than twice the reach both
+  // do, and the lesser depth holds on either half of it (a cap from the nearer corner alone would
+  // jump at the face's middle). A glued tip's end has the rule below instead.
+  const bool cap_a = e.corner_a && !e.glued_tip_a &&
+                     (t_line < 0.0 || (gap < 0.0 && t_line * len < c.limit));
+  const bool cap_b = e.corner_b && !e.glued_tip_b &&
+                     (t_line > 1.0 || (gap < 0.0 && (1.0 - t_line) * len < c.limit));
+  if (!c.split) {
+    if (cap_a) from_neighbour(true, 2.0 * fade, true);
+    if (cap_b) from_neighbour(false, 2.0 * fade, true);
+  }
   // One of a corner's two contacts in a corner (Contact::split) past the end where its face meets
   // the other's is over the other face: it is in by at most its depth there. By its own face's
   // line, run on past that end, a gridpoint sliding along the other face would be in by its

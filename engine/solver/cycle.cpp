@@ -64,7 +64,8 @@ struct Partials {
   std::vector<int> zone_inverted;
   std::vector<double> plastic;       // per zone chunk [J/m]
   std::vector<double> contact_applied;  // per contact chunk
-  std::vector<int> contact_overlapping;
+  std::vector<int> contact_overlapping;   // per contact chunk: its first contact past the limit
+  std::vector<double> contact_depth;      // and how deep its gridpoint is in the block [m]
   std::vector<ContactLoss> contact_loss;  // per contact chunk [J/m]
   std::vector<double> unbalanced, kinetic, num, den, speed;  // per node chunk
   std::vector<int> fastest;
@@ -256,6 +257,7 @@ void contact_pass(Mechanics& m, int begin, int end, Partials& partials) {
     const int last = std::min(end, first + kSplitChunk);
     double applied = 0.0;
     int overlapping = -1;
+    double depth = 0.0;
     ContactLoss lost;
     for (int i = first; i < last; ++i) {
       Contact& c = list[i];
@@ -270,7 +272,11 @@ void contact_pass(Mechanics& m, int begin, int end, Partials& partials) {
         book_contact(m, c, p, before, lost_before, lost, pushed, m.contacts.books[static_cast<size_t>(i)]);
       if constexpr (kMeasure) {
         applied += contact_applied(c);
-        if (overlapping < 0 && overlap > limit) overlapping = i;
+        // Past the limit behind the edge's line, and in the block as far (not beside it).
+        if (overlapping < 0 && overlap > limit) {
+          const double in_block = depth_in_block(c, edges, m.origin.data(), m.u.data());
+          if (in_block > limit) overlapping = i, depth = in_block;
+        }
       }
     }
     const size_t chunk = static_cast<size_t>(first / kSplitChunk);
@@ -280,6 +286,7 @@ void contact_pass(Mechanics& m, int begin, int end, Partials& partials) {
     if constexpr (kMeasure) {
       partials.contact_applied[chunk] = applied;
       partials.contact_overlapping[chunk] = overlapping;
+      partials.contact_depth[chunk] = depth;
     }
   }
 }
@@ -513,6 +520,7 @@ Measure run_cycles(Mechanics& m, int count) {
   const size_t contact_chunks = (static_cast<size_t>(contact_count) + kSplitChunk - 1) / kSplitChunk;
   partials.contact_applied.assign(contact_chunks, 0.0);
   partials.contact_overlapping.assign(contact_chunks, -1);
+  partials.contact_depth.assign(contact_chunks, 0.0);
   partials.contact_loss.assign(contact_chunks, ContactLoss{});
   const std::vector<int> contact_begin = split_at(part.contact_cut, contact_count);
   const std::vector<int> node_begin = split_at(part.node_cut, m.node_count);
@@ -610,8 +618,7 @@ Measure run_cycles(Mechanics& m, int count) {
     out.applied += partials.contact_applied[c];
     if (out.overlapping < 0 && partials.contact_overlapping[c] >= 0) {
       out.overlapping = partials.contact_overlapping[c];
-      const Contact& contact = m.contacts.list[static_cast<size_t>(out.overlapping)];
-      out.overlap = last_overlap(contact);
+      out.overlap = partials.contact_depth[c];
     }
   }
   double speed = -1.0;

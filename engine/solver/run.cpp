@@ -82,7 +82,7 @@ std::string overlap_cause(const Mechanics& m, const Measure& measure) {
     if (length < shortest) shortest = length, made_by = describe(e);
     half_edges += 0.5 * length;
   }
-  const double carrying = carrying_length(c, measure.overlap);
+  const double carrying = carrying_length(c, last_overlap(c));
   const double moved = m.step * std::hypot(m.v[2 * n], m.v[2 * n + 1]);
   std::string cause;
   if (m.settings.mode == SolverMode::dynamic && m.settings.step > 0.0 && m.settings.step >= m.critical_step)

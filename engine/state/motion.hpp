@@ -23,8 +23,8 @@ struct Measure {
   double rayleigh_den = 0.0; // sum m du^2
   int inverted_zone = -1;    // lowest mesh zone turned inside out, or -1
   int fastest_node = -1;     // node with the largest speed
-  int overlapping = -1;      // lowest contact whose overlap is beyond its limit, or -1
-  double overlap = 0.0;      // that overlap [m]
+  int overlapping = -1;      // lowest contact with its gridpoint in the block past the limit, or -1
+  double overlap = 0.0;      // how deep it is in the block (depth_in_block) [m]
   bool finite = true;        // every force and velocity finite
   // What the batch cost its team of threads: wall time, and the time its threads spent waiting
   // for each other at barriers, summed over the threads [s].

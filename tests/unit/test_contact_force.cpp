@@ -333,6 +333,73 @@ TEST(ContactForce, BesideAThinTipWithinTheEdgeNoDeepLinePressesItIn) {
   EXPECT_NEAR(c.contact.closure, 0.2, 1e-12);
 }
 
+// A face shorter than twice the reach, with convex corners at both ends: the block below it is a
+// triangle, its top edge from a = (0.6, 0) to b = (0, 0), its third corner at (0.1, -0.6), so the
+// tip at a (50 deg) is thinner than the one at b (80 deg). Node 3 is the gridpoint.
+struct ShortFace {
+  std::vector<double> origin{0.6, 0, 0, 0, 0.1, -0.6, 0, 0};
+  std::vector<double> u = std::vector<double>(8, 0.0), v = std::vector<double>(8, 0.0);
+  std::vector<ContactEdge> edges = std::vector<ContactEdge>(3);
+  JointParams joint;
+  Contact contact;
+
+  ShortFace() {
+    edges[0].a = 0, edges[0].b = 1, edges[0].prev = 2, edges[0].next = 1;
+    edges[0].corner_a = edges[0].corner_b = true;
+    edges[1].a = 1, edges[1].b = 2;  // b down to the third corner
+    edges[2].a = 2, edges[2].b = 0;  // and up to a
+    joint.kn = joint.kn_zero = joint.kn_max = 1e9;
+    joint.ks = 1e8;
+    contact.node = 3;
+    contact.edge = 0;
+    contact.length = 0.05;
+    contact.limit = 0.47;
+  }
+  void place(double x, double y) { origin[6] = x, origin[7] = y; }
+  double closure_at(double x, double y) {
+    place(x, y);
+    ContactLoss lost;
+    contact_force(contact, edges.data(), joint, origin.data(), u.data(), v.data(), 1e-4, lost);
+    return contact.closure;
+  }
+  // The gridpoint's depth behind the line from the third corner up to a.
+  double behind_a() const {
+    const double dx = 0.6 - 0.1, dy = 0.0 - -0.6;
+    return ((origin[7] - -0.6) * dx - (origin[6] - 0.1) * dy) / std::hypot(dx, dy);
+  }
+};
+
+// A gridpoint 0.35 m under the middle of the edge is within the reach of both corners and is
+// inside by at most its depth inside either neighbouring line plus the span: the lesser of the
+// two, whichever half of the edge it is over. Taken from the nearer corner alone, its depth jumped
+// from one line's to the other's as it crossed the middle, and a gridpoint rocking there made
+// energy at every crossing.
+TEST(ContactForce, UnderAShortFaceBetweenTwoCornersTheDepthDoesNotJumpAtItsMiddle) {
+  ShortFace f;
+  const double over_b_half = f.closure_at(0.3 - 1e-9, -0.35), over_a_half = f.closure_at(0.3 + 1e-9, -0.35);
+  const double expected = f.behind_a() + 2.0 * f.contact.length;
+  EXPECT_NEAR(over_a_half, expected, 1e-8);
+  EXPECT_NEAR(over_b_half, expected, 1e-8);
+}
+
+// A tip over the edge near its acute corner a, 0.3 m behind the edge's line yet outside the line
+// of the face beside a: the force takes the edge's line's overlap there (the cap adds the span its
+// force fades over, twice wedge x limit), but the gridpoint is beside the block, not in it, and
+// the overlap watchdog asks how deep it is in the block.
+TEST(ContactForce, BesideAnAcuteCornerAGridpointDeepBehindTheEdgesLineIsNotInTheBlock) {
+  ShortFace f;
+  f.contact.length = 0.0;
+  f.contact.wedge = 1.0;
+  EXPECT_NEAR(f.closure_at(0.57, -0.3), 0.3, 1e-12);
+  EXPECT_LT(f.behind_a(), -0.1);
+  EXPECT_NEAR(depth_in_block(f.contact, f.edges.data(), f.origin.data(), f.u.data()), f.behind_a(), 1e-12);
+  // Under the middle, deep in it: the least of its depths behind the three lines.
+  f.place(0.3, -0.2);
+  EXPECT_GT(f.behind_a(), 0.0);
+  EXPECT_NEAR(depth_in_block(f.contact, f.edges.data(), f.origin.data(), f.u.data()),
+              std::min(0.2, f.behind_a()), 1e-12);
+}
+
 // The same 45 deg tip, its other edge glued (ContactEdge::glued_tip_b: the block glued there goes
 // on past it): a gridpoint over the edge is inside by at most its depth inside the glued edge's
 // line, so its force goes to nothing as it reaches that line, with no span added, and stays
