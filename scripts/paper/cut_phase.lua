@@ -1,8 +1,8 @@
 -- How many potential-crack sections crackseed{ auto } lays on one prepass as its grid of cuts
 -- moves: each group's cuts through its own centroid (case.lua's default), or every group's through
 -- one fixed point (case.lua's origin_x, origin_y), at the seed's spacing (4.8 m) and at half of it.
--- The same yielded zones each time, so what changes is the placement alone (the README, "What the
--- runs show of those that do not hold": the members).
+-- The same yielded zones each time, so what changes is the placement alone (the README, "What
+-- would change the verdicts": the placement of potential cracks).
 --
 --   edem --quiet --threads 2 run scripts/paper/cut_phase.lua   (--set case=1, 2 or 3 [3])
 --

@@ -1,7 +1,7 @@
 -- Where a run of case.lua laid its potential cracks, which broke, and how near their strength the
 -- ones left intact stand: read from a checkpoint the run saved (case.lua --set save_after=16).
--- It shows why one case breaks a smaller share of its sections than another (the README, "What
--- the runs show of those that do not hold": Case 3 against Case 2).
+-- It shows why one case breaks a smaller share of its sections than another (Case 3 against
+-- Case 2, for instance).
 --
 --   edem --set case=3 --set save_after=16 run scripts/paper/case.lua
 --   edem --quiet --set file=case3_P_h158_none_step16.h5 run scripts/paper/sections_left.lua
