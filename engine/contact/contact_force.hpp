@@ -206,9 +206,10 @@ inline double depth_in_block(const Contact& c, const ContactEdge* edges, const d
   const double px = x(2 * n) - xa, py = x(2 * n + 1) - ya;
   const double len = std::sqrt(dx * dx + dy * dy);
   double sx = dx / len, sy = dy / len;  // along the edge
-  // The length last cycle's force was found over, then this cycle's as the gridpoint's edges
-  // face the edge now (facing_length.hpp).
+  // The length last cycle's force was found over and the overlap it was at, then this cycle's
+  // length as the gridpoint's edges face the edge now (facing_length.hpp).
   const double length_before = last_carrying_length(c);
+  const double overlap_before = last_overlap(c);
   double facing = 0.0;
   const double own_length_before = c.length;
   FacingSlope facing_slope;
@@ -426,10 +427,21 @@ inline double depth_in_block(const Contact& c, const ContactEdge* edges, const d
     return share > 0.0 ? -gap : 0.0;
   }
   const double ks = p.ks * length;
-  // Its length changes past a corner or as a tip sinks: it keeps its shear stress, as its normal
-  // stress keeps to its closure (what that changes in its energy the length's push below pays
-  // for a length the facing length sets, the normal force for a tip's that its depth sets).
-  const double fs_start = length_before > 0.0 ? fs_before * (length / length_before) : 0.0;
+  // Its length changes past a corner, with its facing length or its share: it keeps its shear
+  // stress, as its normal stress keeps to its closure (what that changes in its energy the
+  // length's push below pays for). A tip's length changes with its depth too, and for that part
+  // it keeps its shear spring's energy, fs^2 / (2 ks length), so the force scales as the root of
+  // the length: a stress kept there would store tau^2 / (2 ks) a metre the tip grows, for the
+  // normal force to pay, and on a tip a fraction of a millimetre long, carrying megapascals, that
+  // payment is hundreds of times its normal force and jumps across the band where its tip's
+  // length takes over (tip_length): stiffer than its gridpoint's mass is scaled for, it chatters
+  // and makes energy. Kept energy needs no force, and pressed in and back it is the same again.
+  double fs_start = length_before > 0.0 ? fs_before * (length / length_before) : 0.0;
+  if (c.wedge > 0.0 && length_before > 0.0 && length > 0.0) {
+    const double at_depth_before = share * carrying_length(c, overlap_before);
+    if (at_depth_before > 0.0)
+      fs_start = fs_before * (at_depth_before / length_before) * std::sqrt(length / at_depth_before);
+  }
   const double trial = fs_start - ks * dus;
   const double cohesion =
       p.softens ? p.residual_cohesion + (p.cohesion - p.residual_cohesion) * left : p.cohesion;
@@ -449,9 +461,9 @@ inline double depth_in_block(const Contact& c, const ContactEdge* edges, const d
   }
   c.sn = sn;
   double fn = sn * length;
-  // A tip's length grows with its depth (tip_length), and it keeps its shear stress as it does:
-  // its shear spring, fs^2 / (2 ks length), stores fs^2 / (2 ks length^2) more per metre of
-  // length, and the normal force pays for it, as it does for the normal spring's.
+  // A tip's length hangs on its depth and on its own length (tip_length); its shear spring's
+  // energy changes only with the own length's part, fs^2 / (2 ks length^2) a metre, which the
+  // length's push pays (below).
   const double depth = -gap;
   const bool tip_past = c.wedge > 0.0 && depth > tip_takes_over(c);  // its tip's length counts
   TipLength tip_at;                                                   // its length's slopes at this depth
@@ -459,7 +471,6 @@ inline double depth_in_block(const Contact& c, const ContactEdge* edges, const d
   if (tip_past) [[unlikely]] {
     tip_at = tip_length(c.length, c.wedge * std::min(depth, c.limit));
     shear_per_length = c.fs * c.fs / (2.0 * p.ks * length * length);
-    if (depth < c.limit) fn += shear_per_length * share * tip_at.by_tip * c.wedge;
   }
   c.fx = fn * nx + c.fs * sx;
   c.fy = fn * ny + c.fs * sy;

@@ -215,11 +215,11 @@ inline double last_overlap(const Contact& c) { return c.closure - c.closure0 - c
 
 // A tip's carrying length from its own length and its tip's (wedge x overlap): the larger, its
 // corner rounded over a band kTipBand x its own length wide each side, and the length's slopes
-// with both. Taken sharp, the slope of what the springs store with either length would jump where
-// one takes over from the other: a shear stress kept as the length changes stores tau^2 / (2 ks)
-// a metre, paid by the push along the face on one side and by the normal force on the other, and
-// a gridpoint rocking across that switch is pushed by a step that one sample a cycle integrates
-// wrongly, energy made every crossing.
+// with both. Taken sharp, the slope of what the springs store with the own length would jump where
+// the tip's takes over: a shear stress kept as the own length changes stores tau^2 / (2 ks) a
+// metre of it, paid by the push on the edges' far ends while the own length carries and by
+// nothing once the tip's does, and a gridpoint rocking across that switch is pushed by a step
+// that one sample a cycle integrates wrongly, energy made every crossing.
 constexpr double kTipBand = 0.1;
 struct TipLength {
   double length = 0.0, by_own = 0.0, by_tip = 0.0;  // [m], [-], [-]
