@@ -333,7 +333,7 @@ TEST(ContactForce, AcrossItsBandATinyTipsNormalForceIsNoStifferThanItsSprings) {
   c.contact.limit = 0.5;
   c.joint.kn = c.joint.kn_zero = c.joint.kn_max = 8.4e7;
   c.joint.ks = 3.6e6;
-  c.joint.tan_friction = c.joint.tan_residual_friction = 10.0;
+  c.joint.tan_friction = c.joint.tan_residual_friction = 1e4;  // its stress stays as set
   const double from = 0.2e-3, to = 0.6e-3;  // the band: 0.333 to 0.407 mm deep
   c.force_at(0.5, -from);
   c.contact.fs = 4.4e6 * last_carrying_length(c.contact);
@@ -345,6 +345,7 @@ TEST(ContactForce, AcrossItsBandATinyTipsNormalForceIsNoStifferThanItsSprings) {
     fy = now;
   }
   const double springs = c.joint.kn_max * to * c.contact.wedge + c.joint.kn_max * to;  // kn L + sn wedge
+  EXPECT_NEAR(c.contact.fs / last_carrying_length(c.contact), 4.4e6, 0.5 * 4.4e6);
   EXPECT_LT(steepest, 2.0 * springs) << "fs " << c.contact.fs;
 }
 
