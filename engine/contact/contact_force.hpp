@@ -65,43 +65,46 @@ inline void keep_state(Contact& c, const Contact& old, const JointParams& p) {
 // What a tip's normal spring stores pressed past where its tip's length starts to outgrow its own
 // (tip_takes_over), before its corner's share [J/m], and that energy's slope with its own length
 // [J/m^2]: the integral of its normal force over its overlap from where it touched, its own length
-// up to the band, then the length that grows with the overlap, up to the limit, then the limit's.
+// up to the band, then the length that grows with the overlap, up to its reach, then the reach's.
 struct TipNormal {
   double energy = 0.0, by_own = 0.0;
 };
 inline TipNormal tip_normal_energy(const Contact& c, const JointParams& p, double overlap) {
   const double offset = c.closure0 + c.dilation;  // closure = offset + overlap
-  const double from = std::max(tip_takes_over(c), -offset), to = std::min(overlap, c.limit);
+  const double grown = c.limit * (1.0 + kReachBand);  // past it the length stays (tip_depth)
+  const double from = std::max(tip_takes_over(c), -offset), to = std::max(from, std::min(overlap, grown));
   TipNormal e;
   e.by_own = normal_energy(p, offset + from);
   e.energy = c.length * e.by_own;
-  // By Simpson's rule over the pieces where the length is smooth (exact for the linear law):
-  // the band's two halves, then the tip's.
-  const double own_ends = c.length / c.wedge, band_ends = c.length * (1.0 + kTipBand) / c.wedge;
-  const double cuts[] = {from, std::clamp(own_ends, from, std::max(from, to)),
-                         std::clamp(band_ends, from, std::max(from, to)), std::max(from, to)};
-  for (int piece = 0; piece < 3; ++piece) {
+  // By Simpson's rule over the pieces where the length is smooth (exact for the linear law): the
+  // band's two halves, the tip's, and the reach's rounded corner, wherever they fall.
+  std::array<double, 5> cuts{from, overlap_at_tip_depth(c.length / c.wedge, c.limit),
+                             overlap_at_tip_depth(c.length * (1.0 + kTipBand) / c.wedge, c.limit),
+                             c.limit * (1.0 - kReachBand), to};
+  for (double& cut : cuts) cut = std::clamp(cut, from, to);
+  std::sort(cuts.begin(), cuts.end());
+  for (size_t piece = 0; piece + 1 < cuts.size(); ++piece) {
     const double lo = cuts[piece], hi = cuts[piece + 1];
     if (!(hi > lo)) continue;
-    const int intervals = piece < 2 ? 4 : 16;  // the band is narrow
-    const double h = (hi - lo) / intervals;
+    constexpr int kIntervals = 16;
+    const double h = (hi - lo) / kIntervals;
     double sum = 0.0, sum_by_own = 0.0;
-    for (int i = 0; i <= intervals; ++i) {
+    for (int i = 0; i <= kIntervals; ++i) {
       const double x = lo + i * h;
-      const double weight = i == 0 || i == intervals ? 1.0 : (i % 2 == 1 ? 4.0 : 2.0);
+      const double weight = i == 0 || i == kIntervals ? 1.0 : (i % 2 == 1 ? 4.0 : 2.0);
       const double sn = normal_stress(p, offset + x);
-      const TipLength length = tip_length(c.length, c.wedge * x);
+      const TipLength length = tip_length(c.length, c.wedge * tip_depth(x, c.limit).depth);
       sum += weight * sn * length.length;
       sum_by_own += weight * sn * length.by_own;
     }
     e.energy += sum * h / 3.0;
     e.by_own += sum_by_own * h / 3.0;
   }
-  if (overlap > c.limit) {
-    const TipLength at_limit = tip_length(c.length, c.wedge * c.limit);
-    const double beyond = normal_energy(p, c.closure) - normal_energy(p, offset + c.limit);
-    e.energy += at_limit.length * beyond;
-    e.by_own += at_limit.by_own * beyond;
+  if (overlap > grown) {
+    const TipLength at_reach = tip_length(c.length, c.wedge * c.limit);
+    const double beyond = normal_energy(p, c.closure) - normal_energy(p, offset + grown);
+    e.energy += at_reach.length * beyond;
+    e.by_own += at_reach.by_own * beyond;
   }
   return e;
 }
@@ -335,8 +338,8 @@ inline double depth_in_block(const Contact& c, const ContactEdge* edges, const d
     const double from_corner = std::min(to_a, to_b);
     corner_at_a = to_a <= to_b;
     const double depth = -gap;
-    const double tip = c.wedge * std::clamp(depth, 0.0, c.limit);
-    const double tip_by_depth = depth > 0.0 && depth < c.limit ? c.wedge : 0.0;
+    const TipDepth grown = tip_depth(depth, c.limit);
+    const double tip = c.wedge * grown.depth, tip_by_depth = c.wedge * grown.slope;
     const double q = tip > 0.0 ? std::clamp(from_corner / (2.0 * tip), 0.0, 1.0) : 1.0;
     const double tip_share = from_corner > 0.0 ? q * q * (3.0 - 2.0 * q) : 0.0;
     const double own = !(from_corner > 0.0) ? 0.0 : tip > c.length ? share * c.length / tip : share;
@@ -469,7 +472,7 @@ inline double depth_in_block(const Contact& c, const ContactEdge* edges, const d
   TipLength tip_at;                                                   // its length's slopes at this depth
   double shear_per_length = 0.0;                                      // fs^2 / (2 ks length^2) [J/m^2]
   if (tip_past) [[unlikely]] {
-    tip_at = tip_length(c.length, c.wedge * std::min(depth, c.limit));
+    tip_at = tip_length(c.length, c.wedge * tip_depth(depth, c.limit).depth);
     shear_per_length = c.fs * c.fs / (2.0 * p.ks * length * length);
   }
   c.fx = fn * nx + c.fs * sx;

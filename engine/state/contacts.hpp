@@ -236,15 +236,42 @@ inline TipLength tip_length(double own, double tip) {
   return t;
 }
 
+// A tip's length grows with its overlap up to its gridpoint's reach (Contact::limit) and no
+// further: the depth it grows by, its overlap with that corner rounded over a band kReachBand x
+// the reach wide each side, and the depth's slope with the overlap. Taken sharp, the slope of a
+// tip's share with its depth (short of a sharp corner, contact_force) would stop at once at the
+// reach, and with it part of its normal force: a gridpoint rocking across the reach is pushed by
+// a step that one sample a cycle integrates wrongly, energy made every crossing.
+constexpr double kReachBand = 0.1;
+struct TipDepth {
+  double depth = 0.0, slope = 0.0;  // [m], [-]
+};
+inline TipDepth tip_depth(double overlap, double limit) {
+  if (!(overlap > 0.0)) return {};
+  const double h = kReachBand * limit, into = overlap - (limit - h);
+  if (!(into > 0.0)) return {overlap, 1.0};
+  if (into >= 2.0 * h) return {limit, 0.0};
+  return {overlap - into * into / (4.0 * h), 1.0 - into / (2.0 * h)};
+}
+
+// The overlap at which a tip has grown by `depth` (tip_depth's inverse) [m]; a depth not short of
+// the reach: where the growth stops.
+inline double overlap_at_tip_depth(double depth, double limit) {
+  const double h = kReachBand * limit, into = depth - (limit - h);
+  if (!(into > 0.0)) return depth;
+  if (into >= h) return limit + h;
+  return limit - h + 2.0 * (h - std::sqrt(h * (h - into)));
+}
+
 // The length that carries the contact's force at `overlap` [m] (before a corner's share): its
-// own, or a tip's, which grows with the overlap up to the watchdog's limit (tip_length).
+// own, or a tip's, which grows with the overlap up to its reach (tip_length, tip_depth).
 inline double carrying_length(const Contact& c, double overlap) {
-  return tip_length(c.length, c.wedge * std::clamp(overlap, 0.0, c.limit)).length;
+  return tip_length(c.length, c.wedge * tip_depth(overlap, c.limit).depth).length;
 }
 
 // The overlap from which a tip's length starts to outgrow its own (tip_length's band) [m].
 inline double tip_takes_over(const Contact& c) {
-  return c.wedge > 0.0 ? c.length * (1.0 - kTipBand) / c.wedge : INFINITY;
+  return c.wedge > 0.0 ? overlap_at_tip_depth(c.length * (1.0 - kTipBand) / c.wedge, c.limit) : INFINITY;
 }
 
 // The length that carried the contact's force at its last cycle [m], its corner's share taken.
