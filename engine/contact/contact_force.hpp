@@ -250,13 +250,11 @@ inline double depth_in_block(const Contact& c, const ContactEdge* edges, const d
       gap = end.gap;
     }
   }
-  // Caps the depth at the gridpoint's depth inside the line of the edge beside this one at its
-  // end a (or b), less `span`. Where that cap holds and `turn`, the normal force acts along that
+  // Caps the depth at the gridpoint's depth inside the line from node `from` to `to` of the
+  // edge's block, less `span`. Where that cap holds and `turn`, the normal force acts along that
   // line's normal: the force is then the slope of the energy the depth gives (the shear force
   // stays along the edge).
-  const auto from_neighbour = [&](bool at_a, double span, bool turn) {
-    const size_t from = static_cast<size_t>(at_a ? edges[e.prev].a : e.b);
-    const size_t to = static_cast<size_t>(at_a ? e.a : edges[e.next].b);
+  const auto from_line = [&](size_t from, size_t to, double span, bool turn) {
     const double fx = x(2 * from), fy = x(2 * from + 1);
     const double ndx = x(2 * to) - fx, ndy = x(2 * to + 1) - fy;
     const double nlen = std::sqrt(ndx * ndx + ndy * ndy);
@@ -267,6 +265,11 @@ inline double depth_in_block(const Contact& c, const ContactEdge* edges, const d
       nx = ndy / nlen;
       ny = -ndx / nlen;
     }
+  };
+  // The same by the line of the edge beside this one at its end a (or b).
+  const auto from_neighbour = [&](bool at_a, double span, bool turn) {
+    from_line(static_cast<size_t>(at_a ? edges[e.prev].a : e.b), static_cast<size_t>(at_a ? e.a : edges[e.next].b),
+              span, turn);
   };
   // Past the end of the edge at a convex corner of its block, the gridpoint's share of the
   // contact length shrinks with the distance past the corner and is gone at twice its length
@@ -309,14 +312,19 @@ inline double depth_in_block(const Contact& c, const ContactEdge* edges, const d
   // distance from the end times the sine of the turn between the faces.
   if (c.split && (t_line < 0.0 || t_line > 1.0)) [[unlikely]] from_neighbour(t_line < 0.5, 0.0, false);
   // Behind the edge (over it or past its end) yet out of the line of the glued edge at a glued
-  // tip (ContactEdge::glued_tip_a, b) is past the tip into the block glued there, whose own faces
-  // carry the gridpoint. Here it is inside by at most its depth inside the glued edge's line, no
-  // span added, so the force goes to nothing as it crosses that line and comes back as it
-  // returns: the contact stays, never dropped and made again with a prestress. The same depth on
-  // both sides of the edge's end: a depth that jumped there would make energy at every crossing.
-  if ((e.glued_tip_a || e.glued_tip_b) && gap < 0.0) [[unlikely]] {
-    if (e.glued_tip_a) from_neighbour(true, 0.0, false);
-    if (e.glued_tip_b) from_neighbour(false, 0.0, false);
+  // tip (ContactEdge::glued_tip_a, b), at its end or at the end of the straight run it is part of
+  // (glued_line_a, b), is past the tip into the block glued there, whose own faces carry the
+  // gridpoint. Here it is inside by at most its depth inside the glued edge's line, no span
+  // added, so the force goes to nothing as it crosses that line and comes back as it returns: the
+  // contact stays, never dropped and made again with a prestress. The same depth on both sides of
+  // the edge's end, and of each vertex of the run: a depth that jumped there would make energy at
+  // every crossing.
+  if ((e.glued_line_a >= 0 || e.glued_line_b >= 0) && gap < 0.0) [[unlikely]] {
+    for (const int glued : {e.glued_line_a, e.glued_line_b}) {
+      if (glued < 0) continue;
+      const ContactEdge& g = edges[glued];
+      from_line(static_cast<size_t>(g.a), static_cast<size_t>(g.b), 0.0, false);
+    }
   }
   // A tip whose edges all lead out past a sharp corner of the edge (Contact::leads_past_a, b)
   // is over the block only short of it: pressed in by d, its overlap runs about 2 wedge d from its

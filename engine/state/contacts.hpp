@@ -83,6 +83,10 @@ struct ContactEdge {
   // edge's line). Past the glued edge's line a gridpoint is in the block glued beside, not in this
   // one (contact_force.hpp).
   bool glued_tip_a = false, glued_tip_b = false;
+  // The glued edge at the glued tip its end a (b) leads to along a straight run of its block's
+  // boundary, this edge's own at its tip (-1: none): a gridpoint past that glued edge's line is
+  // beside this block however far along the run it is found (contact_force.hpp).
+  int glued_line_a = -1, glued_line_b = -1;
   bool touchable = false;    // not glued
   EdgeOrigin origin;
   int material = -1;         // joint material (jassign), -1: none

@@ -466,6 +466,7 @@ TEST(ContactForce, PastAGluedTipTheForceGoesToNothingAtTheGluedLine) {
   Corner c;
   c.origin[4] = 1.0;
   c.edges[0].glued_tip_b = true;
+  c.edges[0].glued_line_b = 1;
   c.contact.limit = 0.1;
   c.force_at(0.05, -0.03);  // 0.03 m below the line, 0.014 m inside the glued one
   EXPECT_NEAR(c.contact.closure, 0.02 / std::sqrt(2.0), 1e-12);
@@ -492,6 +493,7 @@ TEST(ContactForce, AcrossTheEndOfAGluedTipTheClosureDoesNotJump) {
   Corner c;
   c.origin[4] = -1.0;
   c.edges[0].glued_tip_b = true;
+  c.edges[0].glued_line_b = 1;
   c.contact.limit = 0.1;
   double last = NAN;
   for (int i = 0; i <= 16; ++i) {
@@ -503,6 +505,44 @@ TEST(ContactForce, AcrossTheEndOfAGluedTipTheClosureDoesNotJump) {
       EXPECT_LT(std::fabs(c.contact.closure - last), 0.0005 / std::sqrt(2.0) + 1e-12) << x;
     }
     last = c.contact.closure;
+  }
+}
+
+// A straight run of two edges, (2, 0) to (1, 0) and on to (0, 0), ends at the 45 deg glued tip
+// of PastAGluedTipTheForceGoesToNothingAtTheGluedLine. A gridpoint at the run's inner vertex, found
+// on either edge, is inside by the same depth: its depth inside the glued edge's line where that
+// is less than its depth below the face. Taken only on the tip's own edge, the depth jumped there
+// from out of the block to the depth below the face's line: in the seed cavern's Case 3 at 158 m a
+// gridpoint 0.93 m out of a glued line, found on the next edge of the run, was 1.3 m in, and its
+// contact made 1.6e7 J/m in one cycle.
+TEST(ContactForce, AlongAStraightRunToAGluedTipEitherEdgeGivesTheSameDepth) {
+  for (const double y : {-0.1, -0.6, -1.3}) {
+    double closure[2] = {0.0, 0.0};
+    for (const int on : {0, 1}) {
+      Corner c;
+      // Nodes: 0 (1, 0), 1 (0, 0), 2 (1, -1), 3 the gridpoint, 4 (2, 0); edges 0: 0 -> 1 (the tip's,
+      // glued on at 1), 1: 1 -> 2 (glued), 2: 4 -> 0 (the run before it).
+      c.origin = {1, 0, 0, 0, 1, -1, 0, 0, 2, 0};
+      c.u.assign(10, 0.0);
+      c.v.assign(10, 0.0);
+      c.edges.resize(3);
+      c.edges[0].prev = 2;
+      c.edges[0].glued_tip_b = true;
+      c.edges[0].glued_line_b = 1;
+      c.edges[2].a = 4;
+      c.edges[2].b = 0;
+      c.edges[2].prev = c.edges[2].next = 0;
+      // The run's end towards the tip leads there (mark_glued_tips).
+      c.edges[2].glued_line_b = 1;
+      c.contact.limit = 0.1;
+      c.contact.edge = on == 0 ? 0 : 2;
+      c.force_at(on == 0 ? 0.9999 : 1.0001, y);
+      closure[on] = c.contact.closure;
+    }
+    // By the glued line y = -x: inside by (x + y) / sqrt 2, at most the depth below the face.
+    const double expected = std::min(-y, (1.0 + y) / std::sqrt(2.0));
+    EXPECT_NEAR(closure[0], expected, 1e-4) << y;
+    EXPECT_NEAR(closure[1], expected, 1e-4) << y;
   }
 }
 
