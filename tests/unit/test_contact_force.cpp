@@ -46,6 +46,25 @@ struct Corner {
     contact_force(contact, edges.data(), joint, origin.data(), u.data(), v.data(), 1e-4, lost);
     return contact.fy;
   }
+  // The gridpoint moved along `steps` + 1 points (point(i) gives x, y): the largest change of the
+  // force between neighbouring points, and the largest force [N/m].
+  struct Steps {
+    double jump = 0.0, largest = 0.0;
+  };
+  template <class Point>
+  Steps force_steps(int steps, Point point) {
+    Steps r;
+    double fx = 0.0, fy = 0.0;
+    for (int i = 0; i <= steps; ++i) {
+      const std::array<double, 2> at = point(i);
+      force_at(at[0], at[1]);
+      if (i > 0) r.jump = std::max(r.jump, std::hypot(contact.fx - fx, contact.fy - fy));
+      fx = contact.fx;
+      fy = contact.fy;
+      r.largest = std::max(r.largest, std::hypot(fx, fy));
+    }
+    return r;
+  }
 };
 
 TEST(ContactForce, OnTheFaceItPushesOutByTheClosure) {
@@ -246,14 +265,9 @@ TEST(ContactForce, WhereATipsOwnLengthGivesWayToItsCutTipItsForceDoesNotJump) {
   c.contact.leads_past_b = true;
   c.contact.length = 0.005;
   constexpr double kStep = 1e-6;
-  double largest = 0.0, jump = 0.0, fx = 0.0, fy = 0.0;
-  for (int i = 0; i <= 10000; ++i) {  // from 0.005 to 0.015 m from the corner
-    c.force_at(0.005 + i * kStep, -0.04);
-    if (i > 0) jump = std::max(jump, std::hypot(c.contact.fx - fx, c.contact.fy - fy));
-    fx = c.contact.fx;
-    fy = c.contact.fy;
-    largest = std::max(largest, std::hypot(fx, fy));
-  }
+  const auto [jump, largest] = c.force_steps(10000, [&](int i) {  // from 0.005 to 0.015 m from the corner
+    return std::array<double, 2>{0.005 + i * kStep, -0.04};
+  });
   // A force with a bounded slope moves by at most slope x step; a jump would be a sizeable part of
   // the force.
   EXPECT_LT(jump, 1e-3 * largest) << "largest force " << largest;
@@ -273,14 +287,9 @@ TEST(ContactForce, AcrossItsReachATipShortOfASharpCornerHasAForceThatDoesNotJump
   c.contact.leads_past_b = true;
   c.contact.length = 0.0;
   constexpr double kStep = 1e-6;
-  double largest = 0.0, jump = 0.0, fx = 0.0, fy = 0.0;
-  for (int i = 0; i <= 40000; ++i) {  // from 0.08 to 0.12 m deep
-    c.force_at(0.12, -(0.08 + i * kStep));
-    if (i > 0) jump = std::max(jump, std::hypot(c.contact.fx - fx, c.contact.fy - fy));
-    fx = c.contact.fx;
-    fy = c.contact.fy;
-    largest = std::max(largest, std::hypot(fx, fy));
-  }
+  const auto [jump, largest] = c.force_steps(40000, [&](int i) {  // from 0.08 to 0.12 m deep
+    return std::array<double, 2>{0.12, -(0.08 + i * kStep)};
+  });
   EXPECT_NEAR(c.contact.share, 0.648, 0.01);
   EXPECT_LT(jump, 1e-3 * largest) << "largest force " << largest;
 }
