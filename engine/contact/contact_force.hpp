@@ -295,13 +295,12 @@ inline double depth_in_block(const Contact& c, const ContactEdge* edges, const d
   // within the edge near the corner, one beside a thin tip that has sunk into its own block's
   // face: it is inside by at most its depth inside the neighbouring edge's line plus the span
   // the force fades over (so a gridpoint on the corner, inside or out by round-off, keeps its
-  // contact). Each corner within reach caps it: under a face shorter than twice the reach both
-  // do, and the lesser depth holds on either half of it (a cap from the nearer corner alone would
-  // jump at the face's middle). A glued tip's end has the rule below instead.
-  const bool cap_a = e.corner_a && !e.glued_tip_a &&
-                     (t_line < 0.0 || (gap < 0.0 && t_line * len < c.limit));
-  const bool cap_b = e.corner_b && !e.glued_tip_b &&
-                     (t_line > 1.0 || (gap < 0.0 && (1.0 - t_line) * len < c.limit));
+  // contact). Both corners cap it, wherever over the edge it is: the lesser depth holds, so it
+  // does not jump at the face's middle nor at any distance from a corner (a cap within a reach
+  // alone would switch on and off across it, and a gridpoint rocking there would make energy at
+  // every crossing). A glued tip's end has the rule below instead.
+  const bool cap_a = e.corner_a && !e.glued_tip_a && (t_line < 0.0 || gap < 0.0);
+  const bool cap_b = e.corner_b && !e.glued_tip_b && (t_line > 1.0 || gap < 0.0);
   if (!c.split) {
     if (cap_a) from_neighbour(true, 2.0 * fade, true);
     if (cap_b) from_neighbour(false, 2.0 * fade, true);

@@ -395,9 +395,25 @@ TEST(ContactForce, BesideAThinTipWithinTheEdgeNoDeepLinePressesItIn) {
   // 0.2 m below the line, 0.106 m outside the other face: deep by at most 0.2 - 0.106 m.
   c.force_at(0.05, -0.2);
   EXPECT_NEAR(c.contact.closure, 0.2 - 0.15 / std::sqrt(2.0), 1e-12);
-  // Farther along the edge than its reach from the corner, the edge's line alone decides.
+  // Farther along the edge than its reach from the corner, the same: 0.035 m outside the other
+  // face, deep by at most 0.2 - 0.035 m.
   c.force_at(0.15, -0.2);
-  EXPECT_NEAR(c.contact.closure, 0.2, 1e-12);
+  EXPECT_NEAR(c.contact.closure, 0.2 - 0.05 / std::sqrt(2.0), 1e-12);
+}
+
+// The same 45 deg tip, a gridpoint 0.2 m below the edge's line sliding along it from 0.05 to
+// 0.15 m from the tip, across its reach (0.1 m): the force changes with its place, never at once.
+// Capped within the reach alone, the depth jumped there from 0.13 to 0.2 m, and a gridpoint
+// rocking across the reach made energy at every crossing.
+TEST(ContactForce, BesideAThinTipAcrossItsReachTheForceDoesNotJump) {
+  Corner c;
+  c.origin[4] = 1.0;
+  c.contact.limit = 0.1;
+  const auto [jump, largest] = c.force_steps(10000, [&](int i) {
+    return std::array<double, 2>{0.05 + 1e-5 * i, -0.2};
+  });
+  EXPECT_GT(largest, 1e7);
+  EXPECT_LT(jump, 1e-3 * largest);
 }
 
 // A face shorter than twice the reach, with convex corners at both ends: the block below it is a
