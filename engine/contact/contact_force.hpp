@@ -168,10 +168,11 @@ struct NodePush {
 }
 
 // How deep the gridpoint is inside the edge's block [m]: behind the edge's line and behind the
-// line of the edge beside it at each convex corner of the edge (the block is convex there). The
-// overlap the force takes can run deeper beside a corner: its cap adds the span the force fades
-// over, and a tip whose edges lead past a sharp corner carries only its share there. A gridpoint
-// beside the block is not in it, however far behind the edge's line (the overlap watchdog asks).
+// line of the edge beside it at each convex corner of the edge (the block is convex there) where
+// that edge is free (behind a glued one the rock goes on). The overlap the force takes can run
+// deeper beside a corner: its cap adds the span the force fades over, and a tip whose edges lead
+// past a sharp corner carries only its share there. A gridpoint beside the block is not in it,
+// however far behind the edge's line (the overlap watchdog asks).
 inline double depth_in_block(const Contact& c, const ContactEdge* edges, const double* origin,
                              const double* u) {
   const auto at = [&](int node) {
@@ -186,8 +187,8 @@ inline double depth_in_block(const Contact& c, const ContactEdge* edges, const d
   };
   const ContactEdge& e = edges[c.edge];
   double depth = behind(e.a, e.b);
-  if (e.corner_a) depth = std::min(depth, behind(edges[e.prev].a, e.a));
-  if (e.corner_b) depth = std::min(depth, behind(e.b, edges[e.next].b));
+  if (e.corner_a && edges[e.prev].touchable) depth = std::min(depth, behind(edges[e.prev].a, e.a));
+  if (e.corner_b && edges[e.next].touchable) depth = std::min(depth, behind(e.b, edges[e.next].b));
   return depth;
 }
 
@@ -298,9 +299,15 @@ inline double depth_in_block(const Contact& c, const ContactEdge* edges, const d
   // contact). Both corners cap it, wherever over the edge it is: the lesser depth holds, so it
   // does not jump at the face's middle nor at any distance from a corner (a cap within a reach
   // alone would switch on and off across it, and a gridpoint rocking there would make energy at
-  // every crossing). A glued tip's end has the rule below instead.
-  const bool cap_a = e.corner_a && !e.glued_tip_a && (t_line < 0.0 || gap < 0.0);
-  const bool cap_b = e.corner_b && !e.glued_tip_b && (t_line > 1.0 || gap < 0.0);
+  // every crossing). A glued tip's end has the rule below instead. A corner whose edge beside is
+  // glued, the rock going on there past it, caps nothing: behind that edge's line the gridpoint is
+  // in the rock glued beside, as deep as the face's line says, and capped by the glued line a
+  // gridpoint driven along it (a falling block's apex into a crack's mouth on a floor) was held
+  // back by its distance from that line only, the force turned across the line, and went on in
+  // unchecked (1.1 m in the seed cavern's Case 3 at 262 m). Past the corner the share fades and
+  // the glued block's own contact carries it.
+  const bool cap_a = e.corner_a && !e.glued_tip_a && edges[e.prev].touchable && (t_line < 0.0 || gap < 0.0);
+  const bool cap_b = e.corner_b && !e.glued_tip_b && edges[e.next].touchable && (t_line > 1.0 || gap < 0.0);
   if (!c.split) {
     if (cap_a) from_neighbour(true, 2.0 * fade, true);
     if (cap_b) from_neighbour(false, 2.0 * fade, true);

@@ -32,6 +32,7 @@ struct Corner {
     edge.corner_b = true;
     edges[1].a = 1;
     edges[1].b = 2;
+    for (ContactEdge& e : edges) e.touchable = true;  // a free outline, nothing glued
     joint.kn = 1e9;
     joint.ks = 1e8;
     joint.kn_zero = joint.kn_max = joint.kn;
@@ -431,6 +432,7 @@ struct ShortFace {
     edges[0].corner_a = edges[0].corner_b = true;
     edges[1].a = 1, edges[1].b = 2;  // b down to the third corner
     edges[2].a = 2, edges[2].b = 0;  // and up to a
+    for (ContactEdge& e : edges) e.touchable = true;
     joint.kn = joint.kn_zero = joint.kn_max = 1e9;
     joint.ks = 1e8;
     contact.node = 3;
@@ -554,6 +556,8 @@ TEST(ContactForce, AlongAStraightRunToAGluedTipEitherEdgeGivesTheSameDepth) {
       c.edges[0].prev = 2;
       c.edges[0].glued_tip_b = true;
       c.edges[0].glued_line_b = 1;
+      c.edges[1].touchable = false;
+      c.edges[2].touchable = true;
       c.edges[2].a = 4;
       c.edges[2].b = 0;
       c.edges[2].prev = c.edges[2].next = 0;
@@ -569,6 +573,30 @@ TEST(ContactForce, AlongAStraightRunToAGluedTipEitherEdgeGivesTheSameDepth) {
     EXPECT_NEAR(closure[0], expected, 1e-4) << y;
     EXPECT_NEAR(closure[1], expected, 1e-4) << y;
   }
+}
+
+// The corner at b with its edge down glued, the rock glued beside (x < 0) going on along the
+// face's line (a crack's mouth on a floor, no glued tip): a gridpoint 0.5 m below the face, 0.05 m
+// from the glued line, is in the rock 0.5 m deep and pushed out of the face, not across the glued
+// line by its 0.05 m from it (the apex of a block falling on the seed cavern's floor at 262 m went
+// down a crack's line 1.1 m so). Sliding across the glued line the force fades with its share and
+// never jumps: the glued block's own contact takes over there.
+TEST(ContactForce, AtACornerGluedToRockThatGoesOnTheFaceAloneSetsTheDepth) {
+  Corner c;
+  c.edges[1].touchable = false;
+  c.contact.limit = 1.1;
+  c.force_at(0.05, -0.5);
+  EXPECT_NEAR(c.contact.closure, 0.5, 1e-12);
+  EXPECT_GT(c.contact.fy, 0.0);
+  EXPECT_NEAR(c.contact.fx, 0.0, 1e-9 * c.contact.fy);
+  EXPECT_NEAR(depth_in_block(c.contact, c.edges.data(), c.origin.data(), c.u.data()), 0.5, 1e-12);
+  const Corner::Steps slide = c.force_steps(400, [](int i) { return std::array<double, 2>{0.05 - 0.001 * i, -0.5}; });
+  EXPECT_LT(slide.jump, 0.02 * slide.largest);
+  // Free there, the same corner caps the depth at the gridpoint's depth behind the edge down, plus
+  // the span its force fades over.
+  c.edges[1].touchable = true;
+  c.force_at(0.05, -0.5);
+  EXPECT_NEAR(c.contact.closure, 0.05 + 2.0 * c.contact.length, 1e-12);
 }
 
 // A tip pressed in beside a corner of the face's block takes as its overlap its depth inside the
@@ -623,6 +651,7 @@ struct Notch {
     edges[0].prev = edges[0].next = 1;
     edges[1].prev = edges[1].next = 0;
     edges[0].bent_b = edges[1].bent_a = true;  // a re-entrant corner: no convex one, no straight run
+    for (ContactEdge& e : edges) e.touchable = true;
     joint.kn = 1e9;
     joint.ks = 1e8;
     joint.kn_zero = joint.kn_max = joint.kn;
