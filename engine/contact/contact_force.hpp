@@ -306,8 +306,10 @@ inline double depth_in_block(const Contact& c, const ContactEdge* edges, const d
   // back by its distance from that line only, the force turned across the line, and went on in
   // unchecked (1.1 m in the seed cavern's Case 3 at 262 m). Past the corner the share fades and
   // the glued block's own contact carries it.
-  const bool cap_a = e.corner_a && !e.glued_tip_a && edges[e.prev].touchable && (t_line < 0.0 || gap < 0.0);
-  const bool cap_b = e.corner_b && !e.glued_tip_b && edges[e.next].touchable && (t_line > 1.0 || gap < 0.0);
+  const bool cap_a =
+      e.corner_a && !e.glued_tip_a && edges[e.prev].touchable && (t_line < 0.0 || gap < 0.0);
+  const bool cap_b =
+      e.corner_b && !e.glued_tip_b && edges[e.next].touchable && (t_line > 1.0 || gap < 0.0);
   if (!c.split) {
     if (cap_a) from_neighbour(true, 2.0 * fade, true);
     if (cap_b) from_neighbour(false, 2.0 * fade, true);

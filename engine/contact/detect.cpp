@@ -425,7 +425,8 @@ void mark_leading_past(const Mechanics& m, size_t k, Vec2 p, Found& to) {
   }
   // Past end a the block lies towards b. Where the edge beside is glued the rock goes on (at a
   // glued tip its outline turns there too).
-  const bool free_a = prev.touchable || target.glued_tip_a, free_b = next.touchable || target.glued_tip_b;
+  const bool free_a = prev.touchable || target.glued_tip_a;
+  const bool free_b = next.touchable || target.glued_tip_b;
   to.leads_past_a = free_a && !back_to_b && sharp(at(m, prev.a), a, b);
   to.leads_past_b = free_b && !back_to_a && sharp(a, b, at(m, next.b));
 }

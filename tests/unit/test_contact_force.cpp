@@ -590,7 +590,8 @@ TEST(ContactForce, AtACornerGluedToRockThatGoesOnTheFaceAloneSetsTheDepth) {
   EXPECT_GT(c.contact.fy, 0.0);
   EXPECT_NEAR(c.contact.fx, 0.0, 1e-9 * c.contact.fy);
   EXPECT_NEAR(depth_in_block(c.contact, c.edges.data(), c.origin.data(), c.u.data()), 0.5, 1e-12);
-  const Corner::Steps slide = c.force_steps(400, [](int i) { return std::array<double, 2>{0.05 - 0.001 * i, -0.5}; });
+  const Corner::Steps slide =
+      c.force_steps(400, [](int i) { return std::array<double, 2>{0.05 - 0.001 * i, -0.5}; });
   EXPECT_LT(slide.jump, 0.02 * slide.largest);
   // Free there, the same corner caps the depth at the gridpoint's depth behind the edge down, plus
   // the span its force fades over.
