@@ -245,9 +245,9 @@ const Command& set_command() {
               {"overlap", Type::number, "m", ge(0), kOptional,
                "the overlap watchdog's limit: a gridpoint further than this inside another block (beyond "
                "its contact's prestress; behind the edge's line and, at the edge's convex corners, "
-               "behind the lines of the free faces beside it: a gridpoint beside a corner is not in the "
-               "block, one behind a glued face is in the rock glued there) stops the run; 0: half the median length of the blocks' "
-               "touchable edges, UDEC's rounding of a kind, plus the largest closure over which a "
+               "behind the lines of the free faces beside it: a gridpoint beside a corner is not in "
+               "the block, one behind a glued face is in the rock glued there) stops the run; 0: half "
+               "the median length of the blocks' touchable edges, UDEC's rounding of a kind, plus the largest closure over which a "
                "joint law follows its measured curve (kn_law \"seed-cubic\": 1.03 mm times its "
                "closure_scale; a gridpoint sunk that far is the law at work)",
                "unchanged (initially 0)"},

@@ -167,9 +167,16 @@ struct NodePush {
   for (int k = 6; k < 2 * kContactRoles; ++k) p[k] = extra.on[k];
 }
 
+// Whether the end a (at_a) or b of edge `e` is a convex corner of the rock: a corner of its block
+// whose edge beside is free. Behind a glued edge beside the rock goes on (a glued tip, whose edge
+// beside is glued too, has rules of its own).
+inline bool rock_corner(const ContactEdge* edges, const ContactEdge& e, bool at_a) {
+  return at_a ? e.corner_a && edges[e.prev].touchable : e.corner_b && edges[e.next].touchable;
+}
+
 // How deep the gridpoint is inside the edge's block [m]: behind the edge's line and behind the
-// line of the edge beside it at each convex corner of the edge (the block is convex there) where
-// that edge is free (behind a glued one the rock goes on). The overlap the force takes can run
+// line of the edge beside it at each corner of the rock the edge ends in (rock_corner: the block
+// is convex there). The overlap the force takes can run
 // deeper beside a corner: its cap adds the span the force fades over, and a tip whose edges lead
 // past a sharp corner carries only its share there. A gridpoint beside the block is not in it,
 // however far behind the edge's line (the overlap watchdog asks).
@@ -187,8 +194,8 @@ inline double depth_in_block(const Contact& c, const ContactEdge* edges, const d
   };
   const ContactEdge& e = edges[c.edge];
   double depth = behind(e.a, e.b);
-  if (e.corner_a && edges[e.prev].touchable) depth = std::min(depth, behind(edges[e.prev].a, e.a));
-  if (e.corner_b && edges[e.next].touchable) depth = std::min(depth, behind(e.b, edges[e.next].b));
+  if (rock_corner(edges, e, true)) depth = std::min(depth, behind(edges[e.prev].a, e.a));
+  if (rock_corner(edges, e, false)) depth = std::min(depth, behind(e.b, edges[e.next].b));
   return depth;
 }
 
@@ -299,17 +306,15 @@ inline double depth_in_block(const Contact& c, const ContactEdge* edges, const d
   // contact). Both corners cap it, wherever over the edge it is: the lesser depth holds, so it
   // does not jump at the face's middle nor at any distance from a corner (a cap within a reach
   // alone would switch on and off across it, and a gridpoint rocking there would make energy at
-  // every crossing). A glued tip's end has the rule below instead. A corner whose edge beside is
-  // glued, the rock going on there past it, caps nothing: behind that edge's line the gridpoint is
-  // in the rock glued beside, as deep as the face's line says, and capped by the glued line a
-  // gridpoint driven along it (a falling block's apex into a crack's mouth on a floor) was held
-  // back by its distance from that line only, the force turned across the line, and went on in
-  // unchecked (1.1 m in the seed cavern's Case 3 at 262 m). Past the corner the share fades and
-  // the glued block's own contact carries it.
-  const bool cap_a =
-      e.corner_a && !e.glued_tip_a && edges[e.prev].touchable && (t_line < 0.0 || gap < 0.0);
-  const bool cap_b =
-      e.corner_b && !e.glued_tip_b && edges[e.next].touchable && (t_line > 1.0 || gap < 0.0);
+  // every crossing). Only a corner of the rock caps (rock_corner); a glued tip's end has the rule
+  // below instead. A corner whose edge beside is glued, the rock going on there past it, caps
+  // nothing: behind that edge's line the gridpoint is in the rock glued beside, as deep as the
+  // face's line says, and capped by the glued line a gridpoint driven along it (a falling block's
+  // apex into a crack's mouth on a floor) was held back by its distance from that line only, the
+  // force turned across the line, and went on in unchecked (1.1 m in the seed cavern's Case 3 at
+  // 262 m). Past the corner the share fades and the glued block's own contact carries it.
+  const bool cap_a = rock_corner(edges, e, true) && (t_line < 0.0 || gap < 0.0);
+  const bool cap_b = rock_corner(edges, e, false) && (t_line > 1.0 || gap < 0.0);
   if (!c.split) {
     if (cap_a) from_neighbour(true, 2.0 * fade, true);
     if (cap_b) from_neighbour(false, 2.0 * fade, true);

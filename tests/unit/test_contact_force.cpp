@@ -493,6 +493,7 @@ TEST(ContactForce, PastAGluedTipTheForceGoesToNothingAtTheGluedLine) {
   Corner c;
   c.origin[4] = 1.0;
   c.edges[0].glued_tip_b = true;
+  c.edges[1].touchable = false;  // the glued edge
   c.edges[0].glued_line_b = 1;
   c.contact.limit = 0.1;
   c.force_at(0.05, -0.03);  // 0.03 m below the line, 0.014 m inside the glued one
@@ -520,6 +521,7 @@ TEST(ContactForce, AcrossTheEndOfAGluedTipTheClosureDoesNotJump) {
   Corner c;
   c.origin[4] = -1.0;
   c.edges[0].glued_tip_b = true;
+  c.edges[1].touchable = false;  // the glued edge
   c.edges[0].glued_line_b = 1;
   c.contact.limit = 0.1;
   double last = NAN;
